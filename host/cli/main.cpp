@@ -1,0 +1,51 @@
+// meshparticles: spreads particles evenly over triangle meshes.
+// This file only wires the subcommands together and maps failures to exit
+// codes: 0 success, 2 bad input or arguments, 3 no OpenCL runtime, 1 a bug.
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "common/user_error.hpp"
+#include "opencl/opencl.hpp"
+
+namespace meshparticles {
+
+void add_device_option(CLI::App& command, std::string& device_request) {
+  command.add_option("--device", device_request,
+                     "OpenCL device: P:D or part of its name (default: $MESHPARTICLES_DEVICE, else the first GPU, "
+                     "else the first device)");
+}
+
+}  // namespace meshparticles
+
+int main(int argc, char** argv) {
+  using namespace meshparticles;
+  CLI::App app{"meshparticles: spread particles evenly over triangulated surface meshes"};
+  app.require_subcommand(1);
+  add_info_command(app);
+  add_devices_command(app);
+  add_generate_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "meshparticles: error: " << error.what() << " (see --help)\n";
+    return 2;
+  } catch (const UserError& error) {
+    std::cerr << "meshparticles: error: " << error.what() << "\n";
+    return error.exit_code();
+  } catch (const cl::Error& error) {
+    std::cerr << "meshparticles: error: OpenCL call " << error.what() << " failed: "
+              << opencl_error_text(error.err()) << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "meshparticles: error: out of memory\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "meshparticles: internal error: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

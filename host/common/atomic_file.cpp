@@ -1,0 +1,56 @@
+#include "common/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include "common/user_error.hpp"
+
+namespace meshparticles {
+
+std::filesystem::path temporary_sibling(const std::filesystem::path& destination) {
+  const std::string unique = ".tmp-" + std::to_string(::getpid()) + "-";
+  static unsigned counter = 0;
+  return destination.parent_path() /
+         ("." + destination.stem().string() + unique + std::to_string(counter++) +
+          destination.extension().string());
+}
+
+void commit_temporary(const std::filesystem::path& temporary,
+                      const std::filesystem::path& destination) {
+  std::error_code error;
+  std::filesystem::rename(temporary, destination, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    throw UserError(destination.string() + ": cannot write: " + error.message());
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& destination,
+                           const std::function<void(std::ostream&)>& write, bool binary) {
+  const auto temporary = temporary_sibling(destination);
+  {
+    std::ofstream out(temporary, binary ? std::ios::binary : std::ios::out);
+    if (!out) {
+      throw UserError(destination.string() + ": cannot write: " + std::strerror(errno));
+    }
+    try {
+      write(out);
+    } catch (...) {
+      out.close();
+      std::filesystem::remove(temporary);
+      throw;
+    }
+    out.flush();
+    if (!out) {
+      out.close();
+      std::filesystem::remove(temporary);
+      throw UserError(destination.string() + ": cannot write (disk full?)");
+    }
+  }
+  commit_temporary(temporary, destination);
+}
+
+}  // namespace meshparticles

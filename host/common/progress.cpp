@@ -1,0 +1,40 @@
+#include "common/progress.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace meshparticles {
+
+ProgressLine::ProgressLine(std::string label, std::size_t total, bool quiet)
+    : label_(std::move(label)),
+      total_(total),
+      quiet_(quiet),
+      terminal_(::isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()),
+      last_draw_(start_) {}
+
+double ProgressLine::elapsed_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void ProgressLine::update(std::size_t done) {
+  if (quiet_ || !terminal_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_draw_ < std::chrono::milliseconds(200) && done < total_) return;
+  last_draw_ = now;
+  const double elapsed = elapsed_seconds();
+  const double eta = done > 0 ? elapsed * double(total_ - done) / double(done) : 0.0;
+  std::fprintf(stderr, "\r%s: %zu/%zu  elapsed %.1f s  ETA %.1f s   ", label_.c_str(), done,
+               total_, elapsed, eta);
+  std::fflush(stderr);
+}
+
+void ProgressLine::finish(const std::string& suffix) {
+  if (quiet_) return;
+  if (terminal_) std::fputs("\r\033[K", stderr);
+  std::fprintf(stderr, "%s: %zu done in %.2f s%s%s\n", label_.c_str(), total_, elapsed_seconds(),
+               suffix.empty() ? "" : ", ", suffix.c_str());
+}
+
+}  // namespace meshparticles

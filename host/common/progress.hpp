@@ -1,0 +1,30 @@
+#pragma once
+// A progress line on stderr for long work: redrawn in place on a terminal
+// (at most a few times a second), a single final summary when stderr is a file
+// or a pipe, and nothing at all when quiet.
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace meshparticles {
+
+class ProgressLine {
+ public:
+  ProgressLine(std::string label, std::size_t total, bool quiet);
+  // Reports that `done` of `total` units are finished; thread-compatible when
+  // called from one thread at a time.
+  void update(std::size_t done);
+  // Prints the final summary (or clears the line on a terminal) with `suffix`.
+  void finish(const std::string& suffix = "");
+  double elapsed_seconds() const;
+
+ private:
+  std::string label_;
+  std::size_t total_;
+  bool quiet_;
+  bool terminal_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_draw_;
+};
+
+}  // namespace meshparticles

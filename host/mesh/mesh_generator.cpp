@@ -1,0 +1,319 @@
+#include "mesh/mesh_generator.hpp"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <tuple>
+
+#include "common/random.hpp"
+#include "common/user_error.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using WorkMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+using Projection = std::function<Vec3(Vec3)>;
+constexpr double kPi = std::numbers::pi;
+
+Vec3 to_vec(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
+OpenMesh::Vec3d to_point(const Vec3& p) { return {p.x, p.y, p.z}; }
+
+// Icosahedron with each face cut into frequency^2 triangles, on the unit sphere.
+WorkMesh geodesic_sphere(int frequency) {
+  const double g = (1.0 + std::sqrt(5.0)) / 2.0;
+  const std::vector<Vec3> corners = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                                     {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  const int faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                            {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                            {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  WorkMesh mesh;
+  // Points on shared edges are created once: keyed by their exact lattice
+  // coordinates (which corner pairs, which fraction), not by rounded floats.
+  std::map<std::tuple<int, int, int, int, int, int>, WorkMesh::VertexHandle> lattice;
+  const auto point_at = [&](const int face[3], int i, int j) -> WorkMesh::VertexHandle {
+    const int k = frequency - i - j;
+    std::array<std::pair<int, int>, 3> weights = {{{face[0], i}, {face[1], j}, {face[2], k}}};
+    for (auto& [corner, weight] : weights) {
+      if (weight == 0) corner = -1;  // a corner with no weight must not distinguish the point
+    }
+    std::sort(weights.begin(), weights.end());
+    const auto key = std::make_tuple(weights[0].first, weights[0].second, weights[1].first, weights[1].second,
+                                     weights[2].first, weights[2].second);
+    if (auto it = lattice.find(key); it != lattice.end()) return it->second;
+    Vec3 p{};
+    for (const auto& [corner, weight] : weights) {
+      if (weight > 0) p = p + double(weight) * corners[corner];
+    }
+    const WorkMesh::VertexHandle handle = mesh.add_vertex(to_point(normalized(p)));
+    lattice.emplace(key, handle);
+    return handle;
+  };
+  for (const auto& face : faces) {
+    for (int i = 0; i < frequency; ++i) {
+      for (int j = 0; i + j < frequency; ++j) {
+        mesh.add_face(point_at(face, i, j), point_at(face, i + 1, j), point_at(face, i, j + 1));
+        if (i + j + 2 <= frequency) {
+          mesh.add_face(point_at(face, i + 1, j), point_at(face, i + 1, j + 1), point_at(face, i, j + 1));
+        }
+      }
+    }
+  }
+  return mesh;
+}
+
+// Splits the longest edge (midpoint projected onto the surface) until the
+// mesh has `target` vertices: refines where the base mesh was stretched.
+void split_longest_edges(WorkMesh& mesh, std::size_t target, const Projection& project) {
+  while (mesh.n_vertices() < target) {
+    WorkMesh::EdgeHandle longest;
+    double longest_length = -1;
+    for (auto e : mesh.edges()) {
+      if (mesh.is_boundary(e)) continue;
+      const double length = mesh.calc_edge_length(e);
+      if (length > longest_length) {
+        longest_length = length;
+        longest = e;
+      }
+    }
+    const auto h = mesh.halfedge_handle(longest, 0);
+    const Vec3 middle = 0.5 * (to_vec(mesh.point(mesh.from_vertex_handle(h))) + to_vec(mesh.point(mesh.to_vertex_handle(h))));
+    mesh.split(longest, to_point(project(middle)));
+  }
+}
+
+double angle_at(const Vec3& corner, const Vec3& a, const Vec3& b) {
+  const Vec3 u = a - corner, v = b - corner;
+  return std::atan2(norm(cross(u, v)), dot(u, v));
+}
+
+// Flips interior edges whose opposite angles sum past pi (the Delaunay
+// criterion) unless the flip would fold the surface. Returns the flip count.
+std::size_t delaunay_flips(WorkMesh& mesh) {
+  std::size_t flips = 0;
+  for (auto e : mesh.edges()) {
+    if (mesh.is_boundary(e) || !mesh.is_flip_ok(e)) continue;
+    const auto h0 = mesh.halfedge_handle(e, 0), h1 = mesh.halfedge_handle(e, 1);
+    const Vec3 a = to_vec(mesh.point(mesh.to_vertex_handle(h0)));
+    const Vec3 b = to_vec(mesh.point(mesh.to_vertex_handle(h1)));
+    const Vec3 c = to_vec(mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h0))));
+    const Vec3 d = to_vec(mesh.point(mesh.to_vertex_handle(mesh.next_halfedge_handle(h1))));
+    if (angle_at(c, a, b) + angle_at(d, a, b) <= kPi + 1e-9) continue;
+    // Old triangles (b,a,c) and (a,b,d); new ones (c,d,a)... keep the orientation consistent.
+    const Vec3 old_normal = cross(a - b, c - b) + cross(b - a, d - a);
+    if (dot(cross(d - c, a - c), old_normal) <= 0 || dot(cross(c - d, b - d), old_normal) <= 0) continue;
+    mesh.flip(e);
+    ++flips;
+  }
+  return flips;
+}
+
+// Jacobi steps towards the neighbour centroid, projected back onto the surface.
+void smooth(WorkMesh& mesh, int steps, const Projection& project) {
+  std::vector<Vec3> next(mesh.n_vertices());
+  for (int step = 0; step < steps; ++step) {
+    for (auto v : mesh.vertices()) {
+      const Vec3 p = to_vec(mesh.point(v));
+      if (mesh.is_boundary(v)) {
+        next[v.idx()] = p;
+        continue;
+      }
+      Vec3 centroid{};
+      int count = 0;
+      for (auto n : mesh.vv_range(v)) {
+        centroid = centroid + to_vec(mesh.point(n));
+        ++count;
+      }
+      next[v.idx()] = project(0.5 * p + (0.5 / count) * centroid);
+    }
+    for (auto v : mesh.vertices()) mesh.point(v) = to_point(next[v.idx()]);
+  }
+}
+
+// Moves every interior vertex by a random offset of up to `fraction` of the
+// mean edge length, projected back: breaks the base mesh's regular pattern so
+// that the flips below leave irregular valences, as a mesher's output has.
+void jitter(WorkMesh& mesh, double fraction, const Projection& project, SplitMix64& random) {
+  double length_sum = 0;
+  for (auto e : mesh.edges()) length_sum += mesh.calc_edge_length(e);
+  const double amplitude = fraction * length_sum / double(mesh.n_edges());
+  for (auto v : mesh.vertices()) {
+    const Vec3 offset{random.uniform() - 0.5, random.uniform() - 0.5, random.uniform() - 0.5};
+    if (!mesh.is_boundary(v)) mesh.point(v) = to_point(project(to_vec(mesh.point(v)) + (2 * amplitude) * offset));
+  }
+}
+
+void improve(WorkMesh& mesh, const Projection& project) {
+  SplitMix64 random(20261120);
+  jitter(mesh, 0.5, project, random);
+  for (int round = 0; round < 3; ++round) {
+    for (int pass = 0; pass < 20 && delaunay_flips(mesh) > 0; ++pass) {
+    }
+    smooth(mesh, 2, project);
+  }
+  for (int pass = 0; pass < 20 && delaunay_flips(mesh) > 0; ++pass) {
+  }
+}
+
+SurfaceMesh to_surface_mesh(const WorkMesh& mesh) {
+  std::vector<Vec3> positions;
+  for (auto v : mesh.vertices()) positions.push_back(to_vec(mesh.point(v)));
+  std::vector<Triangle> triangles;
+  for (auto f : mesh.faces()) {
+    Triangle t{};
+    int k = 0;
+    for (auto v : mesh.fv_range(f)) t[k++] = VertexId(v.idx());
+    triangles.push_back(t);
+  }
+  return SurfaceMesh(std::move(positions), std::move(triangles));
+}
+
+SurfaceMesh sphere() {
+  const Projection onto_sphere = [](Vec3 p) { return normalized(p); };
+  WorkMesh mesh = geodesic_sphere(19);  // 3,612 vertices, refined to the paper's ~4k
+  split_longest_edges(mesh, 4000, onto_sphere);
+  improve(mesh, onto_sphere);
+  return to_surface_mesh(mesh);
+}
+
+SurfaceMesh torus() {
+  constexpr double R = 1.0, r = 0.4;
+  constexpr int around = 48, across = 28;  // 1,344 vertices, refined to 1,500
+  const Projection onto_torus = [](Vec3 p) {
+    const double rho = std::hypot(p.x, p.y);
+    const Vec3 tube_center{R * p.x / rho, R * p.y / rho, 0.0};
+    return tube_center + r * normalized(p - tube_center);
+  };
+  WorkMesh mesh;
+  std::vector<WorkMesh::VertexHandle> grid;
+  for (int i = 0; i < around; ++i) {
+    for (int j = 0; j < across; ++j) {
+      const double u = 2 * kPi * i / around, v = 2 * kPi * j / across;
+      grid.push_back(mesh.add_vertex({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)}));
+    }
+  }
+  const auto at = [&](int i, int j) { return grid[(i % around) * across + (j % across)]; };
+  for (int i = 0; i < around; ++i) {
+    for (int j = 0; j < across; ++j) {
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  }
+  split_longest_edges(mesh, 1500, onto_torus);
+  improve(mesh, onto_torus);
+  return to_surface_mesh(mesh);
+}
+
+// A closed, star-shaped, organ-like surface: an ellipsoid body with bulges of
+// different sizes (an appendage, four vein stubs, one broad bump), standing in
+// for the paper's left-atrium mesh.
+SurfaceMesh atrium() {
+  struct Bulge {
+    Vec3 direction;
+    double height, width;
+  };
+  const std::vector<Bulge> bulges = {
+      {normalized({0.3, 0.8, 0.5}), 0.45, 0.05},     // appendage
+      {normalized({-0.6, 0.5, 0.6}), 0.3, 0.015},    // vein stubs
+      {normalized({-0.6, -0.5, 0.6}), 0.3, 0.015},
+      {normalized({-0.7, 0.55, -0.45}), 0.25, 0.015},
+      {normalized({-0.7, -0.55, -0.45}), 0.25, 0.015},
+      {normalized({0.8, -0.3, -0.5}), 0.15, 0.25},   // broad bump
+  };
+  const Projection onto_atrium = [bulges](Vec3 p) {
+    const Vec3 d = normalized(p);
+    double radius = 1.0 / std::sqrt(d.x * d.x / (1.25 * 1.25) + d.y * d.y + d.z * d.z / (0.85 * 0.85));
+    for (const Bulge& b : bulges) radius += b.height * std::exp(-(1.0 - dot(d, b.direction)) / b.width);
+    return radius * d;
+  };
+  WorkMesh mesh = geodesic_sphere(29);  // 8,412 vertices, refined to 10,500
+  for (auto v : mesh.vertices()) mesh.point(v) = to_point(onto_atrium(to_vec(mesh.point(v))));
+  split_longest_edges(mesh, 10500, onto_atrium);
+  improve(mesh, onto_atrium);
+  return to_surface_mesh(mesh);
+}
+
+// An open, flat, jittered 20 x 20 grid on [0,1]^2: a boundary, and a plane
+// where geodesic distance is Euclidean distance.
+SurfaceMesh patch() {
+  constexpr int n = 20;
+  SplitMix64 random(20261120);
+  WorkMesh mesh;
+  std::vector<WorkMesh::VertexHandle> grid;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const bool inner = i > 0 && j > 0 && i < n - 1 && j < n - 1;
+      const double jitter_x = inner ? 0.35 * (random.uniform() - 0.5) : 0.0;
+      const double jitter_y = inner ? 0.35 * (random.uniform() - 0.5) : 0.0;
+      grid.push_back(mesh.add_vertex({(i + jitter_x) / (n - 1), (j + jitter_y) / (n - 1), 0.0}));
+    }
+  }
+  for (int i = 0; i + 1 < n; ++i) {
+    for (int j = 0; j + 1 < n; ++j) {
+      const auto a = grid[i * n + j], b = grid[(i + 1) * n + j], c = grid[(i + 1) * n + j + 1], d = grid[i * n + j + 1];
+      mesh.add_face(a, b, c);
+      mesh.add_face(a, c, d);
+    }
+  }
+  improve(mesh, [](Vec3 p) { return Vec3{p.x, p.y, 0.0}; });
+  return to_surface_mesh(mesh);
+}
+
+SurfaceMesh tetrahedron() {
+  return SurfaceMesh({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
+}
+
+SurfaceMesh two_pieces() {
+  const SurfaceMesh first = tetrahedron();
+  std::vector<Vec3> positions = first.positions();
+  std::vector<Triangle> triangles = first.triangles();
+  for (const Vec3& p : first.positions()) positions.push_back(p + Vec3{4, 0, 0});
+  for (const Triangle& t : first.triangles()) triangles.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
+  return SurfaceMesh(std::move(positions), std::move(triangles));
+}
+
+// A bipyramid over a 24-gon: both apexes have valence 24.
+SurfaceMesh high_valence() {
+  constexpr int sides = 24;
+  std::vector<Vec3> positions = {{0, 0, 1}, {0, 0, -1}};
+  std::vector<Triangle> triangles;
+  for (int k = 0; k < sides; ++k) {
+    positions.push_back({std::cos(2 * kPi * k / sides), std::sin(2 * kPi * k / sides), 0});
+    const VertexId here = 2 + k, next = 2 + (k + 1) % sides;
+    triangles.push_back({0, here, next});
+    triangles.push_back({1, next, here});
+  }
+  return SurfaceMesh(std::move(positions), std::move(triangles));
+}
+
+const std::map<std::string, std::function<SurfaceMesh()>>& generators() {
+  static const std::map<std::string, std::function<SurfaceMesh()>> table = {
+      {"sphere", sphere},           {"torus", torus},           {"atrium", atrium},
+      {"patch", patch},             {"tetrahedron", tetrahedron}, {"two_pieces", two_pieces},
+      {"high_valence", high_valence}};
+  return table;
+}
+
+}  // namespace
+
+const std::vector<std::string>& generated_mesh_names() {
+  static const std::vector<std::string> names = {"sphere", "torus", "atrium", "patch", "tetrahedron",
+                                                 "two_pieces", "high_valence"};
+  return names;
+}
+
+SurfaceMesh generate_mesh(const std::string& name) {
+  const auto it = generators().find(name);
+  if (it == generators().end()) throw UserError("unknown mesh '" + name + "' to generate");
+  return it->second();
+}
+
+}  // namespace meshparticles

@@ -1,0 +1,33 @@
+#include "mesh/mesh_writer.hpp"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include "common/atomic_file.hpp"
+#include "common/user_error.hpp"
+
+namespace meshparticles {
+
+namespace {
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+};
+}  // namespace
+
+void write_mesh(const SurfaceMesh& mesh, const std::filesystem::path& file) {
+  OpenMesh::TriMesh_ArrayKernelT<DoubleTraits> out;
+  for (const Vec3& p : mesh.positions()) out.add_vertex({p.x, p.y, p.z});
+  for (const Triangle& t : mesh.triangles()) {
+    out.add_face(OpenMesh::VertexHandle(int(t[0])), OpenMesh::VertexHandle(int(t[1])),
+                 OpenMesh::VertexHandle(int(t[2])));
+  }
+  const auto temporary = temporary_sibling(file);
+  // Nine significant digits hold a float exactly: regenerated files compare equal.
+  if (!OpenMesh::IO::write_mesh(out, temporary.string(), OpenMesh::IO::Options::Default, 9)) {
+    std::filesystem::remove(temporary);
+    throw UserError(file.string() + ": cannot write mesh");
+  }
+  commit_temporary(temporary, file);
+}
+
+}  // namespace meshparticles
