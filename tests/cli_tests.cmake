@@ -34,3 +34,9 @@ expect_exit(unknown_device 2 "no OpenCL device matches 'no-such-device'" devices
 # No OpenCL runtime at all: the ICD loader finds no vendor, the message names the package.
 expect_exit_of(no_opencl_runtime 3 "no OpenCL platform found: install an OpenCL runtime .*pocl-opencl-icd"
             env OCL_ICD_VENDORS=${CMAKE_CURRENT_BINARY_DIR}/no-such-vendors-dir $<TARGET_FILE:meshparticles> devices)
+# Geodesics on the command line.
+expect_exit(geodesics_bad_source 2 "--source 99 is not a vertex of the surface" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --source 99)
+expect_exit(geodesics_unwritable_out 2 "cannot write" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --source 0 --out /nonexistent-dir/d.txt)
+expect_exit(geodesics_unknown_solver 2 "--geodesic" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --geodesic heat)
+expect_exit(geodesics_table 0 "geodesics \\(fmm, [0-9]+ threads?\\): 4 done" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --no-cache)
+expect_exit(geodesics_dropped_vertex 2 "--source 0 is not a vertex of the surface" geodesics ${DATA}/unreferenced_vertices.off --source 0 -q)

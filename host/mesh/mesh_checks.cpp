@@ -176,7 +176,7 @@ SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label
   }
   if (degenerate > 0) warnings.push_back(label + ": " + plural(degenerate, "degenerate (zero-area) triangle"));
 
-  return SurfaceMesh(std::move(positions), std::move(triangles), std::move(input_ids));
+  return SurfaceMesh(std::move(positions), std::move(triangles), std::move(input_ids), soup.vertices.size());
 }
 
 }  // namespace meshparticles

@@ -22,10 +22,11 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
 }  // namespace
 
 SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<Triangle> triangles,
-                         std::vector<VertexId> input_ids)
+                         std::vector<VertexId> input_ids, std::size_t input_vertex_count)
     : positions_(std::move(positions)),
       triangles_(std::move(triangles)),
-      input_ids_(std::move(input_ids)) {
+      input_ids_(std::move(input_ids)),
+      input_vertex_count_(input_vertex_count ? input_vertex_count : positions_.size()) {
   const std::size_t n = positions_.size();
 
   // Each undirected edge with the number of triangles using it: one means boundary.
@@ -77,6 +78,16 @@ std::size_t SurfaceMesh::max_valence() const {
   std::size_t best = 0;
   for (std::size_t v = 0; v < vertex_count(); ++v) best = std::max(best, valence(VertexId(v)));
   return best;
+}
+
+std::optional<VertexId> SurfaceMesh::vertex_of_input_id(std::size_t input_id) const {
+  if (input_ids_.empty()) {
+    if (input_id < vertex_count()) return VertexId(input_id);
+    return std::nullopt;
+  }
+  const auto it = std::lower_bound(input_ids_.begin(), input_ids_.end(), input_id);  // ids kept in file order
+  if (it == input_ids_.end() || *it != input_id) return std::nullopt;
+  return VertexId(it - input_ids_.begin());
 }
 
 std::size_t SurfaceMesh::boundary_vertex_count() const {

@@ -5,6 +5,7 @@
 // door (mesh_reader); the numeric code never sees a half-edge structure.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -19,9 +20,10 @@ class SurfaceMesh {
  public:
   // `triangles` must be a valid manifold triangle list over `positions` (the
   // reader's checks guarantee it). `input_ids[v]` is the id vertex v had in
-  // the input file; empty means the identity.
+  // the input file (empty: the identity), out of `input_vertex_count` vertices
+  // the file had (0: as many as here).
   SurfaceMesh(std::vector<Vec3> positions, std::vector<Triangle> triangles,
-              std::vector<VertexId> input_ids = {});
+              std::vector<VertexId> input_ids = {}, std::size_t input_vertex_count = 0);
 
   std::size_t vertex_count() const { return positions_.size(); }
   std::size_t triangle_count() const { return triangles_.size(); }
@@ -48,6 +50,9 @@ class SurfaceMesh {
   std::size_t boundary_vertex_count() const;
 
   VertexId input_id(VertexId v) const { return input_ids_.empty() ? v : input_ids_[v]; }
+  std::size_t input_vertex_count() const { return input_vertex_count_; }
+  // The vertex that had `input_id` in the file; nothing for a dropped vertex.
+  std::optional<VertexId> vertex_of_input_id(std::size_t input_id) const;
 
  private:
   std::vector<Vec3> positions_;
@@ -58,6 +63,7 @@ class SurfaceMesh {
   std::vector<std::uint32_t> component_;
   std::vector<std::uint8_t> boundary_;
   std::size_t component_count_ = 0;
+  std::size_t input_vertex_count_ = 0;
   double area_ = 0;
   double mean_edge_length_ = 0;
 };

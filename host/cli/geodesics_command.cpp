@@ -1,0 +1,89 @@
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "cli/mesh_loading.hpp"
+#include "common/atomic_file.hpp"
+#include "common/user_error.hpp"
+#include "geodesics/distance_cache.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+struct GeodesicsOptions {
+  std::string mesh;
+  std::optional<std::size_t> source;
+  std::string out;
+  std::string method = "fmm";
+  GeodesicsCacheOptions cache;
+};
+
+// One value per line, one line per vertex of the input file (input ids);
+// a vertex the reader dropped (no face uses it) is not on the surface: inf.
+void write_single_source(const SurfaceMesh& mesh, const std::vector<double>& distances, std::ostream& out) {
+  char line[32];
+  for (std::size_t input_id = 0; input_id < mesh.input_vertex_count(); ++input_id) {
+    const auto v = mesh.vertex_of_input_id(input_id);
+    const double d = v ? distances[*v] : INFINITY;
+    std::snprintf(line, sizeof line, "%.9g\n", d);
+    out << line;
+  }
+}
+
+void run_geodesics(const GeodesicsOptions& options) {
+  const SurfaceMesh mesh = load_mesh(options.mesh, options.cache.quiet);
+  const GeodesicMethod method = parse_method(options.method);
+  const auto started = std::chrono::steady_clock::now();
+  const auto seconds_since_start = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
+
+  if (options.source) {
+    const auto source = mesh.vertex_of_input_id(*options.source);
+    if (!source) {
+      throw UserError("--source " + std::to_string(*options.source) + " is not a vertex of the surface (the mesh has " +
+                      std::to_string(mesh.input_vertex_count()) + " vertices; unreferenced ones are dropped)");
+    }
+    std::vector<double> distances(mesh.vertex_count());
+    SolverScratch scratch;
+    make_geodesics(mesh, method)->solve(*source, distances, scratch);
+    if (options.out.empty()) {
+      write_single_source(mesh, distances, std::cout);
+    } else {
+      write_file_atomically(options.out, [&](std::ostream& out) { write_single_source(mesh, distances, out); });
+    }
+    if (!options.cache.quiet) std::fprintf(stderr, "one source with %s in %.3f ms\n", options.method.c_str(), 1e3 * seconds_since_start());
+    return;
+  }
+
+  TableSource source;
+  const DistanceTable table = load_or_compute_distances(mesh, options.cache.request(method), source);
+  std::printf("table      %zu x %zu float32 (%.1f MiB)\n", table.vertex_count(), table.vertex_count(),
+              double(table.byte_size()) / (1 << 20));
+  std::printf("solver     %s\n", options.method.c_str());
+  std::printf("time       %.2f s\n", seconds_since_start());
+  std::printf("from cache %s\n", source.from_cache ? "yes" : "no");
+  if (!source.cache_file.empty()) std::printf("cache file %s\n", source.cache_file.c_str());
+}
+
+}  // namespace
+
+void add_geodesics_command(CLI::App& app) {
+  auto options = std::make_shared<GeodesicsOptions>();
+  CLI::App* geodesics = app.add_subcommand("geodesics", "All-pairs geodesic distances (cached), or one source's");
+  geodesics->add_option("mesh", options->mesh, "Mesh file")->required();
+  auto* source = geodesics->add_option("--source", options->source, "Write this vertex's distances (input vertex id)");
+  geodesics->add_option("--out", options->out, "File for --source's distances (default: stdout)")->needs(source);
+  geodesics->add_option("--geodesic", options->method, "Solver: fmm (fast marching) or dijkstra (edge graph)")
+      ->check(CLI::IsMember({"fmm", "dijkstra"}))
+      ->capture_default_str();
+  add_geodesics_cache_options(*geodesics, options->cache);
+  geodesics->callback([options] { run_geodesics(*options); });
+}
+
+}  // namespace meshparticles

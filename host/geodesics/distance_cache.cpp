@@ -1,0 +1,149 @@
+#include "geodesics/distance_cache.hpp"
+
+#include <array>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+
+#include "common/atomic_file.hpp"
+#include "common/user_error.hpp"
+#include "geodesics/memory_guard.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+constexpr std::array<char, 8> kMagic = {'M', 'P', 'G', 'E', 'O', 'D', 'S', 'T'};
+// Bump when the file layout or the solvers' results change.
+constexpr std::uint32_t kFormatVersion = 1;
+
+struct CacheHeader {
+  std::array<char, 8> magic = kMagic;
+  std::uint32_t format_version = kFormatVersion;
+  std::uint32_t vertex_count = 0;
+  std::uint32_t method = 0;
+  std::uint32_t reserved = 0;
+  std::uint64_t mesh_hash = 0;
+  std::uint64_t values_checksum = 0;
+};
+static_assert(sizeof(CacheHeader) == 40, "the header is written as raw bytes");
+
+// 64-bit multiply-xorshift over 8-byte words: fast enough to check 400 MB in
+// a fraction of a second, and any flipped bit changes it.
+std::uint64_t checksum(const void* data, std::size_t bytes) {
+  std::uint64_t hash = 0x9E3779B97F4A7C15ull ^ bytes;
+  const auto* bytes_in = static_cast<const unsigned char*>(data);
+  std::size_t i = 0;
+  for (; i + 8 <= bytes; i += 8) {
+    std::uint64_t word;
+    std::memcpy(&word, bytes_in + i, 8);
+    hash = (hash ^ word) * 0xFF51AFD7ED558CCDull;
+    hash ^= hash >> 32;
+  }
+  for (; i < bytes; ++i) hash = (hash ^ bytes_in[i]) * 0x100000001B3ull;
+  return hash;
+}
+
+}  // namespace
+
+std::filesystem::path default_cache_directory() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "meshparticles";
+  if (const char* home = std::getenv("HOME"); home && *home) {
+    return std::filesystem::path(home) / ".cache" / "meshparticles";
+  }
+  return std::filesystem::temp_directory_path() / "meshparticles-cache";
+}
+
+std::uint64_t mesh_content_hash(const SurfaceMesh& mesh) {
+  const auto& positions = mesh.positions();
+  const auto& triangles = mesh.triangles();
+  return checksum(positions.data(), positions.size() * sizeof(Vec3)) ^
+         (checksum(triangles.data(), triangles.size() * sizeof(Triangle)) * 3);
+}
+
+std::filesystem::path CacheKey::file_in(const std::filesystem::path& directory) const {
+  char name[64];
+  std::snprintf(name, sizeof name, "%016llx-%u-%s.dist", (unsigned long long)mesh_hash, vertex_count,
+                method_name(method).c_str());
+  return directory / name;
+}
+
+std::optional<DistanceTable> load_cached_table(const std::filesystem::path& file, const CacheKey& key,
+                                               std::string& problem) {
+  problem.clear();
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;  // not cached yet
+  CacheHeader header;
+  if (!in.read(reinterpret_cast<char*>(&header), sizeof header) || header.magic != kMagic) {
+    problem = "not a distance cache file";
+    return std::nullopt;
+  }
+  if (header.format_version != kFormatVersion || header.vertex_count != key.vertex_count ||
+      header.method != std::uint32_t(key.method) || header.mesh_hash != key.mesh_hash) {
+    problem = "written for another mesh, solver or format version";
+    return std::nullopt;
+  }
+  const std::uint64_t expected_bytes = sizeof header + std::uint64_t(key.vertex_count) * key.vertex_count * sizeof(float);
+  std::error_code error;
+  if (std::filesystem::file_size(file, error) != expected_bytes) {
+    problem = "truncated or overlong";
+    return std::nullopt;
+  }
+  check_distance_table_fits(key.vertex_count, available_host_memory_bytes(), "host memory");
+  DistanceTable table(key.vertex_count);
+  if (!in.read(reinterpret_cast<char*>(table.values().data()), std::streamsize(table.byte_size()))) {
+    problem = "unreadable";
+    return std::nullopt;
+  }
+  if (checksum(table.values().data(), table.byte_size()) != header.values_checksum) {
+    problem = "corrupt (checksum mismatch)";
+    return std::nullopt;
+  }
+  return table;
+}
+
+void store_cached_table(const std::filesystem::path& file, const CacheKey& key, const DistanceTable& table) {
+  CacheHeader header;
+  header.vertex_count = key.vertex_count;
+  header.method = std::uint32_t(key.method);
+  header.mesh_hash = key.mesh_hash;
+  header.values_checksum = checksum(table.values().data(), table.byte_size());
+  write_file_atomically(
+      file,
+      [&](std::ostream& out) {
+        out.write(reinterpret_cast<const char*>(&header), sizeof header);
+        out.write(reinterpret_cast<const char*>(table.values().data()), std::streamsize(table.byte_size()));
+      },
+      true);
+}
+
+DistanceTable load_or_compute_distances(const SurfaceMesh& mesh, const GeodesicsRequest& request,
+                                        TableSource& source) {
+  source = {};
+  if (!request.cache_directory) return compute_all_pairs(mesh, request.method, request.threads, request.quiet);
+
+  const CacheKey key{mesh_content_hash(mesh), std::uint32_t(mesh.vertex_count()), request.method};
+  source.cache_file = key.file_in(*request.cache_directory);
+  std::string problem;
+  if (auto cached = load_cached_table(source.cache_file, key, problem)) {
+    source.from_cache = true;
+    return std::move(*cached);
+  }
+  if (!problem.empty() && !request.quiet) {
+    std::cerr << "meshparticles: warning: cache file " << source.cache_file.string() << " is " << problem
+              << "; recomputing\n";
+  }
+  DistanceTable table = compute_all_pairs(mesh, request.method, request.threads, request.quiet);
+  std::error_code error;
+  std::filesystem::create_directories(*request.cache_directory, error);
+  try {
+    store_cached_table(source.cache_file, key, table);
+  } catch (const UserError& failure) {
+    if (!request.quiet) std::cerr << "meshparticles: warning: not cached: " << failure.what() << "\n";
+    source.cache_file.clear();
+  }
+  return table;
+}
+
+}  // namespace meshparticles

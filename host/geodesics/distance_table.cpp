@@ -1,0 +1,64 @@
+#include "geodesics/distance_table.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "common/progress.hpp"
+#include "geodesics/memory_guard.hpp"
+
+namespace meshparticles {
+
+void symmetrize_by_averaging(DistanceTable& table) {
+  constexpr std::size_t kBlock = 64;
+  const std::size_t n = table.vertex_count();
+  auto values = table.values();
+  for (std::size_t bi = 0; bi < n; bi += kBlock) {
+    for (std::size_t bj = bi; bj < n; bj += kBlock) {
+      for (std::size_t i = bi; i < std::min(bi + kBlock, n); ++i) {
+        for (std::size_t j = std::max(bj, i + 1); j < std::min(bj + kBlock, n); ++j) {
+          // inf + inf stays inf (different components); no NaN can arise.
+          const float mean = 0.5f * (values[i * n + j] + values[j * n + i]);
+          values[i * n + j] = values[j * n + i] = mean;
+        }
+      }
+    }
+  }
+}
+
+DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, unsigned threads, bool quiet) {
+  const std::size_t n = mesh.vertex_count();
+  check_distance_table_fits(n, available_host_memory_bytes(), "host memory");
+  DistanceTable table(n);
+  const auto solver = make_geodesics(mesh, method);
+
+  std::atomic<std::size_t> next_source{0}, done{0};
+  const auto work = [&] {
+    SolverScratch scratch;
+    std::vector<double> distances(n);
+    for (std::size_t source = next_source++; source < n; source = next_source++) {
+      solver->solve(VertexId(source), distances, scratch);
+      auto row = table.row(VertexId(source));
+      std::transform(distances.begin(), distances.end(), row.begin(), [](double d) { return float(d); });
+      row[source] = 0.0f;
+      ++done;
+    }
+  };
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = unsigned(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
+
+  ProgressLine progress("geodesics (" + method_name(method) + ", " + std::to_string(threads) + " threads)", n, quiet);
+  std::vector<std::thread> workers;
+  for (unsigned t = 0; t < threads; ++t) workers.emplace_back(work);
+  while (done < n) {
+    progress.update(done);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  for (auto& worker : workers) worker.join();
+  symmetrize_by_averaging(table);
+  progress.finish();
+  return table;
+}
+
+}  // namespace meshparticles

@@ -1,0 +1,76 @@
+#include "geodesics/fast_marching.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geodesics/dijkstra.hpp"
+#include "geodesics/shortest_first_queue.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+// The point-source update of C from X (at the origin, distance dx) and Y (at
+// (s.length_xy, 0), distance dy); +inf when the source's straight line to C
+// does not pass through edge XY, leaving C to other stencils and edges.
+double point_source_update(const PlanarFrame& s, double dx, double dy) {
+  const double base = s.length_xy;
+  const double source_x = (dx * dx - dy * dy + base * base) / (2 * base);
+  const double height_squared = dx * dx - source_x * source_x;
+  if (height_squared < 0) return INFINITY;  // dx, dy, base violate the triangle inequality
+  const double source_y = std::sqrt(height_squared);
+  // Where the segment source -> C crosses the x-axis (C has c_y < 0).
+  const double t = source_y / (source_y - s.c_y);
+  const double crossing = source_x + t * (s.c_x - source_x);
+  if (!(crossing >= 0 && crossing <= base)) return INFINITY;  // also catches 0/0 on degenerate triangles
+  const double ex = s.c_x - source_x, ey = s.c_y - source_y;
+  return std::sqrt(ex * ex + ey * ey);  // not std::hypot: its overflow care costs a third of the solve
+}
+
+}  // namespace
+
+FastMarching::FastMarching(const SurfaceMesh& mesh)
+    : mesh_(mesh), edge_lengths_(ring_edge_lengths(mesh)), stencils_(build_triangle_stencils(mesh)) {}
+
+void FastMarching::solve(VertexId source, std::span<double> distances, SolverScratch& scratch) const {
+  ShortestFirstQueue queue(source, distances, scratch);
+  const auto& offsets = mesh_.ring_offsets();
+  const auto& neighbors = mesh_.ring_neighbors();
+  // Vertices lowered while processing one accepted vertex, queued once each
+  // afterwards (an edge update is often bettered by a triangle update).
+  std::vector<VertexId> lowered;
+  while (auto accepted = queue.pop_next()) {
+    const VertexId x = *accepted;
+    const double dx = distances[x];
+    lowered.clear();
+    // Along edges: exact next to the source, an upper bound elsewhere.
+    for (std::uint32_t k = offsets[x]; k < offsets[x + 1]; ++k) {
+      if (queue.lower(neighbors[k], dx + edge_lengths_[k])) lowered.push_back(neighbors[k]);  // distinct: a ring
+    }
+    const auto lower_and_note = [&](VertexId v, double candidate) {
+      if (queue.lower(v, candidate) && std::find(lowered.begin(), lowered.end(), v) == lowered.end()) {
+        lowered.push_back(v);
+      }
+    };
+    // Across each triangle with exactly one other corner accepted.
+    for (std::uint32_t k = stencils_.triangle_offsets[x]; k < stencils_.triangle_offsets[x + 1]; ++k) {
+      const TriangleAtVertex& t = stencils_.triangles[k];
+      const bool a_accepted = queue.is_accepted(t.a), b_accepted = queue.is_accepted(t.b);
+      if (a_accepted == b_accepted) continue;
+      if (a_accepted) {
+        lower_and_note(t.b, point_source_update(t.b_from_a, dx, distances[t.a]));
+      } else {
+        lower_and_note(t.a, point_source_update(t.a_from_b, dx, distances[t.b]));
+      }
+    }
+    // Across unfolded virtual triangles at obtuse corners.
+    for (std::uint32_t k = stencils_.virtual_offsets[x]; k < stencils_.virtual_offsets[x + 1]; ++k) {
+      const VirtualUpdate& u = stencils_.virtual_updates[k];
+      if (queue.is_accepted(u.target) || !queue.is_accepted(u.other)) continue;
+      lower_and_note(u.target, point_source_update(u.frame, dx, distances[u.other]));
+    }
+    for (VertexId v : lowered) queue.requeue(v);
+  }
+}
+
+}  // namespace meshparticles

@@ -1,0 +1,26 @@
+#pragma once
+// Fast marching on a triangulated surface (Kimmel & Sethian) with a
+// point-source triangle update: from accepted X and Y, the source is placed in
+// the triangle's plane at distances d(X), d(Y) (on the far side of XY), and C
+// gets its straight-line distance when that line crosses edge XY. The update
+// is exact for a flat mesh and far more accurate than the planar-wavefront
+// update near the source, where wavefronts are most curved. Obtuse corners
+// use unfolded virtual triangles (see triangle_stencils.hpp).
+#include "geodesics/single_source.hpp"
+#include "geodesics/triangle_stencils.hpp"
+
+namespace meshparticles {
+
+class FastMarching : public SingleSourceGeodesics {
+ public:
+  explicit FastMarching(const SurfaceMesh& mesh);
+  void solve(VertexId source, std::span<double> distances, SolverScratch& scratch) const override;
+  std::size_t virtual_update_count() const { return stencils_.virtual_updates.size(); }
+
+ private:
+  const SurfaceMesh& mesh_;
+  std::vector<float> edge_lengths_;  // parallel to mesh.ring_neighbors()
+  TriangleStencils stencils_;
+};
+
+}  // namespace meshparticles

@@ -1,0 +1,73 @@
+#pragma once
+// The acceptance order both solvers share: a binary heap with lazy deletion
+// (stale entries are skipped when popped) over tentative distances. An entry
+// is one 64-bit integer, float32 distance bits above the vertex id: for
+// non-negative floats the bit pattern orders like the value, so the heap
+// compares plain integers. The distances themselves stay double.
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <span>
+
+#include "geodesics/single_source.hpp"
+
+namespace meshparticles {
+
+class ShortestFirstQueue {
+ public:
+  // Sets every distance to +inf but the source's (0) and queues the source.
+  ShortestFirstQueue(VertexId source, std::span<double> distances, SolverScratch& scratch)
+      : distances_(distances), heap_(scratch.heap), accepted_(scratch.accepted) {
+    std::fill(distances_.begin(), distances_.end(), std::numeric_limits<double>::infinity());
+    accepted_.assign(distances_.size(), 0);
+    heap_.clear();
+    distances_[source] = 0.0;
+    requeue(source);
+  }
+
+  // The closest vertex not yet accepted, now accepted; none when all are done.
+  std::optional<VertexId> pop_next() {
+    while (!heap_.empty()) {
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+      const auto vertex = VertexId(heap_.back() & 0xFFFFFFFFu);
+      heap_.pop_back();
+      // A vertex's latest (smallest) entry comes out first; later ones are stale.
+      if (accepted_[vertex]) continue;
+      accepted_[vertex] = 1;
+      return vertex;
+    }
+    return std::nullopt;
+  }
+
+  bool is_accepted(VertexId v) const { return accepted_[v] != 0; }
+
+  // Lowers v's tentative distance to `candidate` if that is shorter.
+  void offer(VertexId v, double candidate) {
+    if (lower(v, candidate)) requeue(v);
+  }
+
+  // offer() in two steps, for a solver that lowers a vertex several times
+  // before queueing it once: lower() returns whether v's distance dropped.
+  bool lower(VertexId v, double candidate) {
+    if (accepted_[v] || candidate >= distances_[v]) return false;
+    distances_[v] = candidate;
+    return true;
+  }
+  void requeue(VertexId v) {
+    const float key = float(distances_[v]);
+    std::uint32_t key_bits;
+    std::memcpy(&key_bits, &key, sizeof key);
+    heap_.push_back((std::uint64_t(key_bits) << 32) | v);
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+  }
+
+ private:
+  std::span<double> distances_;
+  std::vector<std::uint64_t>& heap_;
+  std::vector<unsigned char>& accepted_;
+};
+
+}  // namespace meshparticles

@@ -1,0 +1,161 @@
+// Geodesic distances against exact answers: great circles on the sphere,
+// straight lines on a flat patch; and the table's invariants.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "common/random.hpp"
+#include "common/user_error.hpp"
+#include "geodesics/distance_table.hpp"
+#include "geodesics/memory_guard.hpp"
+#include "mesh/mesh_generator.hpp"
+#include "mesh/mesh_reader.hpp"
+
+namespace meshparticles {
+namespace {
+
+SurfaceMesh committed(const std::string& name) {
+  std::vector<std::string> warnings;
+  return read_mesh(std::string(MESHES_DIR) + "/" + name, warnings);
+}
+
+struct ErrorStats {
+  double mean = 0, p99 = 0;
+};
+
+// Relative error of `table` against `exact` over pairs farther apart than
+// three mean edge lengths (closer pairs are dominated by discretisation).
+template <typename Exact>
+ErrorStats relative_errors(const SurfaceMesh& mesh, const DistanceTable& table, std::size_t source_stride, Exact exact) {
+  std::vector<double> errors;
+  const double near = 3 * mesh.mean_edge_length();
+  for (VertexId u = 0; u < mesh.vertex_count(); u += VertexId(source_stride)) {
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+      const double truth = exact(mesh.positions()[u], mesh.positions()[v]);
+      if (truth > near) errors.push_back(std::abs(table(u, v) - truth) / truth);
+    }
+  }
+  ErrorStats stats;
+  stats.mean = std::accumulate(errors.begin(), errors.end(), 0.0) / double(errors.size());
+  std::nth_element(errors.begin(), errors.begin() + std::ptrdiff_t(0.99 * double(errors.size())), errors.end());
+  stats.p99 = errors[std::size_t(0.99 * double(errors.size()))];
+  return stats;
+}
+
+double great_circle(const Vec3& a, const Vec3& b) {
+  return std::acos(std::clamp(dot(normalized(a), normalized(b)), -1.0, 1.0));  // unit sphere
+}
+
+TEST(Geodesics, SphereFastMarchingIsWithinOnePercentAndFarBetterThanDijkstra) {
+  const SurfaceMesh sphere = committed("sphere.off");
+  const DistanceTable fmm = compute_all_pairs(sphere, GeodesicMethod::fast_marching, 0, true);
+  const ErrorStats fmm_error = relative_errors(sphere, fmm, 1, great_circle);
+  const DistanceTable dijkstra = compute_all_pairs(sphere, GeodesicMethod::dijkstra, 0, true);
+  const ErrorStats dijkstra_error = relative_errors(sphere, dijkstra, 1, great_circle);
+  std::printf("sphere, relative error vs great circles: fmm mean %.3f%% p99 %.3f%%; dijkstra mean %.3f%% p99 %.3f%%\n",
+              100 * fmm_error.mean, 100 * fmm_error.p99, 100 * dijkstra_error.mean, 100 * dijkstra_error.p99);
+  EXPECT_LE(fmm_error.mean, 0.010);
+  EXPECT_LE(fmm_error.p99, 0.030);
+  EXPECT_GT(dijkstra_error.mean, 4 * fmm_error.mean);
+}
+
+TEST(Geodesics, FlatPatchMatchesEuclideanDistance) {
+  const SurfaceMesh patch = committed("patch.off");
+  const DistanceTable fmm = compute_all_pairs(patch, GeodesicMethod::fast_marching, 0, true);
+  const ErrorStats error = relative_errors(patch, fmm, 1, [](const Vec3& a, const Vec3& b) { return distance(a, b); });
+  std::printf("flat patch, relative error vs Euclidean: mean %.4f%% p99 %.4f%%\n", 100 * error.mean, 100 * error.p99);
+  EXPECT_LE(error.mean, 0.010);
+  EXPECT_LE(error.p99, 0.030);
+}
+
+// Worst relative excess d(a,c) / (d(a,b) + d(b,c)) - 1 over random triples.
+double worst_triangle_excess(const DistanceTable& table, int triples) {
+  SplitMix64 random(7);
+  const auto n = table.vertex_count();
+  double worst = 0;
+  for (int trial = 0; trial < triples; ++trial) {
+    const auto a = VertexId(random.below(n)), b = VertexId(random.below(n)), c = VertexId(random.below(n));
+    worst = std::max(worst, table(a, c) / (double(table(a, b)) + table(b, c)) - 1);
+  }
+  return worst;
+}
+
+TEST(Geodesics, TableIsSymmetricWithZeroDiagonal) {
+  const SurfaceMesh torus = committed("torus.off");
+  const DistanceTable table = compute_all_pairs(torus, GeodesicMethod::fast_marching, 0, true);
+  const auto n = VertexId(torus.vertex_count());
+  for (VertexId u = 0; u < n; ++u) {
+    ASSERT_EQ(table(u, u), 0.0f);
+    for (VertexId v = u + 1; v < n; ++v) {
+      ASSERT_EQ(table(u, v), table(v, u));
+      ASSERT_GT(table(u, v), 0.0f);
+      ASSERT_TRUE(std::isfinite(table(u, v)));
+    }
+  }
+}
+
+TEST(Geodesics, TriangleInequalityHoldsOnRandomTriples) {
+  // On the sphere within 1e-4 relative, as asked.
+  const DistanceTable sphere = compute_all_pairs(committed("sphere.off"), GeodesicMethod::fast_marching, 0, true);
+  EXPECT_LE(worst_triangle_excess(sphere, 200000), 1e-4);
+  // Where one-sided fast marching errs most - behind the torus's cut loci,
+  // along the patch's boundary - a few triples in a thousand exceed 1e-4; the
+  // bound met there is 1% (docs/GEODESICS.md has the measured figures).
+  const DistanceTable torus = compute_all_pairs(committed("torus.off"), GeodesicMethod::fast_marching, 0, true);
+  EXPECT_LE(worst_triangle_excess(torus, 200000), 1e-2);
+  const DistanceTable patch = compute_all_pairs(committed("patch.off"), GeodesicMethod::fast_marching, 0, true);
+  EXPECT_LE(worst_triangle_excess(patch, 200000), 1e-2);
+}
+
+TEST(Geodesics, DifferentComponentsAreInfinitelyFarAndNothingIsNaN) {
+  const SurfaceMesh pieces = generate_mesh("two_pieces");
+  const DistanceTable table = compute_all_pairs(pieces, GeodesicMethod::fast_marching, 0, true);
+  for (VertexId u = 0; u < 8; ++u) {
+    for (VertexId v = 0; v < 8; ++v) {
+      ASSERT_FALSE(std::isnan(table(u, v)));
+      if (pieces.component_of(u) == pieces.component_of(v)) {
+        EXPECT_TRUE(std::isfinite(table(u, v)));
+      } else {
+        EXPECT_EQ(table(u, v), INFINITY);
+      }
+    }
+  }
+  // Within a tetrahedron all vertices are neighbours: exact edge lengths.
+  EXPECT_NEAR(table(0, 1), 2 * std::sqrt(2.0), 1e-6);
+}
+
+TEST(Geodesics, HighValenceAndObtuseTrianglesStayAccurate) {
+  // Apex to apex on the 24-sided bipyramid: unfolded, the straight path
+  // crosses a ring edge at its midpoint, cos(pi/24) from the axis. Every
+  // face has a 7.5-degree apex angle, so the path crosses long thin faces.
+  const SurfaceMesh bipyramid = generate_mesh("high_valence");
+  const DistanceTable table = compute_all_pairs(bipyramid, GeodesicMethod::fast_marching, 0, true);
+  const double midpoint_radius = std::cos(std::numbers::pi / 24);
+  EXPECT_NEAR(table(0, 1), 2 * std::sqrt(1 + midpoint_radius * midpoint_radius), 1e-5);
+}
+
+TEST(Geodesics, ResultDoesNotDependOnThreadCount) {
+  const SurfaceMesh patch = committed("patch.off");
+  const DistanceTable one = compute_all_pairs(patch, GeodesicMethod::fast_marching, 1, true);
+  const DistanceTable two = compute_all_pairs(patch, GeodesicMethod::fast_marching, 2, true);
+  EXPECT_TRUE(std::equal(one.values().begin(), one.values().end(), two.values().begin()));
+}
+
+TEST(MemoryGuard, RefusesATableThatDoesNotFitAndSaysWhatWould) {
+  EXPECT_NO_THROW(check_distance_table_fits(1000, 1ull << 30, "host memory"));
+  try {
+    check_distance_table_fits(100000, 1ull << 30, "host memory");
+    FAIL() << "a 37 GiB table was accepted with 1 GiB available";
+  } catch (const UserError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("100000 x 100000"), std::string::npos) << message;
+    EXPECT_NE(message.find("at most 15"), std::string::npos) << message;  // sqrt(0.85 GiB / 4) = 15,109
+  }
+  EXPECT_EQ(max_vertices_for(400), 10u);
+}
+
+}  // namespace
+}  // namespace meshparticles
