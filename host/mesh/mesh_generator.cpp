@@ -163,14 +163,33 @@ void improve(WorkMesh& mesh, const Projection& project) {
   }
 }
 
+// Numbers vertices breadth-first from vertex 0 so that neighbours have
+// nearby ids: refinement appends its vertices at the end, and every later
+// stage (fast marching, the particle kernels) reads per-vertex arrays in
+// neighbourhood order.
 SurfaceMesh to_surface_mesh(const WorkMesh& mesh) {
+  const std::size_t n = mesh.n_vertices();
+  std::vector<int> new_id(n, -1);
+  std::vector<WorkMesh::VertexHandle> order;
+  for (std::size_t start = 0; start < n; ++start) {  // every component
+    if (new_id[start] >= 0) continue;
+    new_id[start] = int(order.size());
+    order.push_back(mesh.vertex_handle(unsigned(start)));
+    for (std::size_t head = order.size() - 1; head < order.size(); ++head) {
+      for (auto neighbor : mesh.vv_range(order[head])) {
+        if (new_id[neighbor.idx()] >= 0) continue;
+        new_id[neighbor.idx()] = int(order.size());
+        order.push_back(neighbor);
+      }
+    }
+  }
   std::vector<Vec3> positions;
-  for (auto v : mesh.vertices()) positions.push_back(to_vec(mesh.point(v)));
+  for (auto v : order) positions.push_back(to_vec(mesh.point(v)));
   std::vector<Triangle> triangles;
   for (auto f : mesh.faces()) {
     Triangle t{};
     int k = 0;
-    for (auto v : mesh.fv_range(f)) t[k++] = VertexId(v.idx());
+    for (auto v : mesh.fv_range(f)) t[k++] = VertexId(new_id[v.idx()]);
     triangles.push_back(t);
   }
   return SurfaceMesh(std::move(positions), std::move(triangles));
