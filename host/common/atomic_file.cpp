@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -11,11 +12,13 @@
 namespace meshparticles {
 
 std::filesystem::path temporary_sibling(const std::filesystem::path& destination) {
-  const std::string unique = ".tmp-" + std::to_string(::getpid()) + "-";
-  static unsigned counter = 0;
-  return destination.parent_path() /
-         ("." + destination.stem().string() + unique + std::to_string(counter++) +
-          destination.extension().string());
+  static std::atomic<unsigned> counter{0};
+  // Hidden, unique per process and call, same extension as the destination.
+  std::string name = ".";
+  name += destination.stem().string();
+  name += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  name += destination.extension().string();
+  return destination.parent_path() / name;
 }
 
 void commit_temporary(const std::filesystem::path& temporary,

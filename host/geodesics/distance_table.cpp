@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
+#include <mutex>
 #include <thread>
 
 #include "common/progress.hpp"
@@ -34,15 +36,26 @@ DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, 
   const auto solver = make_geodesics(mesh, method);
 
   std::atomic<std::size_t> next_source{0}, done{0};
+  // A worker that fails (out of memory) hands its exception to this thread,
+  // which rethrows it after joining: a clean error, not std::terminate.
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
   const auto work = [&] {
-    SolverScratch scratch;
-    std::vector<double> distances(n);
-    for (std::size_t source = next_source++; source < n; source = next_source++) {
-      solver->solve(VertexId(source), distances, scratch);
-      auto row = table.row(VertexId(source));
-      std::transform(distances.begin(), distances.end(), row.begin(), [](double d) { return float(d); });
-      row[source] = 0.0f;
-      ++done;
+    try {
+      SolverScratch scratch;
+      std::vector<double> distances(n);
+      for (std::size_t source = next_source++; source < n; source = next_source++) {
+        solver->solve(VertexId(source), distances, scratch);
+        auto row = table.row(VertexId(source));
+        std::transform(distances.begin(), distances.end(), row.begin(), [](double d) { return float(d); });
+        row[source] = 0.0f;
+        ++done;
+      }
+    } catch (...) {
+      const std::lock_guard lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next_source = n;  // the other workers stop too
+      done = n;
     }
   };
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
@@ -56,6 +69,7 @@ DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, 
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   for (auto& worker : workers) worker.join();
+  if (failure) std::rethrow_exception(failure);
   symmetrize_by_averaging(table);
   progress.finish();
   return table;
