@@ -11,15 +11,16 @@ namespace meshparticles {
 // --device P:D|NAME, shared by every command that uses a device.
 void add_device_option(CLI::App& command, std::string& device_request);
 
-// Options of every command that needs the distance table.
-struct GeodesicsCacheOptions {
+// Options of every command that needs the distance table: solver threads,
+// cache, quiet.
+struct DistanceTableOptions {
   std::string cache_dir;
   bool no_cache = false;
   unsigned threads = 0;
   bool quiet = false;
   GeodesicsRequest request(GeodesicMethod method) const;
 };
-void add_geodesics_cache_options(CLI::App& command, GeodesicsCacheOptions& options);
+void add_distance_table_options(CLI::App& command, DistanceTableOptions& options);
 
 void add_info_command(CLI::App& app);
 void add_devices_command(CLI::App& app);

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "cli/commands.hpp"
 #include "cli/mesh_loading.hpp"
@@ -20,7 +19,7 @@ struct GeodesicsOptions {
   std::optional<std::size_t> source;
   std::string out;
   std::string method = "fmm";
-  GeodesicsCacheOptions cache;
+  DistanceTableOptions table;
 };
 
 // One value per line, one line per vertex of the input file (input ids);
@@ -36,7 +35,7 @@ void write_single_source(const SurfaceMesh& mesh, const std::vector<double>& dis
 }
 
 void run_geodesics(const GeodesicsOptions& options) {
-  const SurfaceMesh mesh = load_mesh(options.mesh, options.cache.quiet);
+  const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet);
   const GeodesicMethod method = parse_method(options.method);
   const auto started = std::chrono::steady_clock::now();
   const auto seconds_since_start = [&] {
@@ -57,12 +56,12 @@ void run_geodesics(const GeodesicsOptions& options) {
     } else {
       write_file_atomically(options.out, [&](std::ostream& out) { write_single_source(mesh, distances, out); });
     }
-    if (!options.cache.quiet) std::fprintf(stderr, "one source with %s in %.3f ms\n", options.method.c_str(), 1e3 * seconds_since_start());
+    if (!options.table.quiet) std::fprintf(stderr, "one source with %s in %.3f ms\n", options.method.c_str(), 1e3 * seconds_since_start());
     return;
   }
 
   TableSource source;
-  const DistanceTable table = load_or_compute_distances(mesh, options.cache.request(method), source);
+  const DistanceTable table = load_or_compute_distances(mesh, options.table.request(method), source);
   std::printf("table      %zu x %zu float32 (%.1f MiB)\n", table.vertex_count(), table.vertex_count(),
               double(table.byte_size()) / (1 << 20));
   std::printf("solver     %s\n", options.method.c_str());
@@ -82,7 +81,7 @@ void add_geodesics_command(CLI::App& app) {
   geodesics->add_option("--geodesic", options->method, "Solver: fmm (fast marching) or dijkstra (edge graph)")
       ->check(CLI::IsMember({"fmm", "dijkstra"}))
       ->capture_default_str();
-  add_geodesics_cache_options(*geodesics, options->cache);
+  add_distance_table_options(*geodesics, options->table);
   geodesics->callback([options] { run_geodesics(*options); });
 }
 

@@ -2,7 +2,7 @@
 
 namespace meshparticles {
 
-GeodesicsRequest GeodesicsCacheOptions::request(GeodesicMethod method) const {
+GeodesicsRequest DistanceTableOptions::request(GeodesicMethod method) const {
   GeodesicsRequest request;
   request.method = method;
   request.threads = threads;
@@ -11,7 +11,7 @@ GeodesicsRequest GeodesicsCacheOptions::request(GeodesicMethod method) const {
   return request;
 }
 
-void add_geodesics_cache_options(CLI::App& command, GeodesicsCacheOptions& options) {
+void add_distance_table_options(CLI::App& command, DistanceTableOptions& options) {
   command.add_option("--cache-dir", options.cache_dir, "Distance cache directory (default: $XDG_CACHE_HOME/meshparticles)");
   command.add_flag("--no-cache", options.no_cache, "Neither read nor write the distance cache");
   command.add_option("--threads", options.threads, "Threads for all-pairs distances (0: all cores)")

@@ -15,7 +15,4 @@ class EdgeDijkstra : public SingleSourceGeodesics {
   std::vector<float> edge_lengths_;  // parallel to mesh.ring_neighbors()
 };
 
-// |v - w| for every one-ring entry, in the order of mesh.ring_neighbors().
-std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh);
-
 }  // namespace meshparticles

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geodesics/dijkstra.hpp"
 #include "geodesics/shortest_first_queue.hpp"
 
 namespace meshparticles {

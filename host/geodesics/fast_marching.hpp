@@ -15,7 +15,6 @@ class FastMarching : public SingleSourceGeodesics {
  public:
   explicit FastMarching(const SurfaceMesh& mesh);
   void solve(VertexId source, std::span<double> distances, SolverScratch& scratch) const override;
-  std::size_t virtual_update_count() const { return stencils_.virtual_updates.size(); }
 
  private:
   const SurfaceMesh& mesh_;

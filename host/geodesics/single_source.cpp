@@ -16,6 +16,16 @@ GeodesicMethod parse_method(const std::string& name) {
   throw UserError("unknown geodesic method '" + name + "' (use fmm or dijkstra)");
 }
 
+std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh) {
+  std::vector<float> lengths(mesh.ring_neighbors().size());
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    for (std::uint32_t k = mesh.ring_offsets()[v]; k < mesh.ring_offsets()[v + 1]; ++k) {
+      lengths[k] = float(distance(mesh.positions()[v], mesh.positions()[mesh.ring_neighbors()[k]]));
+    }
+  }
+  return lengths;
+}
+
 std::unique_ptr<SingleSourceGeodesics> make_geodesics(const SurfaceMesh& mesh, GeodesicMethod method) {
   if (method == GeodesicMethod::dijkstra) return std::make_unique<EdgeDijkstra>(mesh);
   return std::make_unique<FastMarching>(mesh);

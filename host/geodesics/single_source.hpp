@@ -32,6 +32,10 @@ class SingleSourceGeodesics {
   virtual void solve(VertexId source, std::span<double> distances, SolverScratch& scratch) const = 0;
 };
 
+// |v - w| for every one-ring entry, in the order of mesh.ring_neighbors():
+// the edge updates both solvers make.
+std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh);
+
 std::unique_ptr<SingleSourceGeodesics> make_geodesics(const SurfaceMesh& mesh, GeodesicMethod method);
 
 }  // namespace meshparticles
