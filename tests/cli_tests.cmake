@@ -40,3 +40,33 @@ expect_exit(geodesics_unwritable_out 2 "cannot write" geodesics ${PROJECT_SOURCE
 expect_exit(geodesics_unknown_solver 2 "--geodesic" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --geodesic heat)
 expect_exit(geodesics_table 0 "geodesics \\(fmm, [0-9]+ threads?\\): 4 done" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --no-cache)
 expect_exit(geodesics_dropped_vertex 2 "--source 0 is not a vertex of the surface" geodesics ${DATA}/unreferenced_vertices.off --source 0 -q)
+# meshparticles run: bad arguments exit 2 with one clear line.
+set(TORUS ${PROJECT_SOURCE_DIR}/meshes/torus.off)
+set(TETRA ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off)
+set(RUN_OUT ${CMAKE_CURRENT_BINARY_DIR}/run_out)
+expect_exit(run_zero_particles 2 "--particles: Value 0 not in range" run ${TETRA} -n 0 --out ${RUN_OUT})
+expect_exit(run_too_many_particles 2 "-n 5 is more particles than the 4 vertices of .*tetrahedron\\.off" run ${TETRA} -n 5 --out ${RUN_OUT})
+expect_exit(run_zero_sigma 2 "--sigma: Value 0 not in range" run ${TETRA} -n 2 --sigma 0 --out ${RUN_OUT})
+expect_exit(run_negative_sigma 2 "--sigma: Value -1 not in range" run ${TETRA} -n 2 --sigma -1 --out ${RUN_OUT})
+expect_exit(run_unknown_backend 2 "--backend: cuda not in" run ${TETRA} --backend cuda --out ${RUN_OUT})
+expect_exit(run_unknown_scheme 2 "--scheme: jacobi not in" run ${TETRA} --scheme jacobi --out ${RUN_OUT})
+expect_exit(run_zero_colors 2 "--colors: Value 0 not in range" run ${TETRA} --colors 0 --out ${RUN_OUT})
+expect_exit(run_colors_without_colored 2 "--colors applies to --scheme colored" run ${TETRA} -n 2 --scheme synchronous --colors 4 --out ${RUN_OUT})
+expect_exit(run_sequential_on_device 2 "--scheme sequential .* runs only on --backend serial" run ${TETRA} -n 2 --backend tiled --scheme sequential --out ${RUN_OUT})
+expect_exit(run_refused_work_group 2 "--wg 1000000 exceeds the maximum work-group size [0-9]+" run ${TETRA} -n 2 --backend tiled --wg 1000000 --no-cache --out ${RUN_OUT})
+expect_exit(run_refused_tile 2 "needs [0-9]+ bytes of local memory. .* has [0-9]+" run ${TETRA} -n 2 --backend tiled --tile 16000000 --no-cache --out ${RUN_OUT})
+expect_exit(run_tile_on_naive 2 "--tile applies to the tiled backend only" run ${TETRA} -n 2 --backend naive --tile 8 --no-cache --out ${RUN_OUT})
+expect_exit(run_wg_on_serial 2 "--wg and --tile apply to the naive and tiled backends" run ${TETRA} -n 2 --backend serial --wg 8 --no-cache --out ${RUN_OUT})
+expect_exit(run_bad_start_vertex 2 "--start-vertex 9 is not a vertex of the surface" run ${TETRA} -n 2 --init v0 --start-vertex 9 --out ${RUN_OUT})
+expect_exit(run_unwritable_out 2 "cannot create output directory /dev/null/out" run ${TETRA} -n 2 --out /dev/null/out)
+# Whole runs on the tetrahedron: every backend, files written, summary printed.
+foreach(backend serial naive tiled)
+  expect_exit(run_${backend} 0 "particles: [0-9]+ done in .*(converged|iteration limit reached)" run ${TETRA} -n 2 --backend ${backend} --no-cache --out ${RUN_OUT}/${backend})
+endforeach()
+# A kernel that does not build: exit 2, the build log follows the message.
+file(COPY ${PROJECT_SOURCE_DIR}/kernels/ DESTINATION ${CMAKE_CURRENT_BINARY_DIR}/broken_kernels)
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/broken_kernels/naive_update.cl "__kernel void naive_update( this is not OpenCL C\n")
+expect_exit_of(run_kernel_build_failure 2 "OpenCL kernels failed to build \\(naive_update\\.cl.*build log:"
+            env MESHPARTICLES_KERNEL_DIR=${CMAKE_CURRENT_BINARY_DIR}/broken_kernels
+            $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend naive --no-cache --out ${RUN_OUT})
+set_tests_properties(cli.run_kernel_build_failure PROPERTIES ENVIRONMENT MULTILINE=1)

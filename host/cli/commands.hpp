@@ -26,5 +26,6 @@ void add_info_command(CLI::App& app);
 void add_devices_command(CLI::App& app);
 void add_generate_command(CLI::App& app);
 void add_geodesics_command(CLI::App& app);
+void add_run_command(CLI::App& app);
 
 }  // namespace meshparticles

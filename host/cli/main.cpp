@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add_devices_command(app);
   add_generate_command(app);
   add_geodesics_command(app);
+  add_run_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

@@ -9,6 +9,7 @@ namespace meshparticles {
 ProgressLine::ProgressLine(std::string label, std::size_t total, bool quiet)
     : label_(std::move(label)),
       total_(total),
+      done_(total),
       quiet_(quiet),
       terminal_(::isatty(STDERR_FILENO) != 0),
       start_(std::chrono::steady_clock::now()),
@@ -18,22 +19,23 @@ double ProgressLine::elapsed_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-void ProgressLine::update(std::size_t done) {
+void ProgressLine::update(std::size_t done, const std::string& detail) {
+  done_ = done;
   if (quiet_ || !terminal_) return;
   const auto now = std::chrono::steady_clock::now();
   if (now - last_draw_ < std::chrono::milliseconds(200) && done < total_) return;
   last_draw_ = now;
   const double elapsed = elapsed_seconds();
   const double eta = done > 0 ? elapsed * double(total_ - done) / double(done) : 0.0;
-  std::fprintf(stderr, "\r%s: %zu/%zu  elapsed %.1f s  ETA %.1f s   ", label_.c_str(), done,
-               total_, elapsed, eta);
+  std::fprintf(stderr, "\r%s: %zu/%zu  %s%selapsed %.1f s  ETA %.1f s   ", label_.c_str(), done, total_,
+               detail.c_str(), detail.empty() ? "" : "  ", elapsed, eta);
   std::fflush(stderr);
 }
 
 void ProgressLine::finish(const std::string& suffix) {
   if (quiet_) return;
   if (terminal_) std::fputs("\r\033[K", stderr);
-  std::fprintf(stderr, "%s: %zu done in %.2f s%s%s\n", label_.c_str(), total_, elapsed_seconds(),
+  std::fprintf(stderr, "%s: %zu done in %.2f s%s%s\n", label_.c_str(), done_, elapsed_seconds(),
                suffix.empty() ? "" : ", ", suffix.c_str());
 }
 

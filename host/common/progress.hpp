@@ -13,7 +13,8 @@ class ProgressLine {
   ProgressLine(std::string label, std::size_t total, bool quiet);
   // Reports that `done` of `total` units are finished; thread-compatible when
   // called from one thread at a time.
-  void update(std::size_t done);
+  // `detail` (e.g. "moved 12, energy 623.4") follows the counts.
+  void update(std::size_t done, const std::string& detail = "");
   // Prints the final summary (or clears the line on a terminal) with `suffix`.
   void finish(const std::string& suffix = "");
   double elapsed_seconds() const;
@@ -21,6 +22,7 @@ class ProgressLine {
  private:
   std::string label_;
   std::size_t total_;
+  std::size_t done_;  // the last count reported (work may end early)
   bool quiet_;
   bool terminal_;
   std::chrono::steady_clock::time_point start_;

@@ -71,6 +71,7 @@ DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, 
   for (auto& worker : workers) worker.join();
   if (failure) std::rethrow_exception(failure);
   symmetrize_by_averaging(table);
+  progress.update(n);
   progress.finish();
   return table;
 }

@@ -1,0 +1,111 @@
+#include "backends/serial_backend.hpp"
+
+#include "particles/energy.hpp"
+
+namespace meshparticles {
+
+SerialBackend::SerialBackend(const SurfaceMesh& mesh, const DistanceTable& distances, const EnergyParams& energy)
+    : mesh_(mesh), distances_(distances), energy_(energy) {}
+
+void SerialBackend::set_positions(std::span<const VertexId> positions) {
+  positions_.assign(positions.begin(), positions.end());
+}
+
+VertexId SerialBackend::candidate_vertex(VertexId here, std::size_t candidate) const {
+  return candidate == 0 ? here : mesh_.one_ring(here)[candidate - 1];
+}
+
+std::vector<double> SerialBackend::candidate_energies(std::size_t c, std::span<const VertexId> positions) const {
+  const double inv_two_sigma_sq = energy_.inv_two_sigma_sq();
+  const VertexId here = positions[c];
+  std::vector<double> energies(mesh_.valence(here) + 1, 0.0);
+  std::vector<bool> occupied(energies.size(), false);
+  for (std::size_t j = 0; j < energies.size(); ++j) {
+    const VertexId v = candidate_vertex(here, j);
+    const auto row = distances_.row(v);
+    double energy = 0;
+    bool taken = false;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      if (i == c) continue;
+      energy += pair_weight(energy_.potential, row[positions[i]], inv_two_sigma_sq);
+      taken |= positions[i] == v;
+    }
+    energies[j] = energy;
+    occupied[j] = taken;
+  }
+  if (!occupied[0]) {  // alone on its vertex: occupied neighbours are blocked
+    for (std::size_t j = 1; j < energies.size(); ++j) {
+      if (occupied[j]) energies[j] = kBlocked;
+    }
+  }
+  return energies;
+}
+
+// The paper's CPU loop: each particle sees the moves made before it.
+std::size_t SerialBackend::sequential_sweep() {
+  std::size_t moved = 0;
+  for (std::size_t c = 0; c < positions_.size(); ++c) {
+    const VertexId here = positions_[c];
+    const VertexId target = candidate_vertex(here, candidate_of_rank(candidate_energies(c, positions_), 0));
+    if (target != here) {
+      positions_[c] = target;
+      ++moved;
+    }
+  }
+  return moved;
+}
+
+// The particles of one colour decide from one snapshot; the k-th particle
+// stacked on a vertex (by index, over all particles) takes its k-th best
+// candidate. When several
+// choose the same (free) vertex, the smallest index moves there and the
+// others stay.
+std::size_t SerialBackend::synchronous_step(unsigned color, unsigned colors) {
+  const std::vector<VertexId> snapshot = positions_;
+  std::vector<std::size_t> movers;
+  std::vector<VertexId> targets;
+  for (std::size_t c = color; c < snapshot.size(); c += colors) {
+    std::size_t stack_rank = 0;
+    for (std::size_t i = 0; i < c; ++i) stack_rank += snapshot[i] == snapshot[c];
+    const VertexId target = candidate_vertex(snapshot[c], candidate_of_rank(candidate_energies(c, snapshot), stack_rank));
+    if (target != snapshot[c]) {
+      movers.push_back(c);
+      targets.push_back(target);
+    }
+  }
+  std::vector<bool> taken(mesh_.vertex_count(), false);
+  std::size_t moved = 0;
+  for (std::size_t k = 0; k < movers.size(); ++k) {  // movers are in index order
+    if (taken[targets[k]]) continue;
+    taken[targets[k]] = true;
+    positions_[movers[k]] = targets[k];
+    ++moved;
+  }
+  return moved;
+}
+
+IterationStats SerialBackend::iterate(Scheme scheme, unsigned colors) {
+  IterationStats stats;
+  if (scheme == Scheme::sequential) {
+    stats.moved = sequential_sweep();
+  } else {
+    const unsigned groups = sub_steps(scheme, colors);
+    for (unsigned color = 0; color < groups; ++color) stats.moved += synchronous_step(color, groups);
+  }
+  stats.energy = total_energy();
+  return stats;
+}
+
+double SerialBackend::total_energy() {
+  const double inv_two_sigma_sq = energy_.inv_two_sigma_sq();
+  double total = 0;
+  for (std::size_t i = 0; i < positions_.size(); ++i) {
+    const auto row = distances_.row(positions_[i]);
+    for (std::size_t j = i + 1; j < positions_.size(); ++j) {
+      total += pair_weight(energy_.potential, row[positions_[j]], inv_two_sigma_sq);
+    }
+  }
+  return total;
+}
+
+}  // namespace meshparticles

@@ -1,0 +1,38 @@
+#pragma once
+// The two update kernels of the paper, as the host sees them: which file,
+// which compile-time parameters, how many work-groups a sub-step launches,
+// how much local memory they need. Everything a launch or a size check needs
+// to know about a kernel lives here.
+#include <cstddef>
+#include <string>
+
+#include "opencl/program_builder.hpp"
+#include "particles/particle_params.hpp"
+
+namespace meshparticles {
+
+enum class KernelKind { naive, tiled };
+
+KernelKind parse_kernel_kind(const std::string& name);  // "naive" | "tiled"
+std::string kernel_kind_name(KernelKind kind);
+
+struct UpdateKernel {
+  KernelKind kind = KernelKind::tiled;
+  std::size_t work_group_size = 0;
+  std::size_t tile_size = 0;        // tiled only
+  std::size_t candidate_slots = 0;  // the mesh's largest valence + 1
+
+  std::string file() const;         // "tiled_update.cl"
+  std::string function() const;     // "tiled_update"
+  // The particles one work-group updates (naive: one).
+  std::size_t particles_per_group() const;
+  std::size_t work_groups_for(std::size_t particles) const;
+  std::size_t local_memory_bytes() const;
+  KernelDefines defines(Potential potential) const;
+};
+
+// Sizes used when neither --wg nor --tile is given (chosen by measurement,
+// docs/PERFORMANCE.md), capped to the device's maximum work-group size.
+UpdateKernel default_update_kernel(KernelKind kind, std::size_t candidate_slots, std::size_t device_max_work_group);
+
+}  // namespace meshparticles

@@ -1,0 +1,184 @@
+// `meshparticles run`: the whole pipeline - mesh, distance table, start,
+// iterations on a backend - and its outputs (particles, CSV, report.json).
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "backends/backend_factory.hpp"
+#include "cli/commands.hpp"
+#include "cli/mesh_loading.hpp"
+#include "common/user_error.hpp"
+#include "geodesics/distance_cache.hpp"
+#include "mesh/mesh_generator.hpp"
+#include "particles/initial_placement.hpp"
+#include "particles/particle_run.hpp"
+#include "reports/run_outputs.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+const char* const kDefaultMesh = "meshes/sphere.off";
+
+struct RunOptions {
+  std::string mesh;
+  std::size_t particles = 1024;
+  std::size_t iterations = 500;
+  BackendRequest backend;
+  std::string scheme;  // default: sequential on serial, colored on devices
+  std::optional<unsigned> colors;
+  std::string init = "farthest";
+  std::optional<std::size_t> start_vertex;
+  std::uint64_t seed = 1;
+  std::optional<double> sigma;
+  std::string potential = "exp";
+  std::string geodesic = "fmm";
+  std::string out = "out";
+  DistanceTableOptions table;
+};
+
+constexpr unsigned kDefaultColors = 16;  // measured, docs/ALGORITHM.md
+
+// With no MESH: the committed sphere when run from the repository, else the
+// same sphere from the built-in generator, so the default job runs anywhere.
+SurfaceMesh load_run_mesh(RunOptions& options) {
+  if (options.mesh.empty() && !std::filesystem::exists(kDefaultMesh)) {
+    options.mesh = "built-in:sphere";
+    return generate_mesh("sphere");
+  }
+  if (options.mesh.empty()) options.mesh = kDefaultMesh;
+  return load_mesh(options.mesh, options.table.quiet);
+}
+
+Scheme chosen_scheme(const RunOptions& options) {
+  if (!options.scheme.empty()) return parse_scheme(options.scheme);
+  return options.backend.name == "serial" ? Scheme::sequential : Scheme::colored;
+}
+
+void check_arguments(const RunOptions& options, const SurfaceMesh& mesh, Scheme scheme) {
+  if (options.particles > mesh.vertex_count()) {
+    throw UserError("-n " + std::to_string(options.particles) + " is more particles than the " +
+                    std::to_string(mesh.vertex_count()) + " vertices of " + options.mesh);
+  }
+  if (scheme == Scheme::sequential && is_device_backend(options.backend.name)) {
+    throw UserError("--scheme sequential is the paper's CPU loop and runs only on --backend serial "
+                    "(devices run synchronous or colored)");
+  }
+  if (options.colors && scheme != Scheme::colored) {
+    throw UserError("--colors applies to --scheme colored, not " + scheme_name(scheme));
+  }
+  if (options.start_vertex && parse_init(options.init) == Init::random) {
+    throw UserError("--start-vertex applies to --init v0 and farthest, not random");
+  }
+}
+
+std::optional<VertexId> start_vertex_of(const RunOptions& options, const SurfaceMesh& mesh) {
+  if (!options.start_vertex) return std::nullopt;
+  const auto vertex = mesh.vertex_of_input_id(*options.start_vertex);
+  if (!vertex) {
+    throw UserError("--start-vertex " + std::to_string(*options.start_vertex) + " is not a vertex of the surface (" +
+                    options.mesh + " has " + std::to_string(mesh.input_vertex_count()) + " vertices)");
+  }
+  return vertex;
+}
+
+void print_summary(const RunOptions& options, const nlohmann::json& report) {
+  const auto& params = report["params"];
+  std::printf("mesh        %s (%zu vertices)\n", options.mesh.c_str(), report["mesh"]["vertices"].get<std::size_t>());
+  std::printf("particles   %zu, %s on %s, scheme %s\n", options.particles, options.backend.name.c_str(),
+              report["device"].get<std::string>().c_str(), params["scheme"].get<std::string>().c_str());
+  std::printf("iterations  %zu (%s)\n", report["iterations_run"].get<std::size_t>(),
+              report["stopped"].get<std::string>().c_str());
+  std::printf("energy      %.6g -> %.6g\n", report["initial_energy"].get<double>(), report["final_energy"].get<double>());
+  std::printf("time        %.3f ms/iteration", report["avg_iteration_ms"].get<double>());
+  if (report.contains("avg_kernel_ms")) std::printf(" (update kernels %.3f ms)", report["avg_kernel_ms"].get<double>());
+  std::printf("\noutput      %s/{particles.particles, particles.csv, report.json}\n", options.out.c_str());
+}
+
+void run_run(RunOptions options) {
+  const Potential potential = parse_potential(options.potential);
+  const Scheme scheme = chosen_scheme(options);
+  const SurfaceMesh mesh = load_run_mesh(options);
+  check_arguments(options, mesh, scheme);
+  const std::optional<VertexId> start_vertex = start_vertex_of(options, mesh);
+  prepare_output_directory(options.out);  // before the long work, not after
+
+  const CheckedBackend checked = check_backend(options.backend, mesh);
+
+  const EnergyParams energy{potential, options.sigma.value_or(default_sigma(potential, mesh.area(), options.particles))};
+  TableSource table_source;
+  const DistanceTable distances =
+      load_or_compute_distances(mesh, options.table.request(parse_method(options.geodesic)), table_source);
+  const std::unique_ptr<ParticleBackend> backend = make_backend(checked, mesh, distances, energy);
+
+  PlacementRequest placement{parse_init(options.init), options.particles, options.seed, start_vertex};
+  const std::vector<VertexId> start = place_particles(distances, placement);
+  const unsigned colors = options.colors.value_or(kDefaultColors);
+  const RunOutcome outcome =
+      run_particles(*backend, start, {scheme, colors, options.iterations, options.table.quiet});
+
+  nlohmann::json params = {{"n", options.particles},
+                           {"iterations", options.iterations},
+                           {"backend", options.backend.name},
+                           {"scheme", scheme_name(scheme)},
+                           {"init", options.init},
+                           {"seed", options.seed},
+                           {"sigma", energy.sigma},
+                           {"sigma_from", options.sigma ? "--sigma" : "default rule"},
+                           {"potential", potential_name(potential)},
+                           {"geodesic", options.geodesic},
+                           {"out", options.out}};
+  if (scheme == Scheme::colored) params["colors"] = colors;
+  if (start_vertex) params["start_vertex"] = *options.start_vertex;
+  if (checked.kernel) {
+    params["wg"] = checked.kernel->work_group_size;
+    if (checked.kernel->kind == KernelKind::tiled) params["tile"] = checked.kernel->tile_size;
+  }
+  const nlohmann::json report = run_report(mesh, {options.mesh, params, backend->device_name()}, outcome);
+  write_run_outputs(options.out, mesh, outcome.positions, report);
+  print_summary(options, report);
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* run = app.add_subcommand("run", "Spread particles over a mesh (default: the sphere, 1024 particles)");
+  run->add_option("mesh", options->mesh, "Mesh file (default: meshes/sphere.off, else the built-in sphere)");
+  run->add_option("-n,--particles", options->particles, "Number of particles, 1..V")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  run->add_option("--iterations", options->iterations, "Stop after this many iterations (or when none moves)")
+      ->capture_default_str();
+  run->add_option("--backend", options->backend.name, "serial (the reference), naive or tiled (OpenCL)")
+      ->check(CLI::IsMember({"serial", "naive", "tiled"}))
+      ->capture_default_str();
+  run->add_option("--scheme", options->scheme,
+                  "sequential (serial only), synchronous or colored (default: sequential on serial, colored on devices)")
+      ->check(CLI::IsMember({"sequential", "synchronous", "colored"}));
+  run->add_option("--colors", options->colors, "Groups of the colored scheme (default 16)")->check(CLI::PositiveNumber);
+  run->add_option("--init", options->init, "Start: v0 (all on one vertex), random, farthest (farthest-point sampling)")
+      ->check(CLI::IsMember({"v0", "random", "farthest"}))
+      ->capture_default_str();
+  run->add_option("--start-vertex", options->start_vertex, "Input vertex id for v0, or the first farthest sample");
+  run->add_option("--seed", options->seed, "Seed of random and farthest starts")->capture_default_str();
+  run->add_option("--sigma", options->sigma, "Sigma in mesh units (default from the particle spacing, see docs)")
+      ->check(CLI::PositiveNumber);
+  run->add_option("--potential", options->potential, "exp: exp(-d/(2 sigma^2)); gauss: exp(-d^2/(2 sigma^2))")
+      ->check(CLI::IsMember({"exp", "gauss"}))
+      ->capture_default_str();
+  run->add_option("--geodesic", options->geodesic, "Distance solver: fmm or dijkstra")
+      ->check(CLI::IsMember({"fmm", "dijkstra"}))
+      ->capture_default_str();
+  add_device_option(*run, options->backend.device);
+  run->add_option("--wg", options->backend.work_group_size, "Work-group size of the kernel")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  run->add_option("--tile", options->backend.tile_size, "Tile size (particles staged in local memory; tiled only)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24));
+  run->add_option("--out", options->out, "Output directory")->capture_default_str();
+  add_distance_table_options(*run, options->table);
+  run->callback([options] { run_run(*options); });
+}
+
+}  // namespace meshparticles

@@ -1,0 +1,49 @@
+#include "opencl/kernel_sources.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/user_error.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+std::string raw_kernel_file(const std::string& file_name) {
+  if (const char* directory = std::getenv("MESHPARTICLES_KERNEL_DIR"); directory && *directory) {
+    const std::filesystem::path path = std::filesystem::path(directory) / file_name;
+    std::ifstream in(path);
+    if (!in) throw UserError("cannot read kernel " + path.string() + " ($MESHPARTICLES_KERNEL_DIR is set)");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  for (const auto& file : embedded_kernel_files()) {
+    if (file_name == file.name) return file.text;
+  }
+  throw UserError("no kernel file named " + file_name + " is built into this binary");
+}
+
+}  // namespace
+
+std::string kernel_source(const std::string& file_name) {
+  // One level of quoted includes is all the kernels use; headers guard
+  // themselves against being included twice.
+  std::istringstream lines(raw_kernel_file(file_name));
+  std::string result, line;
+  const std::string directive = "#include \"";
+  while (std::getline(lines, line)) {
+    if (line.rfind(directive, 0) == 0) {
+      const std::string header = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
+      result += raw_kernel_file(header);
+    } else {
+      result += line;
+    }
+    result += '\n';
+  }
+  return result;
+}
+
+}  // namespace meshparticles

@@ -1,0 +1,23 @@
+#pragma once
+// The OpenCL C sources of kernels/, embedded in the binary at build time so
+// it runs from anywhere. Setting $MESHPARTICLES_KERNEL_DIR reads them from
+// that directory instead: edit a kernel and rerun, no rebuild.
+#include <string>
+#include <vector>
+
+namespace meshparticles {
+
+struct EmbeddedKernelFile {
+  const char* name;  // "tiled_update.cl"
+  const char* text;
+};
+
+// Generated from kernels/ by cmake/embed_kernels.cmake.
+const std::vector<EmbeddedKernelFile>& embedded_kernel_files();
+
+// The source of `file_name`, with `#include "x.h"` lines replaced by the
+// text of x.h (from the same place), ready for clCreateProgramWithSource.
+// Throws UserError when the file does not exist.
+std::string kernel_source(const std::string& file_name);
+
+}  // namespace meshparticles

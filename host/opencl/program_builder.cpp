@@ -1,0 +1,27 @@
+#include "opencl/program_builder.hpp"
+
+#include "common/user_error.hpp"
+#include "opencl/kernel_sources.hpp"
+
+namespace meshparticles {
+
+cl::Program build_program(const cl::Context& context, const cl::Device& device,
+                          const std::vector<std::string>& kernel_files, const KernelDefines& defines) {
+  std::string source;
+  for (const auto& file : kernel_files) source += kernel_source(file);
+  std::string options = "-cl-std=CL1.2";
+  for (const auto& [name, value] : defines) options += " -D " + name + "=" + std::to_string(value);
+
+  cl::Program program(context, source);
+  try {
+    program.build({device}, options.c_str());
+  } catch (const cl::Error&) {
+    std::string files;
+    for (const auto& file : kernel_files) files += (files.empty() ? "" : ", ") + file;
+    const std::string log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device);
+    throw UserError("OpenCL kernels failed to build (" + files + ", options '" + options + "'); build log:\n" + log);
+  }
+  return program;
+}
+
+}  // namespace meshparticles

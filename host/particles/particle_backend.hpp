@@ -1,0 +1,40 @@
+#pragma once
+// The one interface every backend implements (serial reference, naive and
+// tiled OpenCL kernels). A backend holds the particle positions; one call of
+// iterate() is one iteration of the chosen scheme.
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "mesh/surface_mesh.hpp"
+#include "particles/particle_params.hpp"
+
+namespace meshparticles {
+
+struct IterationStats {
+  std::size_t moved = 0;
+  double energy = 0;                 // total pair energy after the iteration
+  std::optional<double> kernel_ms;  // update kernels, from profiling events (device backends)
+};
+
+class ParticleBackend {
+ public:
+  virtual ~ParticleBackend() = default;
+  // "serial", or the OpenCL device's name.
+  virtual std::string device_name() const = 0;
+  virtual bool supports(Scheme scheme) const = 0;
+  virtual void set_positions(std::span<const VertexId> positions) = 0;
+  virtual std::vector<VertexId> positions() = 0;
+  // sequential: every particle in index order; synchronous: one sub-step of
+  // all particles from one snapshot; colored: `colors` sub-steps, group
+  // index % colors after group.
+  virtual IterationStats iterate(Scheme scheme, unsigned colors) = 0;
+  // Total pair energy sum_{i<j} w(d(p_i, p_j)) of the current positions.
+  virtual double total_energy() = 0;
+};
+
+// The number of colour groups a scheme updates one after the other.
+inline unsigned sub_steps(Scheme scheme, unsigned colors) { return scheme == Scheme::colored ? colors : 1; }
+
+}  // namespace meshparticles

@@ -1,0 +1,59 @@
+#include "particles/particle_params.hpp"
+
+#include <cmath>
+
+#include "common/user_error.hpp"
+
+namespace meshparticles {
+
+Potential parse_potential(const std::string& name) {
+  if (name == "exp") return Potential::exp;
+  if (name == "gauss") return Potential::gauss;
+  throw UserError("unknown potential '" + name + "' (choose exp or gauss)");
+}
+
+Scheme parse_scheme(const std::string& name) {
+  if (name == "sequential") return Scheme::sequential;
+  if (name == "synchronous") return Scheme::synchronous;
+  if (name == "colored") return Scheme::colored;
+  throw UserError("unknown scheme '" + name + "' (choose sequential, synchronous or colored)");
+}
+
+Init parse_init(const std::string& name) {
+  if (name == "v0") return Init::v0;
+  if (name == "random") return Init::random;
+  if (name == "farthest") return Init::farthest;
+  throw UserError("unknown start '" + name + "' (choose v0, random or farthest)");
+}
+
+std::string potential_name(Potential potential) { return potential == Potential::exp ? "exp" : "gauss"; }
+
+std::string scheme_name(Scheme scheme) {
+  switch (scheme) {
+    case Scheme::sequential: return "sequential";
+    case Scheme::synchronous: return "synchronous";
+    case Scheme::colored: return "colored";
+  }
+  return "?";
+}
+
+std::string init_name(Init init) {
+  switch (init) {
+    case Init::v0: return "v0";
+    case Init::random: return "random";
+    case Init::farthest: return "farthest";
+  }
+  return "?";
+}
+
+double hexagonal_spacing(double area, std::size_t particle_count) {
+  return std::sqrt(2.0 * area / (std::sqrt(3.0) * double(particle_count)));
+}
+
+double default_sigma(Potential potential, double area, std::size_t particle_count) {
+  const double d_hex = hexagonal_spacing(area, particle_count);
+  if (potential == Potential::exp) return std::sqrt(d_hex / 4.0);  // 2 sigma^2 = d_hex / 2
+  return d_hex / 2.0;
+}
+
+}  // namespace meshparticles

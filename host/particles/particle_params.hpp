@@ -1,0 +1,36 @@
+#pragma once
+// What a particle run is asked to do: the potential and its sigma, the update
+// scheme and how particles start. docs/ALGORITHM.md is the contract.
+#include <cstdint>
+#include <string>
+
+namespace meshparticles {
+
+enum class Potential { exp, gauss };
+enum class Scheme { sequential, synchronous, colored };
+enum class Init { v0, random, farthest };
+
+Potential parse_potential(const std::string& name);
+Scheme parse_scheme(const std::string& name);
+Init parse_init(const std::string& name);
+std::string potential_name(Potential potential);
+std::string scheme_name(Scheme scheme);
+std::string init_name(Init init);
+
+// The energy's parameters, shared by every backend.
+struct EnergyParams {
+  Potential potential = Potential::exp;
+  double sigma = 0;
+  // The factor both potentials multiply by: 1 / (2 sigma^2).
+  double inv_two_sigma_sq() const { return 1.0 / (2.0 * sigma * sigma); }
+};
+
+// Expected spacing of n particles in a hexagonal packing of area A:
+// d_hex = sqrt(2A / (sqrt(3) n)).
+double hexagonal_spacing(double area, std::size_t particle_count);
+
+// The default sigma for n particles on area A, chosen by measurement
+// (docs/ALGORITHM.md): exp: 2 sigma^2 = d_hex / 2; gauss: sigma = d_hex / 2.
+double default_sigma(Potential potential, double area, std::size_t particle_count);
+
+}  // namespace meshparticles

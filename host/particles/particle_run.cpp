@@ -1,0 +1,38 @@
+#include "particles/particle_run.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+#include "common/progress.hpp"
+
+namespace meshparticles {
+
+RunOutcome run_particles(ParticleBackend& backend, std::span<const VertexId> start, const RunSettings& settings) {
+  RunOutcome outcome;
+  backend.set_positions(start);
+  outcome.initial_energy = backend.total_energy();
+  ProgressLine progress("particles", settings.max_iterations, settings.quiet);
+  for (std::size_t iteration = 0; iteration < settings.max_iterations; ++iteration) {
+    const auto started = std::chrono::steady_clock::now();
+    const IterationStats stats = backend.iterate(settings.scheme, settings.colors);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    outcome.trace.push_back({stats.energy, stats.moved, ms, stats.kernel_ms});
+    char detail[96];
+    std::snprintf(detail, sizeof detail, "moved %zu  energy %.6g  %.2f ms/iteration", stats.moved, stats.energy, ms);
+    progress.update(iteration + 1, detail);
+    if (stats.moved == 0) {
+      outcome.converged = true;
+      break;
+    }
+  }
+  const std::size_t done = outcome.trace.size();
+  char summary[128];
+  std::snprintf(summary, sizeof summary, "%s, energy %.6g",
+                outcome.converged ? "converged" : "iteration limit reached",
+                done ? outcome.trace.back().energy : outcome.initial_energy);
+  progress.finish(summary);
+  outcome.positions = backend.positions();
+  return outcome;
+}
+
+}  // namespace meshparticles

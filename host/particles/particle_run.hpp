@@ -1,0 +1,34 @@
+#pragma once
+// The iteration loop every backend shares: iterate until the iteration limit
+// or until an iteration moves no particle, recording a trace.
+#include <optional>
+#include <vector>
+
+#include "particles/particle_backend.hpp"
+
+namespace meshparticles {
+
+struct RunSettings {
+  Scheme scheme = Scheme::colored;
+  unsigned colors = 8;
+  std::size_t max_iterations = 500;
+  bool quiet = false;  // no progress line
+};
+
+struct IterationRecord {
+  double energy = 0;
+  std::size_t moved = 0;
+  double ms = 0;  // wall time of the iteration
+  std::optional<double> kernel_ms;
+};
+
+struct RunOutcome {
+  double initial_energy = 0;
+  std::vector<IterationRecord> trace;
+  bool converged = false;  // an iteration moved no particle
+  std::vector<VertexId> positions;
+};
+
+RunOutcome run_particles(ParticleBackend& backend, std::span<const VertexId> start, const RunSettings& settings);
+
+}  // namespace meshparticles

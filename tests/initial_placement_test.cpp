@@ -1,0 +1,59 @@
+// Starting configurations: seeded, distinct where promised, and farthest
+// point sampling visits every component before doubling up.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "particle_test_support.hpp"
+#include "particles/initial_placement.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+std::size_t distinct(const std::vector<VertexId>& positions) {
+  return std::set<VertexId>(positions.begin(), positions.end()).size();
+}
+
+TEST(InitialPlacement, RandomIsDistinctAndSeeded) {
+  const MeshWithDistances m("patch.off");
+  const auto a = place_particles(m.distances, {Init::random, 400, 9, std::nullopt});
+  EXPECT_EQ(distinct(a), 400u);  // every vertex, once
+  const auto b = place_particles(m.distances, {Init::random, 50, 9, std::nullopt});
+  EXPECT_EQ(b, place_particles(m.distances, {Init::random, 50, 9, std::nullopt}));
+  EXPECT_NE(b, place_particles(m.distances, {Init::random, 50, 10, std::nullopt}));
+}
+
+TEST(InitialPlacement, FarthestPointSamplingSpreadsAndCoversComponents) {
+  const MeshWithDistances m("two_pieces.off");
+  const auto two = place_particles(m.distances, {Init::farthest, 2, 1, VertexId{0}});
+  EXPECT_NE(m.mesh.component_of(two[0]), m.mesh.component_of(two[1]));
+  EXPECT_EQ(distinct(place_particles(m.distances, {Init::farthest, 8, 1, std::nullopt})), 8u);
+
+  const MeshWithDistances patch("patch.off");
+  const auto samples = place_particles(patch.distances, {Init::farthest, 4, 1, VertexId{0}});
+  // Each sample is at least as far from the earlier ones as any vertex is.
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    auto nearest = [&](VertexId v) {
+      float d = INFINITY;
+      for (std::size_t j = 0; j < k; ++j) d = std::min(d, patch.distances(samples[j], v));
+      return d;
+    };
+    for (VertexId v = 0; v < patch.mesh.vertex_count(); ++v) EXPECT_LE(nearest(v), nearest(samples[k]));
+  }
+}
+
+TEST(InitialPlacement, PapersStartStacksEveryParticle) {
+  const MeshWithDistances m("tetrahedron.off");
+  EXPECT_EQ(place_particles(m.distances, {Init::v0, 3, 0, VertexId{2}}), (std::vector<VertexId>{2, 2, 2}));
+}
+
+TEST(DefaultSigma, FollowsTheHexagonalSpacing) {
+  const double d_hex = hexagonal_spacing(12.0, 100);
+  EXPECT_NEAR(d_hex, std::sqrt(24.0 / (std::sqrt(3.0) * 100)), 1e-15);
+  const double sigma = default_sigma(Potential::exp, 12.0, 100);
+  EXPECT_NEAR(2 * sigma * sigma, d_hex / 2, 1e-15);
+  EXPECT_NEAR(default_sigma(Potential::gauss, 12.0, 100), d_hex / 2, 1e-15);
+}
+
+}  // namespace
+}  // namespace meshparticles::testing

@@ -1,0 +1,102 @@
+// Whole runs: the schemes' promises (sequential never raises the energy and
+// stops; every scheme separates the paper's stacked start) and the backends'
+// agreement over 50 iterations.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "particle_test_support.hpp"
+#include "particles/initial_placement.hpp"
+#include "particles/particle_run.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+RunOutcome run(ParticleBackend& backend, const std::vector<VertexId>& start, Scheme scheme, unsigned colors,
+               std::size_t iterations) {
+  return run_particles(backend, start, {scheme, colors, iterations, /*quiet=*/true});
+}
+
+// The torus with 200 farthest-point particles has no near-ties along these
+// runs (a float near-tie would show up as a different vertex below).
+TEST(WholeRuns, SynchronousAndColoredAgreeOnEveryBackend) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 200;
+  const EnergyParams energy = m.default_energy(particles);
+  const auto start = place_particles(m.distances, {Init::farthest, particles, 1, std::nullopt});
+  for (const auto& [scheme, colors] : {std::pair{Scheme::synchronous, 1u}, std::pair{Scheme::colored, 8u}}) {
+    SCOPED_TRACE(scheme_name(scheme));
+    SerialBackend reference(m.mesh, m.distances, energy);
+    const RunOutcome expected = run(reference, start, scheme, colors, 50);
+    ASSERT_EQ(expected.trace.size(), 50u) << "the runs should still be moving particles";
+    for (const KernelSize& size : {KernelSize{KernelKind::naive, 16, 0}, KernelSize{KernelKind::naive, 5, 0},
+                                   KernelSize{KernelKind::tiled, 64, 256}, KernelSize{KernelKind::tiled, 24, 7}}) {
+      SCOPED_TRACE(describe(size));
+      auto kernel = device_backend(m, energy, size.kind, size.work_group, size.tile);
+      const RunOutcome got = run(*kernel, start, scheme, colors, 50);
+      EXPECT_EQ(got.positions, expected.positions);
+      ASSERT_EQ(got.trace.size(), expected.trace.size());
+      for (std::size_t i = 0; i < got.trace.size(); ++i) {
+        EXPECT_EQ(got.trace[i].moved, expected.trace[i].moved) << "iteration " << i;
+        EXPECT_NEAR(got.trace[i].energy, expected.trace[i].energy, 1e-5 * expected.trace[i].energy);
+        ASSERT_TRUE(got.trace[i].kernel_ms.has_value());
+      }
+    }
+  }
+}
+
+TEST(Sequential, EnergyNeverIncreasesAndTheRunStops) {
+  for (const char* name : {"torus.off", "patch.off"}) {
+    SCOPED_TRACE(name);
+    const MeshWithDistances m(name);
+    for (const Init init : {Init::farthest, Init::v0}) {
+      const std::size_t particles = 100;
+      SerialBackend serial(m.mesh, m.distances, m.default_energy(particles));
+      const auto start = place_particles(m.distances, {init, particles, 3, std::nullopt});
+      const RunOutcome outcome = run(serial, start, Scheme::sequential, 1, 2000);
+      EXPECT_TRUE(outcome.converged) << init_name(init);
+      double previous = outcome.initial_energy;
+      for (const auto& record : outcome.trace) {
+        EXPECT_LE(record.energy, previous * (1 + 1e-12));
+        previous = record.energy;
+      }
+      EXPECT_LT(outcome.trace.back().energy, outcome.initial_energy);
+    }
+  }
+}
+
+// Colour groups of one particle each see every move before them: that is
+// the sequential loop. One group is the synchronous step.
+TEST(Schemes, ColoredGeneralizesTheOtherTwo) {
+  const MeshWithDistances m("patch.off");
+  const std::size_t particles = 60;
+  const auto start = place_particles(m.distances, {Init::random, particles, 5, std::nullopt});
+  const EnergyParams energy = m.default_energy(particles);
+  SerialBackend a(m.mesh, m.distances, energy), b(m.mesh, m.distances, energy);
+  EXPECT_EQ(run(a, start, Scheme::sequential, 1, 20).positions,
+            run(b, start, Scheme::colored, unsigned(particles), 20).positions);
+  EXPECT_EQ(run(a, start, Scheme::synchronous, 1, 20).positions, run(b, start, Scheme::colored, 1, 20).positions);
+}
+
+// The paper's start stacks every particle on one vertex; the stack rank rule
+// must spread them over distinct vertices in every scheme (n <= V/2).
+TEST(Schemes, EverySchemeSeparatesThePapersStart) {
+  const MeshWithDistances m("patch.off");
+  const std::size_t particles = m.mesh.vertex_count() / 2;
+  const EnergyParams energy = m.default_energy(particles);
+  const auto start = place_particles(m.distances, {Init::v0, particles, 0, VertexId{0}});
+  auto distinct = [](const std::vector<VertexId>& positions) {
+    return std::set<VertexId>(positions.begin(), positions.end()).size();
+  };
+  SerialBackend serial(m.mesh, m.distances, energy);
+  auto tiled = device_backend(m, energy, KernelKind::tiled, 64, 128);
+  EXPECT_EQ(distinct(run(serial, start, Scheme::sequential, 1, 300).positions), particles);
+  for (const auto& [scheme, colors] : {std::pair{Scheme::synchronous, 1u}, std::pair{Scheme::colored, 8u}}) {
+    SCOPED_TRACE(scheme_name(scheme));
+    EXPECT_EQ(distinct(run(serial, start, scheme, colors, 300).positions), particles);
+    EXPECT_EQ(distinct(run(*tiled, start, scheme, colors, 300).positions), particles);
+  }
+}
+
+}  // namespace
+}  // namespace meshparticles::testing

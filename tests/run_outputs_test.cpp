@@ -1,0 +1,71 @@
+// What a run leaves behind: the three files, complete, with input vertex ids
+// and the report's promised keys.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "common/user_error.hpp"
+#include "particle_test_support.hpp"
+#include "particles/particle_run.hpp"
+#include "reports/run_outputs.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+std::string slurp(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(RunOutputs, WritesParticlesCsvAndReport) {
+  std::vector<std::string> warnings;
+  // Vertices 0 and 1 of this file have no face: the surface's ids differ from the file's.
+  const SurfaceMesh mesh = read_mesh(std::string(TEST_DATA_DIR) + "/unreferenced_vertices.off", warnings);
+  const DistanceTable distances = compute_all_pairs(mesh, GeodesicMethod::fast_marching, 1, true);
+  SerialBackend serial(mesh, distances, {Potential::exp, 0.5});
+  const std::vector<VertexId> start = {0, 0};
+  const RunOutcome outcome = run_particles(serial, start, {Scheme::sequential, 1, 10, true});
+  const nlohmann::json report = run_report(mesh, {"m.off", {{"n", 2}}, "serial"}, outcome);
+
+  const auto directory = std::filesystem::temp_directory_path() / ("mp_outputs_" + std::to_string(::getpid()));
+  prepare_output_directory(directory / "nested");
+  write_run_outputs(directory / "nested", mesh, outcome.positions, report);
+
+  const std::string csv = slurp(directory / "nested" / "particles.csv");
+  std::istringstream rows(csv);
+  std::string header, row;
+  std::getline(rows, header);
+  EXPECT_EQ(header, "particle,vertex,x,y,z");
+  for (std::size_t i = 0; i < outcome.positions.size(); ++i) {
+    ASSERT_TRUE(std::getline(rows, row));
+    EXPECT_EQ(row.substr(0, row.find(',', row.find(',') + 1)),
+              std::to_string(i) + "," + std::to_string(mesh.input_id(outcome.positions[i])));
+  }
+  std::istringstream points(slurp(directory / "nested" / "particles.particles"));
+  double x, y, z;
+  std::size_t lines = 0;
+  while (points >> x >> y >> z) ++lines;
+  EXPECT_EQ(lines, outcome.positions.size());
+
+  const auto written = nlohmann::json::parse(slurp(directory / "nested" / "report.json"));
+  for (const char* key : {"mesh", "params", "device", "iterations_run", "stopped", "trace", "avg_iteration_ms"}) {
+    EXPECT_TRUE(written.contains(key)) << key;
+  }
+  EXPECT_EQ(written["stopped"], outcome.converged ? "converged" : "max_iterations");
+  EXPECT_EQ(written["trace"].size(), outcome.trace.size());
+  EXPECT_FALSE(written.contains("avg_kernel_ms"));  // serial: no kernels
+  std::filesystem::remove_all(directory);
+}
+
+TEST(RunOutputs, RefusesAnOutputDirectoryUnderAFile) {
+  EXPECT_THROW(prepare_output_directory("/dev/null/out"), UserError);
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
