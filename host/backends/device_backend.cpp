@@ -116,7 +116,7 @@ std::vector<VertexId> DeviceBackend::positions() {
 }
 
 IterationStats DeviceBackend::iterate(Scheme scheme, unsigned colors) {
-  if (!supports(scheme)) throw UserError("the " + scheme_name(scheme) + " scheme runs only on --backend serial");
+  if (scheme == Scheme::sequential) throw UserError("the " + scheme_name(scheme) + " scheme runs only on --backend serial");
   const cl_uint groups = sub_steps(scheme, colors);
   queue_.enqueueFillBuffer(moved_count_, cl_uint{0}, 0, sizeof(cl_uint));
   std::vector<cl::Event> update_events;

@@ -22,9 +22,9 @@ class DeviceBackend : public ParticleBackend {
                 const EnergyParams& energy, const UpdateKernel& kernel);
 
   std::string device_name() const override { return device_name_; }
-  bool supports(Scheme scheme) const override { return scheme != Scheme::sequential; }
   void set_positions(std::span<const VertexId> positions) override;
   std::vector<VertexId> positions() override;
+  // Sequential is the serial reference's alone: UserError here.
   IterationStats iterate(Scheme scheme, unsigned colors) override;
   double total_energy() override;
 

@@ -11,7 +11,6 @@ class SerialBackend : public ParticleBackend {
   SerialBackend(const SurfaceMesh& mesh, const DistanceTable& distances, const EnergyParams& energy);
 
   std::string device_name() const override { return "serial"; }
-  bool supports(Scheme) const override { return true; }
   void set_positions(std::span<const VertexId> positions) override;
   std::vector<VertexId> positions() override { return positions_; }
   IterationStats iterate(Scheme scheme, unsigned colors) override;

@@ -43,14 +43,10 @@ void run_geodesics(const GeodesicsOptions& options) {
   };
 
   if (options.source) {
-    const auto source = mesh.vertex_of_input_id(*options.source);
-    if (!source) {
-      throw UserError("--source " + std::to_string(*options.source) + " is not a vertex of the surface (the mesh has " +
-                      std::to_string(mesh.input_vertex_count()) + " vertices; unreferenced ones are dropped)");
-    }
+    const VertexId source = surface_vertex_for_option(mesh, *options.source, "--source");
     std::vector<double> distances(mesh.vertex_count());
     SolverScratch scratch;
-    make_geodesics(mesh, method)->solve(*source, distances, scratch);
+    make_geodesics(mesh, method)->solve(source, distances, scratch);
     if (options.out.empty()) {
       write_single_source(mesh, distances, std::cout);
     } else {

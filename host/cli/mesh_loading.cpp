@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "common/user_error.hpp"
 #include "mesh/mesh_reader.hpp"
 
 namespace meshparticles {
@@ -13,6 +14,15 @@ SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet) {
     for (const auto& warning : warnings) std::cerr << "meshparticles: warning: " << warning << "\n";
   }
   return mesh;
+}
+
+VertexId surface_vertex_for_option(const SurfaceMesh& mesh, std::size_t input_id, const std::string& option) {
+  const auto vertex = mesh.vertex_of_input_id(input_id);
+  if (!vertex) {
+    throw UserError(option + " " + std::to_string(input_id) + " is not a vertex of the surface (the mesh has " +
+                    std::to_string(mesh.input_vertex_count()) + " vertices; unreferenced ones are dropped)");
+  }
+  return *vertex;
 }
 
 }  // namespace meshparticles

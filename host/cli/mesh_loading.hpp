@@ -1,5 +1,6 @@
 #pragma once
 #include <filesystem>
+#include <string>
 
 #include "mesh/surface_mesh.hpp"
 
@@ -7,5 +8,9 @@ namespace meshparticles {
 
 // Reads a mesh for a command, printing the reader's warnings on stderr.
 SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet = false);
+
+// The surface vertex that had `input_id` in the file, for an option such as
+// --source; throws UserError naming `option` when there is none.
+VertexId surface_vertex_for_option(const SurfaceMesh& mesh, std::size_t input_id, const std::string& option);
 
 }  // namespace meshparticles

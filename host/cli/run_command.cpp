@@ -56,7 +56,7 @@ Scheme chosen_scheme(const RunOptions& options) {
   return options.backend.name == "serial" ? Scheme::sequential : Scheme::colored;
 }
 
-void check_arguments(const RunOptions& options, const SurfaceMesh& mesh, Scheme scheme) {
+void check_arguments(const RunOptions& options, const SurfaceMesh& mesh, Scheme scheme, Init init) {
   if (options.particles > mesh.vertex_count()) {
     throw UserError("-n " + std::to_string(options.particles) + " is more particles than the " +
                     std::to_string(mesh.vertex_count()) + " vertices of " + options.mesh);
@@ -68,19 +68,9 @@ void check_arguments(const RunOptions& options, const SurfaceMesh& mesh, Scheme 
   if (options.colors && scheme != Scheme::colored) {
     throw UserError("--colors applies to --scheme colored, not " + scheme_name(scheme));
   }
-  if (options.start_vertex && parse_init(options.init) == Init::random) {
+  if (options.start_vertex && init == Init::random) {
     throw UserError("--start-vertex applies to --init v0 and farthest, not random");
   }
-}
-
-std::optional<VertexId> start_vertex_of(const RunOptions& options, const SurfaceMesh& mesh) {
-  if (!options.start_vertex) return std::nullopt;
-  const auto vertex = mesh.vertex_of_input_id(*options.start_vertex);
-  if (!vertex) {
-    throw UserError("--start-vertex " + std::to_string(*options.start_vertex) + " is not a vertex of the surface (" +
-                    options.mesh + " has " + std::to_string(mesh.input_vertex_count()) + " vertices)");
-  }
-  return vertex;
 }
 
 void print_summary(const RunOptions& options, const nlohmann::json& report) {
@@ -100,8 +90,10 @@ void run_run(RunOptions options) {
   const Potential potential = parse_potential(options.potential);
   const Scheme scheme = chosen_scheme(options);
   const SurfaceMesh mesh = load_run_mesh(options);
-  check_arguments(options, mesh, scheme);
-  const std::optional<VertexId> start_vertex = start_vertex_of(options, mesh);
+  const Init init = parse_init(options.init);
+  check_arguments(options, mesh, scheme, init);
+  std::optional<VertexId> start_vertex;
+  if (options.start_vertex) start_vertex = surface_vertex_for_option(mesh, *options.start_vertex, "--start-vertex");
   prepare_output_directory(options.out);  // before the long work, not after
 
   const CheckedBackend checked = check_backend(options.backend, mesh);
@@ -112,7 +104,7 @@ void run_run(RunOptions options) {
       load_or_compute_distances(mesh, options.table.request(parse_method(options.geodesic)), table_source);
   const std::unique_ptr<ParticleBackend> backend = make_backend(checked, mesh, distances, energy);
 
-  PlacementRequest placement{parse_init(options.init), options.particles, options.seed, start_vertex};
+  PlacementRequest placement{init, options.particles, options.seed, start_vertex};
   const std::vector<VertexId> start = place_particles(distances, placement);
   const unsigned colors = options.colors.value_or(kDefaultColors);
   const RunOutcome outcome =

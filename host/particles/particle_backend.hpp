@@ -23,7 +23,6 @@ class ParticleBackend {
   virtual ~ParticleBackend() = default;
   // "serial", or the OpenCL device's name.
   virtual std::string device_name() const = 0;
-  virtual bool supports(Scheme scheme) const = 0;
   virtual void set_positions(std::span<const VertexId> positions) = 0;
   virtual std::vector<VertexId> positions() = 0;
   // sequential: every particle in index order; synchronous: one sub-step of
