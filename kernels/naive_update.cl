@@ -30,13 +30,14 @@ void naive_update(__global const float* distances, uint vertex_count,
     float energy = 0.0f;
     uint stacked = 0;
     bool taken = false;
+    // Branch-free, so the compiler can vectorize over i (see kernel_options).
     for (uint i = 0; i < particle_count; ++i) {
       const uint p = positions[i];
-      if (i != c) {
-        energy += pair_weight(row[p], inv_two_sigma_sq);
-        taken |= p == v;
-      }
-      if (j == 0 && stacked_before(i, p, c, here)) ++stacked;
+      const float weight = pair_weight(row[p], inv_two_sigma_sq);
+      const bool other = i != c;
+      energy += other ? weight : 0.0f;
+      taken |= other & (p == v);
+      stacked += stacked_before(i, p, c, here);  // read for j = 0 only
     }
     energies[j] = energy;
     occupied[j] = taken;

@@ -9,7 +9,8 @@ __kernel void particle_energies(__global const float* distances, uint vertex_cou
   __global const float* row = distances + (ulong)positions[c] * vertex_count;
   float energy = 0.0f;
   for (uint i = 0; i < particle_count; ++i) {
-    if (i != c) energy += pair_weight(row[positions[i]], inv_two_sigma_sq);
+    const float weight = pair_weight(row[positions[i]], inv_two_sigma_sq);
+    energy += i != c ? weight : 0.0f;  // branch-free: vectorizes
   }
   energies[c] = energy;
 }

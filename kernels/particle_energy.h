@@ -37,7 +37,10 @@ inline uint candidate_vertex(__global const uint* ring_offsets, __global const u
 
 // Whether particle i (at position_i) is stacked on `here` before particle c:
 // c's stack rank counts these, over all particles, whatever their colour.
-inline bool stacked_before(uint i, uint position_i, uint c, uint here) { return position_i == here && i < c; }
+// 1 or 0, without a branch, so the loops that count it stay vectorizable.
+inline uint stacked_before(uint i, uint position_i, uint c, uint here) {
+  return (uint)(position_i == here) & (uint)(i < c);
+}
 
 // A particle alone on its vertex never moves onto a vertex another particle
 // occupies: such a candidate is blocked, its energy recorded as +inf. A

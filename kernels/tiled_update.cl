@@ -64,15 +64,16 @@ void tiled_update(__global const float* distances, uint vertex_count,
     barrier(CLK_LOCAL_MEM_FENCE);
     for (uint k = 0; k < SLOTS_PER_ITEM; ++k) {
       if (!active[k]) continue;
+      // Branch-free, so the compiler can vectorize over the tile.
       for (uint t = 0; t < tile_count; ++t) {
         const uint i = tile_start + t;
         const uint p = tile[t];
-        if (i != particle[k]) {
-          energy[k] += pair_weight(distances[(ulong)p * vertex_count + vertex[k]], inv_two_sigma_sq);
-          occupied[k] |= p == vertex[k];
-        }
+        const float weight = pair_weight(distances[(ulong)p * vertex_count + vertex[k]], inv_two_sigma_sq);
+        const bool other = i != particle[k];
+        energy[k] += other ? weight : 0.0f;
+        occupied[k] |= other & (p == vertex[k]);
         // Only slot 0 (the current vertex) reads its count: the particle's stack rank.
-        if (stacked_before(i, p, particle[k], here[k])) ++stacked[k];
+        stacked[k] += stacked_before(i, p, particle[k], here[k]);
       }
     }
     barrier(CLK_LOCAL_MEM_FENCE);  // the next tile overwrites this one
