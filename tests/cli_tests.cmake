@@ -70,3 +70,16 @@ expect_exit_of(run_kernel_build_failure 2 "OpenCL kernels failed to build \\(nai
             env MESHPARTICLES_KERNEL_DIR=${CMAKE_CURRENT_BINARY_DIR}/broken_kernels
             $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend naive --no-cache --out ${RUN_OUT})
 set_tests_properties(cli.run_kernel_build_failure PROPERTIES ENVIRONMENT MULTILINE=1)
+# Performance commands: bad arguments, then the tuning loop end to end.
+expect_exit(sweep_zero_iterations 2 "--iterations must be at least 1" sweep ${TORUS} -n 8 --iterations 0 --no-cache)
+expect_exit(sweep_tile_without_tiled 2 "--tile applies to the tiled kernel" sweep ${TORUS} --kernel naive --tile 8)
+expect_exit(sweep_unknown_kernel 2 "--kernel: cuda not in" sweep ${TORUS} --kernel naive,cuda)
+expect_exit(sweep_too_many_particles 2 "-n 5 is more particles than the 4 vertices" sweep ${TETRA} -n 5)
+expect_exit(sweep_unwritable_csv 2 "/nonexistent-dir/s.csv: cannot write" sweep ${TETRA} -n 2 --csv /nonexistent-dir/s.csv)
+expect_exit(bench_bad_case 2 "--case 'torus': expected MESH:N" bench --case torus)
+expect_exit(bench_unknown_mesh 2 "no built-in mesh named 'cube'" bench --case cube:8 --meshes-dir ${PROJECT_SOURCE_DIR}/meshes)
+expect_exit(bench_too_many_particles 2 "--case torus:100000 is more particles than its 1500 vertices" bench --case torus:100000 --meshes-dir ${PROJECT_SOURCE_DIR}/meshes)
+expect_exit(bench_zero_iterations 2 "--iterations must be at least 1" bench --case torus:8 --iterations 0)
+add_test(NAME cli.performance_commands
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/performance_commands.sh $<TARGET_FILE:meshparticles> ${TORUS}
+                 ${CMAKE_CURRENT_BINARY_DIR}/performance_commands ${PROJECT_SOURCE_DIR}/scripts/plot_sweep.py)

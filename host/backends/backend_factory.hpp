@@ -1,5 +1,6 @@
 #pragma once
 // --backend serial|naive|tiled to a ready ParticleBackend.
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +17,9 @@ struct BackendRequest {
   std::string device;          // --device (device backends)
   std::optional<std::size_t> work_group_size;  // --wg
   std::optional<std::size_t> tile_size;        // --tile (tiled)
+  // Where sizes tuned by `sweep --save` are looked up when neither --wg nor
+  // --tile is given; none: use the built-in defaults.
+  std::optional<std::filesystem::path> tuning_file;
 };
 
 // A request checked against the mesh and the device, before the distance
@@ -24,13 +28,16 @@ struct CheckedBackend {
   std::string name;
   std::optional<DeviceDescription> device;  // device backends
   std::optional<UpdateKernel> kernel;       // the sizes in effect, for the report
+  // Where those sizes came from: "--wg/--tile", "tuning file", "built-in default".
+  std::string sizes_from;
+  std::string sizes_note;  // details: the tuning entry used, or why none was
 };
 
 bool is_device_backend(const std::string& name);
 
 // Throws UserError for an unknown name, sizes given to a backend that has
-// none, and sizes the device refuses.
-CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& mesh);
+// none, and sizes the device refuses. `particles` picks the tuning entry.
+CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& mesh, std::size_t particles);
 
 // Throws UserError for a table or a kernel the device refuses.
 std::unique_ptr<ParticleBackend> make_backend(const CheckedBackend& checked, const SurfaceMesh& mesh,

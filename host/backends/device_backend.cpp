@@ -1,17 +1,16 @@
 #include "backends/device_backend.hpp"
 
-#include "common/user_error.hpp"
 #include "geodesics/memory_guard.hpp"
 
 namespace meshparticles {
 
 void check_device_limits(const DeviceDescription& device, const UpdateKernel& kernel) {
   if (kernel.work_group_size > device.max_work_group_size) {
-    throw UserError("--wg " + std::to_string(kernel.work_group_size) + " exceeds the maximum work-group size " +
+    throw LimitExceeded("--wg " + std::to_string(kernel.work_group_size) + " exceeds the maximum work-group size " +
                     std::to_string(device.max_work_group_size) + " of " + device.name);
   }
   if (kernel.local_memory_bytes() > device.local_memory_bytes) {
-    throw UserError("the " + kernel_kind_name(kernel.kind) + " kernel with --wg " +
+    throw LimitExceeded("the " + kernel_kind_name(kernel.kind) + " kernel with --wg " +
                     std::to_string(kernel.work_group_size) +
                     (kernel.kind == KernelKind::tiled ? " --tile " + std::to_string(kernel.tile_size) : "") +
                     " needs " + std::to_string(kernel.local_memory_bytes()) + " bytes of local memory; " +
@@ -24,7 +23,7 @@ namespace {
 void check_kernel_limits(const cl::Kernel& update, const cl::Device& device, const UpdateKernel& kernel) {
   const auto kernel_limit = update.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device);
   if (kernel.work_group_size > kernel_limit) {
-    throw UserError("--wg " + std::to_string(kernel.work_group_size) + " exceeds the " +
+    throw LimitExceeded("--wg " + std::to_string(kernel.work_group_size) + " exceeds the " +
                     kernel_kind_name(kernel.kind) + " kernel's work-group limit " + std::to_string(kernel_limit) +
                     " on this device (CL_KERNEL_WORK_GROUP_SIZE)");
   }
@@ -123,12 +122,7 @@ IterationStats DeviceBackend::iterate(Scheme scheme, unsigned colors) {
   for (cl_uint color = 0; color < groups; ++color) {
     const cl_uint particles = particles_of_color(particle_count_, color, groups);
     if (particles == 0) continue;
-    update_.setArg(6, color);
-    update_.setArg(7, groups);
-    const std::size_t work_group = kernel_.work_group_size;
-    update_events.emplace_back();
-    queue_.enqueueNDRangeKernel(update_, cl::NullRange, cl::NDRange(kernel_.work_groups_for(particles) * work_group),
-                                cl::NDRange(work_group), nullptr, &update_events.back());
+    update_events.push_back(enqueue_update(color, groups, particles));
     queue_.enqueueFillBuffer(claims_, CL_UINT_MAX, 0, vertex_count_ * sizeof(cl_uint));
     for (cl::Kernel* commit : {&claim_targets_, &apply_moves_}) {
       commit->setArg(3, color);
@@ -146,6 +140,35 @@ IterationStats DeviceBackend::iterate(Scheme scheme, unsigned colors) {
   for (const auto& event : update_events) kernel_ms += event_milliseconds(event);
   stats.kernel_ms = kernel_ms;
   return stats;
+}
+
+cl::Event DeviceBackend::enqueue_update(cl_uint color, cl_uint colors, cl_uint particles) {
+  update_.setArg(6, color);
+  update_.setArg(7, colors);
+  const std::size_t work_group = kernel_.work_group_size;
+  cl::Event event;
+  queue_.enqueueNDRangeKernel(update_, cl::NullRange, cl::NDRange(kernel_.work_groups_for(particles) * work_group),
+                              cl::NDRange(work_group), nullptr, &event);
+  return event;
+}
+
+std::vector<VertexId> DeviceBackend::synchronous_choices() {
+  enqueue_update(0, 1, particle_count_);
+  return last_choices();
+}
+
+double DeviceBackend::time_update_kernels(Scheme scheme, unsigned colors) {
+  if (scheme == Scheme::sequential) throw UserError("the " + scheme_name(scheme) + " scheme runs only on --backend serial");
+  const cl_uint groups = sub_steps(scheme, colors);
+  std::vector<cl::Event> events;
+  for (cl_uint color = 0; color < groups; ++color) {
+    const cl_uint particles = particles_of_color(particle_count_, color, groups);
+    if (particles > 0) events.push_back(enqueue_update(color, groups, particles));
+  }
+  queue_.finish();
+  double milliseconds = 0;
+  for (const auto& event : events) milliseconds += event_milliseconds(event);
+  return milliseconds;
 }
 
 double DeviceBackend::total_energy() {

@@ -4,20 +4,29 @@
 // positions stay there between iterations, and only the moved count and the
 // per-particle energies come back each iteration.
 #include "backends/update_kernel.hpp"
+#include "common/user_error.hpp"
 #include "geodesics/distance_table.hpp"
 #include "opencl/device_discovery.hpp"
 #include "particles/particle_backend.hpp"
 
 namespace meshparticles {
 
-// Throws UserError naming the limit when the device cannot run `kernel` at
-// its sizes (maximum work-group size, local memory); no compilation needed.
+// A size the device or the compiled kernel cannot take: the sweep reports it
+// as skipped, a run as an error.
+class LimitExceeded : public UserError {
+ public:
+  using UserError::UserError;
+};
+
+// Throws LimitExceeded naming the limit when the device cannot run `kernel`
+// at its sizes (maximum work-group size, local memory); no compilation needed.
 void check_device_limits(const DeviceDescription& device, const UpdateKernel& kernel);
 
 class DeviceBackend : public ParticleBackend {
  public:
-  // Refuses (UserError naming the limit) a work-group size, tile size or
-  // table the device cannot take, and a kernel that does not build.
+  // Refuses a work-group size or tile size the device or the compiled kernel
+  // cannot take (LimitExceeded), a table it cannot hold and a kernel that does
+  // not build (UserError).
   DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const DistanceTable& distances,
                 const EnergyParams& energy, const UpdateKernel& kernel);
 
@@ -32,7 +41,18 @@ class DeviceBackend : public ParticleBackend {
   // were resolved (for tests: what the update kernel itself decided).
   std::vector<VertexId> last_choices();
 
+  // Measurement without side effects, for sweep and bench. Neither moves a
+  // particle, so repeated calls do identical work.
+  // The vertex every particle chooses in one synchronous step (one launch).
+  std::vector<VertexId> synchronous_choices();
+  // The update kernels of one iteration of `scheme`: device milliseconds
+  // from profiling events.
+  double time_update_kernels(Scheme scheme, unsigned colors);
+
  private:
+  // Enqueues the update kernel for the particles of `color`.
+  cl::Event enqueue_update(cl_uint color, cl_uint colors, cl_uint particles);
+
   std::string device_name_;
   UpdateKernel kernel_;
   cl_uint vertex_count_;

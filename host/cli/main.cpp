@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
   add_generate_command(app);
   add_geodesics_command(app);
   add_run_command(app);
+  add_sweep_command(app);
+  add_bench_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

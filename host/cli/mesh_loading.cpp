@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "common/user_error.hpp"
+#include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_reader.hpp"
 
 namespace meshparticles {
@@ -14,6 +15,16 @@ SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet) {
     for (const auto& warning : warnings) std::cerr << "meshparticles: warning: " << warning << "\n";
   }
   return mesh;
+}
+
+SurfaceMesh load_mesh_or_default(std::string& path, bool quiet) {
+  const char* const committed_sphere = "meshes/sphere.off";
+  if (path.empty() && !std::filesystem::exists(committed_sphere)) {
+    path = "built-in:sphere";
+    return generate_mesh("sphere");
+  }
+  if (path.empty()) path = committed_sphere;
+  return load_mesh(path, quiet);
 }
 
 VertexId surface_vertex_for_option(const SurfaceMesh& mesh, std::size_t input_id, const std::string& option) {

@@ -9,6 +9,11 @@ namespace meshparticles {
 // Reads a mesh for a command, printing the reader's warnings on stderr.
 SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet = false);
 
+// With `path` empty: the committed sphere when run from the repository, else
+// the same sphere from the built-in generator, so default jobs run anywhere;
+// `path` then names what was loaded. Otherwise load_mesh(path).
+SurfaceMesh load_mesh_or_default(std::string& path, bool quiet = false);
+
 // The surface vertex that had `input_id` in the file, for an option such as
 // --source; throws UserError naming `option` when there is none.
 VertexId surface_vertex_for_option(const SurfaceMesh& mesh, std::size_t input_id, const std::string& option);

@@ -10,16 +10,14 @@
 #include "cli/mesh_loading.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/distance_cache.hpp"
-#include "mesh/mesh_generator.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
 #include "reports/run_outputs.hpp"
+#include "tuning/tuning_store.hpp"
 
 namespace meshparticles {
 
 namespace {
-
-const char* const kDefaultMesh = "meshes/sphere.off";
 
 struct RunOptions {
   std::string mesh;
@@ -35,21 +33,9 @@ struct RunOptions {
   std::string potential = "exp";
   std::string geodesic = "fmm";
   std::string out = "out";
+  std::string tuning_file;
   DistanceTableOptions table;
 };
-
-constexpr unsigned kDefaultColors = 16;  // measured, docs/ALGORITHM.md
-
-// With no MESH: the committed sphere when run from the repository, else the
-// same sphere from the built-in generator, so the default job runs anywhere.
-SurfaceMesh load_run_mesh(RunOptions& options) {
-  if (options.mesh.empty() && !std::filesystem::exists(kDefaultMesh)) {
-    options.mesh = "built-in:sphere";
-    return generate_mesh("sphere");
-  }
-  if (options.mesh.empty()) options.mesh = kDefaultMesh;
-  return load_mesh(options.mesh, options.table.quiet);
-}
 
 Scheme chosen_scheme(const RunOptions& options) {
   if (!options.scheme.empty()) return parse_scheme(options.scheme);
@@ -89,14 +75,19 @@ void print_summary(const RunOptions& options, const nlohmann::json& report) {
 void run_run(RunOptions options) {
   const Potential potential = parse_potential(options.potential);
   const Scheme scheme = chosen_scheme(options);
-  const SurfaceMesh mesh = load_run_mesh(options);
+  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, options.table.quiet);
   const Init init = parse_init(options.init);
   check_arguments(options, mesh, scheme, init);
   std::optional<VertexId> start_vertex;
   if (options.start_vertex) start_vertex = surface_vertex_for_option(mesh, *options.start_vertex, "--start-vertex");
   prepare_output_directory(options.out);  // before the long work, not after
 
-  const CheckedBackend checked = check_backend(options.backend, mesh);
+  options.backend.tuning_file = options.tuning_file.empty() ? default_tuning_file() : std::filesystem::path(options.tuning_file);
+  const CheckedBackend checked = check_backend(options.backend, mesh, options.particles);
+  if (!checked.sizes_note.empty() && checked.sizes_from == "built-in default" && !options.table.quiet &&
+      std::filesystem::exists(*options.backend.tuning_file)) {
+    std::cerr << "meshparticles: warning: " << checked.sizes_note << "; using the built-in sizes\n";
+  }
 
   const EnergyParams energy{potential, options.sigma.value_or(default_sigma(potential, mesh.area(), options.particles))};
   TableSource table_source;
@@ -126,6 +117,8 @@ void run_run(RunOptions options) {
   if (checked.kernel) {
     params["wg"] = checked.kernel->work_group_size;
     if (checked.kernel->kind == KernelKind::tiled) params["tile"] = checked.kernel->tile_size;
+    params["sizes_from"] = checked.sizes_from;
+    if (!checked.sizes_note.empty()) params["sizes_note"] = checked.sizes_note;
   }
   const nlohmann::json report = run_report(mesh, {options.mesh, params, backend->device_name()}, outcome);
   write_run_outputs(options.out, mesh, outcome.positions, report);
@@ -149,7 +142,7 @@ void add_run_command(CLI::App& app) {
   run->add_option("--scheme", options->scheme,
                   "sequential (serial only), synchronous or colored (default: sequential on serial, colored on devices)")
       ->check(CLI::IsMember({"sequential", "synchronous", "colored"}));
-  run->add_option("--colors", options->colors, "Groups of the colored scheme (default 16)")->check(CLI::PositiveNumber);
+  run->add_option("--colors", options->colors, "Groups of the colored scheme (default " + std::to_string(kDefaultColors) + ")")->check(CLI::PositiveNumber);
   run->add_option("--init", options->init, "Start: v0 (all on one vertex), random, farthest (farthest-point sampling)")
       ->check(CLI::IsMember({"v0", "random", "farthest"}))
       ->capture_default_str();
@@ -169,6 +162,9 @@ void add_run_command(CLI::App& app) {
   run->add_option("--tile", options->backend.tile_size, "Tile size (particles staged in local memory; tiled only)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24));
   run->add_option("--out", options->out, "Output directory")->capture_default_str();
+  run->add_option("--tuning-file", options->tuning_file,
+                  "Sizes saved by `sweep --save`, used when --wg and --tile are absent "
+                  "(default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
   add_distance_table_options(*run, options->table);
   run->callback([options] { run_run(*options); });
 }

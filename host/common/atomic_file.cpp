@@ -31,6 +31,20 @@ void commit_temporary(const std::filesystem::path& temporary,
   }
 }
 
+void check_writable(const std::filesystem::path& destination) {
+  const std::filesystem::path directory = destination.parent_path().empty() ? "." : destination.parent_path();
+  std::error_code error;
+  if (std::filesystem::is_directory(destination, error)) {
+    throw UserError(destination.string() + ": cannot write: it is a directory");
+  }
+  if (!std::filesystem::is_directory(directory, error)) {
+    throw UserError(destination.string() + ": cannot write: no directory " + directory.string());
+  }
+  if (::access(directory.c_str(), W_OK) != 0) {
+    throw UserError(destination.string() + ": cannot write: permission denied");
+  }
+}
+
 void write_file_atomically(const std::filesystem::path& destination,
                            const std::function<void(std::ostream&)>& write, bool binary) {
   const auto temporary = temporary_sibling(destination);

@@ -15,6 +15,11 @@ void write_file_atomically(const std::filesystem::path& destination,
                            const std::function<void(std::ostream&)>& write,
                            bool binary = false);
 
+// Throws UserError unless `destination` could be written later: its
+// directory exists and is writable, and it is not itself a directory. Lets a
+// long job fail at once instead of after the work.
+void check_writable(const std::filesystem::path& destination);
+
 // A temporary sibling path of `destination` that keeps its extension (some
 // writers, OpenMesh's among them, choose the format by extension).
 std::filesystem::path temporary_sibling(const std::filesystem::path& destination);

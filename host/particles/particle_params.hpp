@@ -17,6 +17,10 @@ std::string potential_name(Potential potential);
 std::string scheme_name(Scheme scheme);
 std::string init_name(Init init);
 
+// Groups of the colored scheme when --colors is absent: the smallest K that
+// converged like the sequential loop on sphere/1024 (docs/ALGORITHM.md).
+constexpr unsigned kDefaultColors = 16;
+
 // The energy's parameters, shared by every backend.
 struct EnergyParams {
   Potential potential = Potential::exp;

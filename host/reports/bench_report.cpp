@@ -1,0 +1,173 @@
+#include "reports/bench_report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "common/atomic_file.hpp"
+#include "reports/csv_field.hpp"
+#include "tuning/paper_figures.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+std::optional<double> paper_ms(const BenchCase& bench, const std::string& backend) {
+  const PaperFigures* figures = paper_figures_for(bench.mesh, bench.particles);
+  if (!figures) return std::nullopt;
+  if (backend == "serial") return figures->cpu_ms;
+  if (backend == "naive") return figures->naive_ms;
+  return figures->tiled_ms;
+}
+
+const BenchRow* row_of(const BenchCase& bench, const std::string& backend) {
+  for (const auto& row : bench.rows) {
+    if (row.backend == backend) return &row;
+  }
+  return nullptr;
+}
+
+std::optional<double> our_speedup(const BenchCase& bench, const BenchRow& row) {
+  const BenchRow* serial = row_of(bench, "serial");
+  if (!serial) return std::nullopt;
+  return serial->mean_ms / row.mean_ms;
+}
+
+std::optional<double> paper_speedup(const BenchCase& bench, const std::string& backend) {
+  const auto cpu = paper_ms(bench, "serial"), ours = paper_ms(bench, backend);
+  if (!cpu || !ours) return std::nullopt;
+  return *cpu / *ours;
+}
+
+std::string speedup_text(std::optional<double> speedup) {
+  return speedup ? " [" + format(*speedup >= 10 ? "%.0fx" : "%.1fx", *speedup) + "]" : "";
+}
+
+std::string paper_label(const std::string& backend) {
+  return backend == "serial" ? "CPU" : backend == "naive" ? "GPU1" : "GPU2";
+}
+
+// The sizes each device row ran with in one table, e.g. "sizes: tiled wg 64
+// tile 128 (tuning file)"; several when the particle counts differ.
+std::string sizes_line(const std::vector<const BenchCase*>& columns) {
+  std::vector<std::string> seen;
+  for (const BenchCase* bench : columns) {
+    for (const auto& row : bench->rows) {
+      const std::string text = row.backend + " " + row.sizes + " (" + row.sizes_from + ")";
+      if (!row.sizes.empty() && std::find(seen.begin(), seen.end(), text) == seen.end()) seen.push_back(text);
+    }
+  }
+  std::string line;
+  for (const auto& text : seen) line += (line.empty() ? "sizes: " : "; ") + text;
+  return line.empty() ? "" : line + "\n";
+}
+
+}  // namespace
+
+std::string bench_tables(const std::string& device_name, const BenchSettings& settings,
+                         const std::vector<BenchCase>& cases) {
+  std::string text = "bench: ms per iteration, mean of " + std::to_string(settings.iterations) +
+                     " iterations (the paper: 1000), [speed-up over the serial row of the same table]\n";
+  text += "ours: serial = the paper's CPU loop (sequential, 1 thread, double); naive and tiled on " + device_name +
+          ", scheme " + scheme_name(settings.device_scheme) +
+          (settings.device_scheme == Scheme::colored ? " K=" + std::to_string(settings.colors) : "") +
+          "\npaper: Xeon CPU and GTX 260 (Tables 1 and 2)\n";
+  std::vector<std::string> meshes;
+  for (const auto& bench : cases) {
+    if (std::find(meshes.begin(), meshes.end(), bench.mesh) == meshes.end()) meshes.push_back(bench.mesh);
+  }
+  char cell[96];
+  for (const std::string& mesh : meshes) {
+    std::vector<const BenchCase*> columns;
+    for (const auto& bench : cases) {
+      if (bench.mesh == mesh) columns.push_back(&bench);
+    }
+    text += "\n" + mesh + " (" + std::to_string(columns.front()->vertices) + " vertices)\n";
+    std::snprintf(cell, sizeof cell, "%-13s", "particles");
+    text += cell;
+    for (const BenchCase* bench : columns) {
+      std::snprintf(cell, sizeof cell, "  %-17s %-15s", ("n=" + std::to_string(bench->particles) + " ours").c_str(),
+                    "paper");
+      text += cell;
+    }
+    text += "\n";
+    for (const std::string& backend : settings.backends) {
+      std::snprintf(cell, sizeof cell, "%-6s (%s)%*s", backend.c_str(), paper_label(backend).c_str(),
+                    int(4 - paper_label(backend).size()), "");
+      text += cell;
+      for (const BenchCase* bench : columns) {
+        const BenchRow* row = row_of(*bench, backend);
+        const auto paper = paper_ms(*bench, backend);
+        const std::string ours = row ? format("%.3f", row->mean_ms) + speedup_text(our_speedup(*bench, *row)) : "-";
+        const std::string theirs =
+            paper ? format("%.2f", *paper) + speedup_text(paper_speedup(*bench, backend)) : "-";
+        std::snprintf(cell, sizeof cell, "  %-17s %-15s", ours.c_str(), theirs.c_str());
+        text += cell;
+      }
+      text += "\n";
+    }
+    text += sizes_line(columns);
+  }
+  return text;
+}
+
+nlohmann::json bench_json(const std::string& device_name, const BenchSettings& settings,
+                          const std::vector<BenchCase>& cases) {
+  nlohmann::json out_cases = nlohmann::json::array();
+  for (const auto& bench : cases) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& row : bench.rows) {
+      nlohmann::json entry = {{"backend", row.backend},
+                              {"scheme", scheme_name(row.scheme)},
+                              {"ms_per_iteration", row.mean_ms},
+                              {"median_ms", row.timing.median_ms},
+                              {"min_ms", row.timing.min_ms},
+                              {"speedup_vs_serial", nullptr},
+                              {"paper_ms", nullptr},
+                              {"paper_speedup", nullptr}};
+      if (row.kernel_ms) entry["kernel_ms"] = *row.kernel_ms;
+      if (!row.sizes.empty()) {
+        entry["sizes"] = row.sizes;
+        entry["sizes_from"] = row.sizes_from;
+      }
+      if (const auto speedup = our_speedup(bench, row)) entry["speedup_vs_serial"] = *speedup;
+      if (const auto paper = paper_ms(bench, row.backend)) entry["paper_ms"] = *paper;
+      if (const auto speedup = paper_speedup(bench, row.backend)) entry["paper_speedup"] = *speedup;
+      rows.push_back(entry);
+    }
+    out_cases.push_back({{"mesh", bench.mesh}, {"vertices", bench.vertices}, {"n", bench.particles}, {"rows", rows}});
+  }
+  return {{"device", device_name},
+          {"iterations", settings.iterations},
+          {"device_scheme", scheme_name(settings.device_scheme)},
+          {"colors", settings.device_scheme == Scheme::colored ? nlohmann::json(settings.colors) : nullptr},
+          {"time", "wall ms per iteration (mean over the timed iterations), after warm-up"},
+          {"cases", out_cases}};
+}
+
+void write_bench_csv(const std::filesystem::path& file, const std::string& device_name,
+                     const BenchSettings& settings, const std::vector<BenchCase>& cases) {
+  write_file_atomically(file, [&](std::ostream& out) {
+    out << "device,mesh,vertices,n,backend,scheme,sizes,sizes_from,iterations,ms_per_iteration,median_ms,min_ms,"
+           "kernel_ms,speedup_vs_serial,paper_ms,paper_speedup\n";
+    auto optional = [](std::optional<double> value) { return value ? format("%.6g", *value) : std::string(); };
+    for (const auto& bench : cases) {
+      for (const auto& row : bench.rows) {
+        out << csv_field(row.backend == "serial" ? "serial" : device_name) << ',' << bench.mesh << ','
+            << bench.vertices << ',' << bench.particles << ',' << row.backend << ',' << scheme_name(row.scheme)
+            << ',' << row.sizes << ',' << row.sizes_from << ',' << settings.iterations << ','
+            << format("%.6g", row.mean_ms) << ',' << format("%.6g", row.timing.median_ms) << ','
+            << format("%.6g", row.timing.min_ms) << ',' << optional(row.kernel_ms) << ','
+            << optional(our_speedup(bench, row)) << ',' << optional(paper_ms(bench, row.backend)) << ','
+            << optional(paper_speedup(bench, row.backend)) << '\n';
+      }
+    }
+  });
+}
+
+}  // namespace meshparticles

@@ -1,0 +1,68 @@
+#include "tuning/bench.hpp"
+
+#include <chrono>
+
+#include "particles/initial_placement.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+std::string sizes_text(const UpdateKernel& kernel) {
+  std::string text = "wg " + std::to_string(kernel.work_group_size);
+  if (kernel.kind == KernelKind::tiled) text += " tile " + std::to_string(kernel.tile_size);
+  return text;
+}
+
+// Every iteration does the same work whatever the positions (all candidates
+// of all particles against all particles), so a run that has converged times
+// as well as one still moving.
+void time_iterations(ParticleBackend& backend, const std::vector<VertexId>& start, const BenchSettings& settings,
+                     BenchRow& row) {
+  backend.set_positions(start);
+  for (std::size_t w = 0; w < settings.warmups; ++w) backend.iterate(row.scheme, settings.colors);
+  std::vector<double> samples;
+  double kernel_sum = 0, sum = 0;
+  for (std::size_t r = 0; r < settings.iterations; ++r) {
+    const auto begin = std::chrono::steady_clock::now();
+    const IterationStats stats = backend.iterate(row.scheme, settings.colors);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+    samples.push_back(ms);
+    sum += ms;
+    if (stats.kernel_ms) kernel_sum += *stats.kernel_ms;
+  }
+  row.mean_ms = sum / double(settings.iterations);
+  row.timing = summarize_timings(samples);
+  if (is_device_backend(row.backend)) row.kernel_ms = kernel_sum / double(settings.iterations);
+}
+
+}  // namespace
+
+BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceTable& distances,
+                     std::size_t particles, const BenchSettings& settings,
+                     const std::function<void(const std::string&)>& on_row) {
+  BenchCase result{mesh_name, mesh.vertex_count(), particles, {}};
+  const EnergyParams energy{Potential::exp, default_sigma(Potential::exp, mesh.area(), particles)};
+  const std::vector<VertexId> start = place_particles(distances, {Init::farthest, particles, 1, std::nullopt});
+  for (const std::string& name : settings.backends) {
+    on_row(mesh_name + " n=" + std::to_string(particles) + " " + name);
+    BackendRequest request;
+    request.name = name;
+    request.device = settings.device;
+    request.tuning_file = settings.tuning_file;
+    const CheckedBackend checked = check_backend(request, mesh, particles);
+    BenchRow row;
+    row.backend = name;
+    row.scheme = is_device_backend(name) ? settings.device_scheme : Scheme::sequential;
+    if (checked.kernel) {
+      row.sizes = sizes_text(*checked.kernel);
+      row.sizes_from = checked.sizes_from;
+    }
+    const auto backend = make_backend(checked, mesh, distances, energy);
+    time_iterations(*backend, start, settings, row);
+    result.rows.push_back(row);
+  }
+  return result;
+}
+
+}  // namespace meshparticles

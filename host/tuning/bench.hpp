@@ -1,0 +1,49 @@
+#pragma once
+// `meshparticles bench`: average time per iteration of each backend on one
+// problem, the way the paper's Tables 1 and 2 measured it. The serial row is
+// the paper's CPU loop (sequential scheme); the device rows run the scheme a
+// `run` would, with the sizes a `run` would take (tuning file or default).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backends/backend_factory.hpp"
+#include "geodesics/distance_table.hpp"
+#include "tuning/timing_statistics.hpp"
+
+namespace meshparticles {
+
+struct BenchSettings {
+  std::vector<std::string> backends = {"serial", "naive", "tiled"};
+  Scheme device_scheme = Scheme::colored;
+  unsigned colors = kDefaultColors;
+  std::size_t iterations = 20;  // timed; the paper used 1000
+  std::size_t warmups = 1;      // untimed first (PoCL compiles at the first launch)
+  std::string device;           // --device
+  std::optional<std::filesystem::path> tuning_file;
+};
+
+struct BenchRow {
+  std::string backend;  // serial, naive, tiled
+  Scheme scheme = Scheme::sequential;
+  std::string sizes;       // "wg 64 tile 128", empty for serial
+  std::string sizes_from;  // tuning file, built-in default
+  double mean_ms = 0;      // wall time per iteration, as the paper reports
+  TimingSummary timing;    // the same samples' median and minimum
+  std::optional<double> kernel_ms;  // update kernels per iteration (device rows), mean
+};
+
+struct BenchCase {
+  std::string mesh;  // name: sphere, torus, atrium
+  std::size_t vertices = 0;
+  std::size_t particles = 0;
+  std::vector<BenchRow> rows;
+};
+
+// Times every backend of `settings` on `particles` farthest-point-placed
+// particles. `on_row` is called before each backend starts (progress).
+BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceTable& distances,
+                     std::size_t particles, const BenchSettings& settings,
+                     const std::function<void(const std::string&)>& on_row);
+
+}  // namespace meshparticles

@@ -1,0 +1,51 @@
+#pragma once
+// The best sizes `sweep --save` found, per device, kernel and problem size
+// class, in $XDG_CONFIG_HOME/meshparticles/tuning.json (else
+// ~/.config/meshparticles/tuning.json). `run` and `bench` take their sizes
+// from it when --wg and --tile are absent.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backends/update_kernel.hpp"
+
+namespace meshparticles {
+
+std::filesystem::path default_tuning_file();
+
+// Problems are grouped by particle count, rounded up to a power of two:
+// "n<=1024" holds 513..1024 particles.
+std::string size_class(std::size_t particles);
+
+struct TunedSizes {
+  std::string device;
+  KernelKind kind = KernelKind::tiled;
+  std::string size_class;
+  std::size_t work_group_size = 0;
+  std::size_t tile_size = 0;  // tiled only
+  double median_ms = 0;       // what the sweep measured
+  std::string measured_on;    // mesh and n of that sweep
+};
+
+class TuningStore {
+ public:
+  // An empty store when the file does not exist; UserError naming the file
+  // when it exists but cannot be read as a tuning file.
+  static TuningStore load(const std::filesystem::path& file);
+
+  // The entry of this device and kernel for this size class, else the one of
+  // the nearest size class measured for them; nothing when there is none.
+  std::optional<TunedSizes> find(const std::string& device, KernelKind kind, std::size_t particles) const;
+  // Adds `sizes`, replacing any entry with the same device, kernel and class.
+  void put(const TunedSizes& sizes);
+  // Atomically; entries of other devices and classes are kept.
+  void save(const std::filesystem::path& file) const;
+
+  const std::vector<TunedSizes>& entries() const { return entries_; }
+
+ private:
+  std::vector<TunedSizes> entries_;
+};
+
+}  // namespace meshparticles

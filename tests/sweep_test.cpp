@@ -1,0 +1,99 @@
+// The sweep's promises: sizes over the device's limits are skipped with the
+// reason, a kernel that disagrees with the serial reference is FAILED and
+// never timed, the rest are timed.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "particle_test_support.hpp"
+#include "particles/initial_placement.hpp"
+#include "tuning/sweep.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+UpdateKernel sizes(KernelKind kind, std::size_t wg, std::size_t tile, const SurfaceMesh& mesh) {
+  UpdateKernel kernel;
+  kernel.kind = kind;
+  kernel.work_group_size = wg;
+  kernel.tile_size = tile;
+  kernel.candidate_slots = mesh.max_valence() + 1;
+  return kernel;
+}
+
+TEST(SweepConfigurations, NaiveTakesNoTiles) {
+  const auto configurations =
+      sweep_configurations({KernelKind::naive, KernelKind::tiled}, {8, 64}, {16, 32, 64}, 7);
+  ASSERT_EQ(configurations.size(), 2u + 6u);
+  EXPECT_EQ(configurations[0].kind, KernelKind::naive);
+  EXPECT_EQ(configurations[2].kind, KernelKind::tiled);
+  EXPECT_EQ(configurations[2].tile_size, 16u);
+  EXPECT_EQ(configurations.back().work_group_size, 64u);
+  EXPECT_EQ(configurations.back().tile_size, 64u);
+}
+
+class SweepTest : public ::testing::Test {
+ protected:
+  MeshWithDistances m{"torus.off"};
+  EnergyParams energy = m.default_energy(200);
+  std::vector<VertexId> positions = place_particles(m.distances, {Init::random, 200, 3, std::nullopt});
+  SweepSettings settings{Scheme::colored, 4, 3, 1, true};
+};
+
+TEST_F(SweepTest, TimesValidSizesAndSkipsRefusedOnes) {
+  const DeviceDescription device = select_device("");
+  const std::vector<UpdateKernel> configurations = {
+      sizes(KernelKind::naive, 8, 0, m.mesh), sizes(KernelKind::tiled, 32, 16, m.mesh),
+      sizes(KernelKind::tiled, device.max_work_group_size + 1, 16, m.mesh),
+      sizes(KernelKind::tiled, 8, device.local_memory_bytes, m.mesh)};
+  const auto results = run_sweep(device, m.mesh, m.distances, energy, positions, configurations, settings);
+  ASSERT_EQ(results.size(), 4u);
+  for (int k : {0, 1}) {
+    EXPECT_EQ(results[k].status, SweepStatus::ok) << results[k].reason;
+    EXPECT_GT(results[k].timing.min_ms, 0.0);
+    EXPECT_LE(results[k].timing.min_ms, results[k].timing.median_ms);
+  }
+  EXPECT_EQ(results[2].status, SweepStatus::skipped);
+  EXPECT_NE(results[2].reason.find("maximum work-group size"), std::string::npos) << results[2].reason;
+  EXPECT_EQ(results[3].status, SweepStatus::skipped);
+  EXPECT_NE(results[3].reason.find("local memory"), std::string::npos) << results[3].reason;
+  EXPECT_EQ(best_result(results, KernelKind::tiled), &results[1]);
+}
+
+// A tiled kernel that takes each particle's second-best candidate.
+TEST_F(SweepTest, AWrongKernelIsFailedAndNotTimed) {
+  const auto directory = std::filesystem::temp_directory_path() / ("meshparticles-wrong-" + std::to_string(getpid()));
+  std::filesystem::create_directories(directory);
+  for (const auto& entry : std::filesystem::directory_iterator(KERNELS_DIR)) {
+    std::filesystem::copy_file(entry.path(), directory / entry.path().filename());
+  }
+  std::ifstream in(directory / "tiled_update.cl");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string source = text.str();
+  const std::string rank = "stack_rank[q]));";
+  ASSERT_NE(source.find(rank), std::string::npos) << "the test's edit no longer applies";
+  source.replace(source.find(rank), rank.size(), "stack_rank[q] + 1));");
+  std::ofstream(directory / "tiled_update.cl") << source;
+
+  ::setenv("MESHPARTICLES_KERNEL_DIR", directory.c_str(), 1);
+  const auto results = run_sweep(select_device(""), m.mesh, m.distances, energy, positions,
+                                 {sizes(KernelKind::naive, 8, 0, m.mesh), sizes(KernelKind::tiled, 16, 32, m.mesh)},
+                                 settings);
+  ::unsetenv("MESHPARTICLES_KERNEL_DIR");
+  std::filesystem::remove_all(directory);
+
+  EXPECT_EQ(results[0].status, SweepStatus::ok);
+  EXPECT_EQ(results[1].status, SweepStatus::failed);
+  EXPECT_NE(results[1].reason.find("differ from the serial reference"), std::string::npos) << results[1].reason;
+  EXPECT_EQ(results[1].timing.median_ms, 0.0) << "a failed configuration must not be timed";
+  EXPECT_EQ(best_result(results, KernelKind::tiled), nullptr);
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
