@@ -9,10 +9,10 @@
 #include "particle_energy.h"
 
 #ifndef WORK_GROUP_SIZE
-#define WORK_GROUP_SIZE 64
+#define WORK_GROUP_SIZE 32
 #endif
 #ifndef TILE_SIZE
-#define TILE_SIZE 256
+#define TILE_SIZE 64
 #endif
 
 #define PARTICLES_PER_GROUP (WORK_GROUP_SIZE >= CANDIDATE_SLOTS ? WORK_GROUP_SIZE / CANDIDATE_SLOTS : 1)

@@ -53,8 +53,10 @@ UpdateKernel default_update_kernel(KernelKind kind, std::size_t candidate_slots,
     // One work-item per candidate, rounded up to a multiple of 8.
     kernel.work_group_size = (candidate_slots + 7) / 8 * 8;
   } else {
-    kernel.work_group_size = 64;
-    kernel.tile_size = 256;
+    // The best or near-best of repeated sweeps on PoCL at sphere/1024
+    // (docs/PERFORMANCE.md); `sweep --save` finds a device's own.
+    kernel.work_group_size = 32;
+    kernel.tile_size = 64;
   }
   kernel.work_group_size = std::max<std::size_t>(1, std::min(kernel.work_group_size, device_max_work_group));
   return kernel;
