@@ -76,6 +76,8 @@ expect_exit(sweep_tile_without_tiled 2 "--tile applies to the tiled kernel" swee
 expect_exit(sweep_unknown_kernel 2 "--kernel: cuda not in" sweep ${TORUS} --kernel naive,cuda)
 expect_exit(sweep_too_many_particles 2 "-n 5 is more particles than the 4 vertices" sweep ${TETRA} -n 5)
 expect_exit(sweep_unwritable_csv 2 "/nonexistent-dir/s.csv: cannot write" sweep ${TETRA} -n 2 --csv /nonexistent-dir/s.csv)
+expect_exit(sweep_colors_without_colored 2 "--colors applies to --scheme colored, not synchronous" sweep ${TORUS} --scheme synchronous --colors 4)
+expect_exit(bench_colors_without_colored 2 "--colors applies to --scheme colored, not synchronous" bench --scheme synchronous --colors 4)
 expect_exit(bench_bad_case 2 "--case 'torus': expected MESH:N" bench --case torus)
 expect_exit(bench_unknown_mesh 2 "no built-in mesh named 'cube'" bench --case cube:8 --meshes-dir ${PROJECT_SOURCE_DIR}/meshes)
 expect_exit(bench_too_many_particles 2 "--case torus:100000 is more particles than its 1500 vertices" bench --case torus:100000 --meshes-dir ${PROJECT_SOURCE_DIR}/meshes)

@@ -19,6 +19,7 @@ void apply_tuned_sizes(const std::filesystem::path& file, const DeviceDescriptio
     tuned = TuningStore::load(file).find(device.name, kernel.kind, particles);
   } catch (const UserError& error) {
     checked.sizes_note = error.what();
+    checked.tuning_refused = true;
     return;
   }
   if (!tuned) {
@@ -32,6 +33,7 @@ void apply_tuned_sizes(const std::filesystem::path& file, const DeviceDescriptio
     check_device_limits(device, candidate);
   } catch (const LimitExceeded& error) {
     checked.sizes_note = "tuned sizes in " + file.string() + " refused: " + error.what();
+    checked.tuning_refused = true;
     return;
   }
   kernel = candidate;

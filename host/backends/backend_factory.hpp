@@ -31,6 +31,7 @@ struct CheckedBackend {
   // Where those sizes came from: "--wg/--tile", "tuning file", "built-in default".
   std::string sizes_from;
   std::string sizes_note;  // details: the tuning entry used, or why none was
+  bool tuning_refused = false;  // the tuning file was unreadable or its sizes refused: worth a warning
 };
 
 bool is_device_backend(const std::string& name);

@@ -1,5 +1,6 @@
 // `meshparticles bench`: the paper's Tables 1 and 2 on the committed meshes,
 // our serial, naive and tiled rows beside the paper's figures.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -73,7 +74,10 @@ SurfaceMesh bench_mesh(const BenchOptions& options, const std::string& name) {
   return generate_mesh(name);
 }
 
-void run_bench(const BenchOptions& options) {
+void run_bench(const BenchOptions& options, bool colors_given) {
+  if (colors_given && options.scheme != "colored") {
+    throw UserError("--colors applies to --scheme colored, not " + options.scheme);
+  }
   BenchSettings settings;
   settings.backends = options.backends;
   settings.device_scheme = parse_scheme(options.scheme);
@@ -168,7 +172,7 @@ void add_bench_command(CLI::App& app) {
   bench->add_option("--tuning-file", options->tuning_file,
                     "Sizes saved by `sweep --save` (default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
   add_distance_table_options(*bench, options->table);
-  bench->callback([options] { run_bench(*options); });
+  bench->callback([options, bench] { run_bench(*options, bench->count("--colors") > 0); });
 }
 
 }  // namespace meshparticles

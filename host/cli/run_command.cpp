@@ -84,8 +84,7 @@ void run_run(RunOptions options) {
 
   options.backend.tuning_file = options.tuning_file.empty() ? default_tuning_file() : std::filesystem::path(options.tuning_file);
   const CheckedBackend checked = check_backend(options.backend, mesh, options.particles);
-  if (!checked.sizes_note.empty() && checked.sizes_from == "built-in default" && !options.table.quiet &&
-      std::filesystem::exists(*options.backend.tuning_file)) {
+  if (checked.tuning_refused && !options.table.quiet) {
     std::cerr << "meshparticles: warning: " << checked.sizes_note << "; using the built-in sizes\n";
   }
 

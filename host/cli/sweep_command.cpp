@@ -1,6 +1,7 @@
 // `meshparticles sweep`: time every kernel configuration on one problem,
 // each verified against the serial reference first; optionally save the best
 // sizes for `run` and `bench` (--save).
+#include <algorithm>
 #include <iostream>
 #include <set>
 
@@ -70,9 +71,10 @@ void save_best(const SweepOptions& options, const std::filesystem::path& file, T
             << file.string() << "\n";
 }
 
-void run_sweep_command(SweepOptions options) {
+void run_sweep_command(SweepOptions options, bool colors_given) {
   const Potential potential = parse_potential(options.potential);
   const Scheme scheme = parse_scheme(options.scheme);
+  if (colors_given && scheme != Scheme::colored) throw UserError("--colors applies to --scheme colored, not " + options.scheme);
   std::vector<KernelKind> kinds;
   for (const auto& name : unique_in_order(options.kernels)) kinds.push_back(parse_kernel_kind(name));
   const bool any_tiled = std::find(kinds.begin(), kinds.end(), KernelKind::tiled) != kinds.end();
@@ -173,7 +175,7 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("--tuning-file", options->tuning_file,
                     "Where --save stores them (default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
   add_distance_table_options(*sweep, options->table);
-  sweep->callback([options] { run_sweep_command(*options); });
+  sweep->callback([options, sweep] { run_sweep_command(*options, sweep->count("--colors") > 0); });
 }
 
 }  // namespace meshparticles
