@@ -33,6 +33,10 @@ cl_uint particles_of_color(cl_uint particle_count, cl_uint color, cl_uint colors
   return color < particle_count ? (particle_count - color + colors - 1) / colors : 0;
 }
 
+void require_device_scheme(Scheme scheme) {
+  if (scheme == Scheme::sequential) throw UserError("the " + scheme_name(scheme) + " scheme runs only on --backend serial");
+}
+
 double event_milliseconds(const cl::Event& event) {
   return double(event.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
                 event.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-6;
@@ -115,7 +119,7 @@ std::vector<VertexId> DeviceBackend::positions() {
 }
 
 IterationStats DeviceBackend::iterate(Scheme scheme, unsigned colors) {
-  if (scheme == Scheme::sequential) throw UserError("the " + scheme_name(scheme) + " scheme runs only on --backend serial");
+  require_device_scheme(scheme);
   const cl_uint groups = sub_steps(scheme, colors);
   queue_.enqueueFillBuffer(moved_count_, cl_uint{0}, 0, sizeof(cl_uint));
   std::vector<cl::Event> update_events;
@@ -158,7 +162,7 @@ std::vector<VertexId> DeviceBackend::synchronous_choices() {
 }
 
 double DeviceBackend::time_update_kernels(Scheme scheme, unsigned colors) {
-  if (scheme == Scheme::sequential) throw UserError("the " + scheme_name(scheme) + " scheme runs only on --backend serial");
+  require_device_scheme(scheme);
   const cl_uint groups = sub_steps(scheme, colors);
   std::vector<cl::Event> events;
   for (cl_uint color = 0; color < groups; ++color) {

@@ -45,6 +45,12 @@ KernelDefines UpdateKernel::defines(Potential potential) const {
   return defines;
 }
 
+std::string UpdateKernel::sizes_text() const {
+  std::string text = "wg " + std::to_string(work_group_size);
+  if (kind == KernelKind::tiled) text += " tile " + std::to_string(tile_size);
+  return text;
+}
+
 UpdateKernel default_update_kernel(KernelKind kind, std::size_t candidate_slots, std::size_t device_max_work_group) {
   UpdateKernel kernel;
   kernel.kind = kind;

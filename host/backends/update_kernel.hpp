@@ -29,6 +29,8 @@ struct UpdateKernel {
   std::size_t work_groups_for(std::size_t particles) const;
   std::size_t local_memory_bytes() const;
   KernelDefines defines(Potential potential) const;
+  // "wg 32 tile 64" (naive: "wg 16"), for tables and progress lines.
+  std::string sizes_text() const;
 };
 
 // Sizes used when neither --wg nor --tile is given (chosen by measurement,

@@ -83,32 +83,33 @@ void run_bench(const BenchOptions& options, bool colors_given) {
   settings.device_scheme = parse_scheme(options.scheme);
   settings.colors = options.colors;
   settings.iterations = options.iterations;
-  settings.device = options.device;
-  settings.tuning_file =
-      options.tuning_file.empty() ? default_tuning_file() : std::filesystem::path(options.tuning_file);
   if (settings.iterations == 0) throw UserError("--iterations must be at least 1");
   for (const auto& file : {options.csv, options.json}) {
     if (!file.empty()) check_writable(file);
   }
   const std::vector<CaseRequest> requests = requested_cases(options);
 
-  // Meshes in first-asked order, each loaded and checked before any timing.
+  // Meshes loaded and backends checked (sizes from the tuning file) before
+  // any timing: refused sizes fail now, not after minutes.
+  BackendRequest backend_request;
+  backend_request.device = options.device;
+  backend_request.tuning_file = tuning_file_or_default(options.tuning_file);
   std::map<std::string, SurfaceMesh> meshes;
-  for (const auto& request : requests) {
+  std::vector<std::vector<CheckedBackend>> checked(requests.size());
+  std::string device_name = "serial";
+  for (std::size_t r = 0; r < requests.size(); ++r) {
+    const CaseRequest& request = requests[r];
     if (!meshes.contains(request.mesh)) meshes.emplace(request.mesh, bench_mesh(options, request.mesh));
     const SurfaceMesh& mesh = meshes.at(request.mesh);
     if (request.particles > mesh.vertex_count()) {
       throw UserError("--case " + request.mesh + ":" + std::to_string(request.particles) +
                       " is more particles than its " + std::to_string(mesh.vertex_count()) + " vertices");
     }
-    for (const auto& backend : settings.backends) {  // refused sizes fail now, not after minutes
-      BackendRequest check{backend, options.device, std::nullopt, std::nullopt, settings.tuning_file};
-      check_backend(check, mesh, request.particles);
+    for (const auto& backend : settings.backends) {
+      backend_request.name = backend;
+      checked[r].push_back(check_backend(backend_request, mesh, request.particles));
+      if (checked[r].back().device) device_name = checked[r].back().device->name;
     }
-  }
-  std::string device_name = "serial";
-  for (const auto& backend : settings.backends) {
-    if (is_device_backend(backend)) device_name = select_device(options.device).name;
   }
 
   ProgressLine progress("bench", requests.size() * settings.backends.size(), options.table.quiet);
@@ -116,7 +117,8 @@ void run_bench(const BenchOptions& options, bool colors_given) {
   std::size_t done = 0;
   std::string current_mesh;
   std::optional<DistanceTable> distances;
-  for (const auto& request : requests) {
+  for (std::size_t r = 0; r < requests.size(); ++r) {
+    const CaseRequest& request = requests[r];
     const SurfaceMesh& mesh = meshes.at(request.mesh);
     if (request.mesh != current_mesh) {  // one table in memory at a time
       distances.reset();
@@ -127,7 +129,7 @@ void run_bench(const BenchOptions& options, bool colors_given) {
       distances.emplace(load_or_compute_distances(mesh, table.request(GeodesicMethod::fast_marching), source));
       current_mesh = request.mesh;
     }
-    results.push_back(bench_case(request.mesh, mesh, *distances, request.particles, settings,
+    results.push_back(bench_case(request.mesh, mesh, *distances, request.particles, checked[r], settings,
                                  [&](const std::string& what) { progress.update(done++, what); }));
   }
   progress.update(done);

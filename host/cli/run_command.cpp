@@ -82,7 +82,7 @@ void run_run(RunOptions options) {
   if (options.start_vertex) start_vertex = surface_vertex_for_option(mesh, *options.start_vertex, "--start-vertex");
   prepare_output_directory(options.out);  // before the long work, not after
 
-  options.backend.tuning_file = options.tuning_file.empty() ? default_tuning_file() : std::filesystem::path(options.tuning_file);
+  options.backend.tuning_file = tuning_file_or_default(options.tuning_file);
   const CheckedBackend checked = check_backend(options.backend, mesh, options.particles);
   if (checked.tuning_refused && !options.table.quiet) {
     std::cerr << "meshparticles: warning: " << checked.sizes_note << "; using the built-in sizes\n";

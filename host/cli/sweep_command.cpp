@@ -89,8 +89,7 @@ void run_sweep_command(SweepOptions options, bool colors_given) {
   for (const auto& file : {options.csv, options.json}) {
     if (!file.empty()) check_writable(file);
   }
-  const std::filesystem::path tuning_file =
-      options.tuning_file.empty() ? default_tuning_file() : std::filesystem::path(options.tuning_file);
+  const std::filesystem::path tuning_file = tuning_file_or_default(options.tuning_file);
   const TuningStore store = options.save ? TuningStore::load(tuning_file) : TuningStore();
   const DeviceDescription device = select_device(options.device);
 

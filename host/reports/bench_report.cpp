@@ -4,18 +4,12 @@
 #include <cstdio>
 
 #include "common/atomic_file.hpp"
-#include "reports/csv_field.hpp"
+#include "reports/text_format.hpp"
 #include "tuning/paper_figures.hpp"
 
 namespace meshparticles {
 
 namespace {
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
 
 std::optional<double> paper_ms(const BenchCase& bench, const std::string& backend) {
   const PaperFigures* figures = paper_figures_for(bench.mesh, bench.particles);
@@ -45,7 +39,7 @@ std::optional<double> paper_speedup(const BenchCase& bench, const std::string& b
 }
 
 std::string speedup_text(std::optional<double> speedup) {
-  return speedup ? " [" + format(*speedup >= 10 ? "%.0fx" : "%.1fx", *speedup) + "]" : "";
+  return speedup ? " [" + format_number(*speedup >= 10 ? "%.0fx" : "%.1fx", *speedup) + "]" : "";
 }
 
 std::string paper_label(const std::string& backend) {
@@ -103,9 +97,9 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
       for (const BenchCase* bench : columns) {
         const BenchRow* row = row_of(*bench, backend);
         const auto paper = paper_ms(*bench, backend);
-        const std::string ours = row ? format("%.3f", row->mean_ms) + speedup_text(our_speedup(*bench, *row)) : "-";
+        const std::string ours = row ? format_number("%.3f", row->mean_ms) + speedup_text(our_speedup(*bench, *row)) : "-";
         const std::string theirs =
-            paper ? format("%.2f", *paper) + speedup_text(paper_speedup(*bench, backend)) : "-";
+            paper ? format_number("%.2f", *paper) + speedup_text(paper_speedup(*bench, backend)) : "-";
         std::snprintf(cell, sizeof cell, "  %-17s %-15s", ours.c_str(), theirs.c_str());
         text += cell;
       }
@@ -155,14 +149,14 @@ void write_bench_csv(const std::filesystem::path& file, const std::string& devic
   write_file_atomically(file, [&](std::ostream& out) {
     out << "device,mesh,vertices,n,backend,scheme,sizes,sizes_from,iterations,ms_per_iteration,median_ms,min_ms,"
            "kernel_ms,speedup_vs_serial,paper_ms,paper_speedup\n";
-    auto optional = [](std::optional<double> value) { return value ? format("%.6g", *value) : std::string(); };
+    auto optional = [](std::optional<double> value) { return value ? format_number("%.6g", *value) : std::string(); };
     for (const auto& bench : cases) {
       for (const auto& row : bench.rows) {
         out << csv_field(row.backend == "serial" ? "serial" : device_name) << ',' << bench.mesh << ','
             << bench.vertices << ',' << bench.particles << ',' << row.backend << ',' << scheme_name(row.scheme)
             << ',' << row.sizes << ',' << row.sizes_from << ',' << settings.iterations << ','
-            << format("%.6g", row.mean_ms) << ',' << format("%.6g", row.timing.median_ms) << ','
-            << format("%.6g", row.timing.min_ms) << ',' << optional(row.kernel_ms) << ','
+            << format_number("%.6g", row.mean_ms) << ',' << format_number("%.6g", row.timing.median_ms) << ','
+            << format_number("%.6g", row.timing.min_ms) << ',' << optional(row.kernel_ms) << ','
             << optional(our_speedup(bench, row)) << ',' << optional(paper_ms(bench, row.backend)) << ','
             << optional(paper_speedup(bench, row.backend)) << '\n';
       }

@@ -4,17 +4,11 @@
 #include <cstdio>
 
 #include "common/atomic_file.hpp"
-#include "reports/csv_field.hpp"
+#include "reports/text_format.hpp"
 
 namespace meshparticles {
 
 namespace {
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
 
 std::string tile_text(const UpdateKernel& kernel) {
   return kernel.kind == KernelKind::tiled ? std::to_string(kernel.tile_size) : "-";
@@ -72,20 +66,19 @@ std::string sweep_table(const DeviceDescription& device, const SweepContext& con
     std::snprintf(line, sizeof line, "%-6s %6zu %6s  %-8s %10s %10s  ", kernel_kind_name(result->kernel.kind).c_str(),
                   result->kernel.work_group_size, tile_text(result->kernel).c_str(),
                   sweep_status_name(result->status).c_str(),
-                  timed ? format("%.3f", result->timing.median_ms).c_str() : "-",
-                  timed ? format("%.3f", result->timing.min_ms).c_str() : "-");
+                  timed ? format_number("%.3f", result->timing.median_ms).c_str() : "-",
+                  timed ? format_number("%.3f", result->timing.min_ms).c_str() : "-");
     text += line + result->reason + "\n";
   }
   const SweepResult* naive = best_result(results, KernelKind::naive);
   const SweepResult* tiled = best_result(results, KernelKind::tiled);
   for (const SweepResult* best : {naive, tiled}) {
     if (!best) continue;
-    text += "\nbest " + kernel_kind_name(best->kernel.kind) + ": wg " + std::to_string(best->kernel.work_group_size);
-    if (best->kernel.kind == KernelKind::tiled) text += " tile " + std::to_string(best->kernel.tile_size);
-    text += ", " + format("%.3f", best->timing.median_ms) + " ms";
+    text += "\nbest " + kernel_kind_name(best->kernel.kind) + ": " + best->kernel.sizes_text() + ", " +
+            format_number("%.3f", best->timing.median_ms) + " ms";
   }
   if (naive && tiled) {
-    text += " (" + format("%.2f", naive->timing.median_ms / tiled->timing.median_ms) + "x the best naive)";
+    text += " (" + format_number("%.2f", naive->timing.median_ms / tiled->timing.median_ms) + "x the best naive)";
   }
   return text + "\n";
 }
@@ -126,8 +119,8 @@ void write_sweep_csv(const std::filesystem::path& file, const DeviceDescription&
           << csv_field(context.mesh_path) << ',' << context.particles << ','
           << kernel_kind_name(result.kernel.kind) << ',' << result.kernel.work_group_size << ','
           << (result.kernel.kind == KernelKind::tiled ? std::to_string(result.kernel.tile_size) : "") << ','
-          << sweep_status_name(result.status) << ',' << (timed ? format("%.6f", result.timing.median_ms) : "")
-          << ',' << (timed ? format("%.6f", result.timing.min_ms) : "") << ',' << csv_field(result.reason) << '\n';
+          << sweep_status_name(result.status) << ',' << (timed ? format_number("%.6f", result.timing.median_ms) : "")
+          << ',' << (timed ? format_number("%.6f", result.timing.min_ms) : "") << ',' << csv_field(result.reason) << '\n';
     }
   });
 }

@@ -8,12 +8,6 @@ namespace meshparticles {
 
 namespace {
 
-std::string sizes_text(const UpdateKernel& kernel) {
-  std::string text = "wg " + std::to_string(kernel.work_group_size);
-  if (kernel.kind == KernelKind::tiled) text += " tile " + std::to_string(kernel.tile_size);
-  return text;
-}
-
 // Every iteration does the same work whatever the positions (all candidates
 // of all particles against all particles), so a run that has converged times
 // as well as one still moving.
@@ -39,23 +33,18 @@ void time_iterations(ParticleBackend& backend, const std::vector<VertexId>& star
 }  // namespace
 
 BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceTable& distances,
-                     std::size_t particles, const BenchSettings& settings,
-                     const std::function<void(const std::string&)>& on_row) {
+                     std::size_t particles, const std::vector<CheckedBackend>& backends,
+                     const BenchSettings& settings, const std::function<void(const std::string&)>& on_row) {
   BenchCase result{mesh_name, mesh.vertex_count(), particles, {}};
   const EnergyParams energy{Potential::exp, default_sigma(Potential::exp, mesh.area(), particles)};
   const std::vector<VertexId> start = place_particles(distances, {Init::farthest, particles, 1, std::nullopt});
-  for (const std::string& name : settings.backends) {
-    on_row(mesh_name + " n=" + std::to_string(particles) + " " + name);
-    BackendRequest request;
-    request.name = name;
-    request.device = settings.device;
-    request.tuning_file = settings.tuning_file;
-    const CheckedBackend checked = check_backend(request, mesh, particles);
+  for (const CheckedBackend& checked : backends) {
+    on_row(mesh_name + " n=" + std::to_string(particles) + " " + checked.name);
     BenchRow row;
-    row.backend = name;
-    row.scheme = is_device_backend(name) ? settings.device_scheme : Scheme::sequential;
+    row.backend = checked.name;
+    row.scheme = checked.device ? settings.device_scheme : Scheme::sequential;
     if (checked.kernel) {
-      row.sizes = sizes_text(*checked.kernel);
+      row.sizes = checked.kernel->sizes_text();
       row.sizes_from = checked.sizes_from;
     }
     const auto backend = make_backend(checked, mesh, distances, energy);

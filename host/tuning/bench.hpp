@@ -3,6 +3,7 @@
 // problem, the way the paper's Tables 1 and 2 measured it. The serial row is
 // the paper's CPU loop (sequential scheme); the device rows run the scheme a
 // `run` would, with the sizes a `run` would take (tuning file or default).
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,8 +20,6 @@ struct BenchSettings {
   unsigned colors = kDefaultColors;
   std::size_t iterations = 20;  // timed; the paper used 1000
   std::size_t warmups = 1;      // untimed first (PoCL compiles at the first launch)
-  std::string device;           // --device
-  std::optional<std::filesystem::path> tuning_file;
 };
 
 struct BenchRow {
@@ -40,10 +39,11 @@ struct BenchCase {
   std::vector<BenchRow> rows;
 };
 
-// Times every backend of `settings` on `particles` farthest-point-placed
-// particles. `on_row` is called before each backend starts (progress).
+// Times each of `backends` (checked for this mesh and n, one per name in
+// settings.backends) on `particles` farthest-point-placed particles.
+// `on_row` is called before each backend starts (progress).
 BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceTable& distances,
-                     std::size_t particles, const BenchSettings& settings,
-                     const std::function<void(const std::string&)>& on_row);
+                     std::size_t particles, const std::vector<CheckedBackend>& backends,
+                     const BenchSettings& settings, const std::function<void(const std::string&)>& on_row);
 
 }  // namespace meshparticles

@@ -11,12 +11,6 @@ namespace {
 
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
-std::string describe(const UpdateKernel& kernel) {
-  std::string text = kernel_kind_name(kernel.kind) + " wg " + std::to_string(kernel.work_group_size);
-  if (kernel.kind == KernelKind::tiled) text += " tile " + std::to_string(kernel.tile_size);
-  return text;
-}
-
 SweepResult measure(const DeviceDescription& device, const SurfaceMesh& mesh, const DistanceTable& distances,
                     const EnergyParams& energy, const std::vector<VertexId>& positions,
                     const ReferenceChoices& reference, const UpdateKernel& kernel, const SweepSettings& settings) {
@@ -95,7 +89,7 @@ std::vector<SweepResult> run_sweep(const DeviceDescription& device, const Surfac
   const ReferenceChoices reference(mesh, serial, positions);
   std::vector<SweepResult> results;
   for (const UpdateKernel& kernel : configurations) {
-    progress.update(results.size(), describe(kernel));
+    progress.update(results.size(), kernel_kind_name(kernel.kind) + " " + kernel.sizes_text());
     results.push_back(measure(device, mesh, distances, energy, positions, reference, kernel, settings));
   }
   progress.update(results.size());

@@ -61,6 +61,10 @@ std::filesystem::path default_tuning_file() {
   return directory / "meshparticles" / "tuning.json";
 }
 
+std::filesystem::path tuning_file_or_default(const std::string& option) {
+  return option.empty() ? default_tuning_file() : std::filesystem::path(option);
+}
+
 std::string size_class(std::size_t particles) { return "n<=" + std::to_string(std::bit_ceil(particles)); }
 
 TuningStore TuningStore::load(const std::filesystem::path& file) {

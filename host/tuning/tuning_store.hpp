@@ -13,6 +13,8 @@
 namespace meshparticles {
 
 std::filesystem::path default_tuning_file();
+// --tuning-file as given, or default_tuning_file() when it is empty.
+std::filesystem::path tuning_file_or_default(const std::string& option);
 
 // Problems are grouped by particle count, rounded up to a power of two:
 // "n<=1024" holds 513..1024 particles.
