@@ -2,8 +2,9 @@
 // work-items over the particle's candidates, each summing over every particle
 // straight from the distance table in global memory (row = candidate, so
 // neighbouring work-items read scattered addresses). Writes the chosen
-// vertex of each particle; apply_moves commits them after the launch, so
-// every work-group sees the same snapshot.
+// vertex of each particle and claims it; apply_moves commits the moves after
+// the launch, so every work-group sees the same snapshot.
+#include "claims.h"
 #include "particle_energy.h"
 
 #ifndef WORK_GROUP_SIZE
@@ -13,8 +14,8 @@
 __kernel __attribute__((reqd_work_group_size(WORK_GROUP_SIZE, 1, 1)))
 void naive_update(__global const float* distances, uint vertex_count,
                   __global const uint* ring_offsets, __global const uint* ring_neighbors,
-                  __global const uint* positions, uint particle_count, uint color, uint colors,
-                  float inv_two_sigma_sq, __global uint* chosen) {
+                  __global const uint* positions, uint particle_count, uint color, uint colors, uint rank_stacks,
+                  float inv_two_sigma_sq, __global uint* chosen, __global uint* claims) {
   __local float energies[CANDIDATE_SLOTS];
   __local uchar occupied[CANDIDATE_SLOTS];
   __local uint stack_rank;
@@ -41,11 +42,14 @@ void naive_update(__global const float* distances, uint vertex_count,
     }
     energies[j] = energy;
     occupied[j] = taken;
-    if (j == 0) stack_rank = stacked;
+    if (j == 0) stack_rank = rank_stacks ? stacked : 0;
   }
   barrier(CLK_LOCAL_MEM_FENCE);
   if (lid == 0) {
     block_occupied(energies, occupied, count);
-    chosen[c] = candidate_vertex(ring_offsets, ring_neighbors, here, candidate_of_rank(energies, count, stack_rank));
+    const uint target =
+        candidate_vertex(ring_offsets, ring_neighbors, here, candidate_of_rank(energies, count, stack_rank));
+    chosen[c] = target;
+    claim_target(claims, c, here, target);
   }
 }

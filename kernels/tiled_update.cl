@@ -6,6 +6,7 @@
 // particle, nearby ids after breadth-first numbering) read nearby addresses of
 // the same row. Every work-item reaches every barrier the same number of
 // times; only the accumulation is masked.
+#include "claims.h"
 #include "particle_energy.h"
 
 #ifndef WORK_GROUP_SIZE
@@ -23,8 +24,8 @@
 __kernel __attribute__((reqd_work_group_size(WORK_GROUP_SIZE, 1, 1)))
 void tiled_update(__global const float* distances, uint vertex_count,
                   __global const uint* ring_offsets, __global const uint* ring_neighbors,
-                  __global const uint* positions, uint particle_count, uint color, uint colors,
-                  float inv_two_sigma_sq, __global uint* chosen) {
+                  __global const uint* positions, uint particle_count, uint color, uint colors, uint rank_stacks,
+                  float inv_two_sigma_sq, __global uint* chosen, __global uint* claims) {
   __local uint tile[TILE_SIZE];
   __local float energies[PAIR_SLOTS];
   __local uchar occupied_slots[PAIR_SLOTS];
@@ -84,7 +85,7 @@ void tiled_update(__global const float* distances, uint vertex_count,
     if (!active[k]) continue;
     energies[s] = energy[k];
     occupied_slots[s] = occupied[k];
-    if (s % CANDIDATE_SLOTS == 0) stack_rank[s / CANDIDATE_SLOTS] = stacked[k];
+    if (s % CANDIDATE_SLOTS == 0) stack_rank[s / CANDIDATE_SLOTS] = rank_stacks ? stacked[k] : 0;
   }
   barrier(CLK_LOCAL_MEM_FENCE);
   for (uint q = lid; q < PARTICLES_PER_GROUP; q += WORK_GROUP_SIZE) {
@@ -93,7 +94,9 @@ void tiled_update(__global const float* distances, uint vertex_count,
     const uint at = positions[c];
     const uint count = candidate_count(ring_offsets, at);
     block_occupied(energies + q * CANDIDATE_SLOTS, occupied_slots + q * CANDIDATE_SLOTS, count);
-    chosen[c] = candidate_vertex(ring_offsets, ring_neighbors, at,
-                                 candidate_of_rank(energies + q * CANDIDATE_SLOTS, count, stack_rank[q]));
+    const uint target = candidate_vertex(ring_offsets, ring_neighbors, at,
+                                         candidate_of_rank(energies + q * CANDIDATE_SLOTS, count, stack_rank[q]));
+    chosen[c] = target;
+    claim_target(claims, c, at, target);
   }
 }

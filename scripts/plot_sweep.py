@@ -22,7 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 def plot_sweep(result, title, out):
-    kernels = [k for k in ("naive", "tiled") if any(r["kernel"] == k for r in result["rows"])]
+    kernels = [k for k in ("naive", "tiled", "field") if any(r["kernel"] == k for r in result["rows"])]
     fig, axes = plt.subplots(1, len(kernels), figsize=(6.5 * len(kernels), 5), squeeze=False)
     for ax, kernel in zip(axes[0], kernels):
         rows = [r for r in result["rows"] if r["kernel"] == kernel]
@@ -64,13 +64,19 @@ def plot_sweep(result, title, out):
 def plot_bench(result, title, out):
     meshes = list(dict.fromkeys(c["mesh"] for c in result["cases"]))
     fig, axes = plt.subplots(1, len(meshes), figsize=(5.5 * len(meshes), 4.8), squeeze=False)
-    colors = {"serial": "tab:gray", "naive": "tab:orange", "tiled": "tab:blue"}
+    colors = {"serial": "tab:gray", "naive": "tab:orange", "tiled": "tab:blue", "field": "tab:green",
+              "serial-field": "tab:olive"}
+    # The field rows stand beside the paper's GPU2 in the table; here the
+    # paper's own bars are drawn once, with its own rows.
+    has_paper_bars = {"serial", "naive", "tiled"}
     for ax, mesh in zip(axes[0], meshes):
         cases = [c for c in result["cases"] if c["mesh"] == mesh]
         backends = list(dict.fromkeys(r["backend"] for c in cases for r in c["rows"]))
         width = 0.8 / (2 * len(backends))
         for b, backend in enumerate(backends):
             for source, key, hatch in (("ours", "ms_per_iteration", None), ("paper", "paper_ms", "//")):
+                if source == "paper" and backend not in has_paper_bars:
+                    continue
                 xs, ys = [], []
                 for x, case in enumerate(cases):
                     row = next((r for r in case["rows"] if r["backend"] == backend), None)

@@ -62,8 +62,8 @@ TEST(DeviceMeasurement, TimingAndChoicesLeaveThePositionsAlone) {
   const MeshWithDistances m("torus.off");
   const EnergyParams energy = m.default_energy(200);
   const auto start = random_configuration(m.mesh.vertex_count(), 200, 5);
-  for (const auto kind : {KernelKind::naive, KernelKind::tiled}) {
-    auto kernel = device_backend(m, energy, kind, 16, 64);
+  for (const auto kind : {KernelKind::naive, KernelKind::tiled, KernelKind::field}) {
+    auto kernel = device_backend(m, energy, kind, 16, kind == KernelKind::tiled ? 64 : 0);
     kernel->set_positions(start);
     const std::vector<VertexId> choices = kernel->synchronous_choices();
     EXPECT_GT(kernel->time_update_kernels(Scheme::colored, 16), 0.0);
@@ -81,8 +81,8 @@ TEST(DeviceEnergy, TotalEnergyMatchesTheReference) {
   const auto start = random_configuration(m.mesh.vertex_count(), 300, 7);
   SerialBackend reference(m.mesh, m.distances, energy);
   reference.set_positions(start);
-  for (const auto kind : {KernelKind::naive, KernelKind::tiled}) {
-    auto kernel = device_backend(m, energy, kind, 16, 64);
+  for (const auto kind : {KernelKind::naive, KernelKind::tiled, KernelKind::field}) {
+    auto kernel = device_backend(m, energy, kind, 16, kind == KernelKind::tiled ? 64 : 0);
     kernel->set_positions(start);
     EXPECT_NEAR(kernel->total_energy(), reference.total_energy(), 1e-5 * reference.total_energy());
   }

@@ -5,6 +5,7 @@
 
 #include <set>
 
+#include "backends/serial_field_backend.hpp"
 #include "particle_test_support.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
@@ -30,7 +31,8 @@ TEST(WholeRuns, SynchronousAndColoredAgreeOnEveryBackend) {
     const RunOutcome expected = run(reference, start, scheme, colors, 50);
     ASSERT_EQ(expected.trace.size(), 50u) << "the runs should still be moving particles";
     for (const KernelSize& size : {KernelSize{KernelKind::naive, 16, 0}, KernelSize{KernelKind::naive, 5, 0},
-                                   KernelSize{KernelKind::tiled, 64, 256}, KernelSize{KernelKind::tiled, 24, 7}}) {
+                                   KernelSize{KernelKind::tiled, 64, 256}, KernelSize{KernelKind::tiled, 24, 7},
+                                   KernelSize{KernelKind::field, 64, 0}, KernelSize{KernelKind::field, 5, 0}}) {
       SCOPED_TRACE(describe(size));
       auto kernel = device_backend(m, energy, size.kind, size.work_group, size.tile);
       const RunOutcome got = run(*kernel, start, scheme, colors, 50);
@@ -41,6 +43,40 @@ TEST(WholeRuns, SynchronousAndColoredAgreeOnEveryBackend) {
         EXPECT_NEAR(got.trace[i].energy, expected.trace[i].energy, 1e-5 * expected.trace[i].energy);
         ASSERT_TRUE(got.trace[i].kernel_ms.has_value());
       }
+    }
+    SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+    const RunOutcome got = run(twin, start, scheme, colors, 50);
+    EXPECT_EQ(got.positions, expected.positions) << "serial-field";
+    for (std::size_t i = 0; i < got.trace.size(); ++i) {
+      EXPECT_EQ(got.trace[i].moved, expected.trace[i].moved) << "serial-field, iteration " << i;
+      EXPECT_NEAR(got.trace[i].energy, expected.trace[i].energy, 1e-5 * expected.trace[i].energy);
+    }
+  }
+}
+
+// Every backend runs the paper's sequential loop (on a device: one sub-step
+// per particle, each taking its best candidate), from a spread start and from
+// the stacked one.
+TEST(WholeRuns, SequentialAgreesOnEveryBackend) {
+  const MeshWithDistances m("patch.off");
+  const std::size_t particles = 60;
+  const EnergyParams energy = m.default_energy(particles);
+  for (const Init init : {Init::farthest, Init::v0}) {
+    SCOPED_TRACE(init_name(init));
+    const auto start = place_particles(m.distances, {init, particles, 2, std::nullopt});
+    SerialBackend reference(m.mesh, m.distances, energy);
+    const RunOutcome expected = run(reference, start, Scheme::sequential, 1, 30);
+    ASSERT_GT(expected.trace.size(), 2u);
+    std::vector<std::unique_ptr<ParticleBackend>> backends;
+    backends.push_back(std::make_unique<SerialFieldBackend>(m.mesh, m.distances, energy, WeightFormat::float32, 0));
+    backends.push_back(device_backend(m, energy, KernelKind::naive, 8));
+    backends.push_back(device_backend(m, energy, KernelKind::tiled, 16, 32));
+    backends.push_back(device_backend(m, energy, KernelKind::field, 16));
+    for (const auto& backend : backends) {
+      const RunOutcome got = run(*backend, start, Scheme::sequential, 1, 30);
+      EXPECT_EQ(got.positions, expected.positions);
+      ASSERT_EQ(got.trace.size(), expected.trace.size());
+      for (std::size_t i = 0; i < got.trace.size(); ++i) EXPECT_EQ(got.trace[i].moved, expected.trace[i].moved);
     }
   }
 }

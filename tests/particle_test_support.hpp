@@ -32,13 +32,15 @@ struct MeshWithDistances {
 };
 
 inline std::unique_ptr<DeviceBackend> device_backend(const MeshWithDistances& m, const EnergyParams& energy,
-                                                     KernelKind kind, std::size_t work_group, std::size_t tile = 0) {
+                                                     KernelKind kind, std::size_t work_group, std::size_t tile = 0,
+                                                     WeightFormat weights = WeightFormat::float32) {
   UpdateKernel kernel;
   kernel.kind = kind;
   kernel.work_group_size = work_group;
   kernel.tile_size = tile;
   kernel.candidate_slots = m.mesh.max_valence() + 1;
-  return std::make_unique<DeviceBackend>(select_device(""), m.mesh, m.distances, energy, kernel);
+  kernel.weights = weights;
+  return make_device_backend(select_device(""), m.mesh, m.distances, energy, kernel);
 }
 
 struct KernelSize {
@@ -54,7 +56,8 @@ inline const std::vector<KernelSize>& kernel_sizes() {
       {KernelKind::naive, 1, 0},    {KernelKind::naive, 3, 0},    {KernelKind::naive, 8, 0},
       {KernelKind::naive, 32, 0},   {KernelKind::tiled, 1, 1},    {KernelKind::tiled, 5, 3},
       {KernelKind::tiled, 12, 7},   {KernelKind::tiled, 64, 256}, {KernelKind::tiled, 100, 1000},
-      {KernelKind::tiled, 256, 33},
+      {KernelKind::tiled, 256, 33}, {KernelKind::field, 1, 0},    {KernelKind::field, 7, 0},
+      {KernelKind::field, 64, 0},   {KernelKind::field, 256, 0},
   };
   return sizes;
 }

@@ -13,16 +13,22 @@ tuning="$work/config/tuning.json"
 "$bin" sweep "$mesh" -n 64 --wg 8,16 --tile 16,64 --iterations 2 --csv "$work/sweep.csv" --json "$work/sweep.json" \
   --save --tuning-file "$tuning" -q > "$work/sweep.txt"
 grep -q "^best tiled: wg" "$work/sweep.txt" || fail "sweep table has no best tiled line"
+grep -q "^best field: wg" "$work/sweep.txt" || fail "sweep table has no best field line"
 [ "$(grep -B 2 "^best naive" "$work/sweep.txt" | head -n 1 | awk '{print $4}')" = ok ] || fail "last table row is not a timed one"
 head -n 1 "$work/sweep.csv" | grep -q "^device,max_work_group_size,local_memory_bytes,mesh,n,kernel,wg,tile,status,median_ms,min_ms" \
   || fail "sweep CSV header"
-[ "$(grep -c ',ok,' "$work/sweep.csv")" -eq 6 ] || fail "expected 6 timed rows in the CSV"
+[ "$(grep -c ',ok,' "$work/sweep.csv")" -eq 8 ] || fail "expected 8 timed rows in the CSV (naive 2, tiled 4, field 2)"
 [ -s "$tuning" ] || fail "sweep --save wrote no tuning file"
 saved_wg=$(/usr/bin/python3 -c "import json,sys; e=[e for e in json.load(open(sys.argv[1]))['entries'] if e['kernel']=='tiled'][0]; print(e['wg'])" "$tuning")
 
 "$bin" run "$mesh" -n 64 --iterations 2 --tuning-file "$tuning" --out "$work/run" -q > /dev/null
 grep -q '"sizes_from": "tuning file"' "$work/run/report.json" || fail "run did not take the tuning file's sizes"
 grep -Eq "\"wg\": $saved_wg,?$" "$work/run/report.json" || fail "run's wg is not the saved $saved_wg"
+
+saved_field_wg=$(/usr/bin/python3 -c "import json,sys; e=[e for e in json.load(open(sys.argv[1]))['entries'] if e['kernel']=='field'][0]; print(e['wg'])" "$tuning")
+"$bin" run "$mesh" -n 64 --iterations 2 --backend field --tuning-file "$tuning" --out "$work/run" -q > /dev/null
+grep -Eq "\"wg\": $saved_field_wg,?$" "$work/run/report.json" || fail "field run's wg is not the saved $saved_field_wg"
+grep -q '"weights": "float"' "$work/run/report.json" || fail "field run's report does not name its weights"
 
 "$bin" run "$mesh" -n 64 --iterations 2 --tuning-file "$tuning" --wg 32 --tile 8 --out "$work/run" -q > /dev/null
 grep -q '"sizes_from": "--wg/--tile"' "$work/run/report.json" || fail "flags did not override the tuning file"
@@ -41,7 +47,9 @@ fi
 grep -q "^torus (1500 vertices)" "$work/bench.txt" || fail "bench table has no torus block"
 grep -Eq "^tiled +\(GPU2\) +[0-9.]+ \[[0-9.]+x\] +- " "$work/bench.txt" || fail "bench tiled row (ours with speed-up, no paper figure at n=64)"
 grep -Eq "0\.17 \[90x\]" "$work/bench.txt" || fail "the paper's torus/128 GPU2 figure and speed-up are missing"
-[ "$(grep -c '^' "$work/bench.csv")" -eq 7 ] || fail "expected a header and 6 rows in the bench CSV"
+grep -Eq "^field +\(GPU2\) +[0-9.]+ \[[0-9.]+x\] .* 0\.17 \[90x\]" "$work/bench.txt" || fail "bench field row beside the paper's GPU2"
+grep -Eq "^field: times faster than the paper's GPU2 n=128 [0-9.]+x$" "$work/bench.txt" || fail "bench: field against GPU2"
+[ "$(grep -c '^' "$work/bench.csv")" -eq 9 ] || fail "expected a header and 8 rows in the bench CSV"
 
 "$plot" "$work/sweep.json" "$work/bench.json" > /dev/null
 [ -s "$work/sweep_heatmap.png" ] && [ -s "$work/bench_bench.png" ] || fail "plot_sweep.py wrote no PNG"

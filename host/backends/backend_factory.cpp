@@ -1,7 +1,10 @@
 #include "backends/backend_factory.hpp"
 
+#include <algorithm>
+
 #include "backends/device_backend.hpp"
 #include "backends/serial_backend.hpp"
+#include "backends/serial_field_backend.hpp"
 #include "common/user_error.hpp"
 #include "tuning/tuning_store.hpp"
 
@@ -43,24 +46,37 @@ void apply_tuned_sizes(const std::filesystem::path& file, const DeviceDescriptio
 
 }  // namespace
 
-bool is_device_backend(const std::string& name) { return name == "naive" || name == "tiled"; }
+const std::vector<std::string>& backend_names() {
+  static const std::vector<std::string> names = {"serial", "serial-field", "naive", "tiled", "field"};
+  return names;
+}
+
+bool is_device_backend(const std::string& name) { return name == "naive" || name == "tiled" || name == "field"; }
+
+bool is_field_backend(const std::string& name) { return name == "field" || name == "serial-field"; }
 
 CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& mesh, std::size_t particles) {
   CheckedBackend checked;
   checked.name = request.name;
-  if (request.name == "serial") {
+  if (std::find(backend_names().begin(), backend_names().end(), request.name) == backend_names().end()) {
+    throw UserError("unknown backend '" + request.name + "' (choose serial, serial-field, naive, tiled or field)");
+  }
+  if ((request.weights || request.rebuild_every) && !is_field_backend(request.name)) {
+    throw UserError("--weights and --rebuild-every apply to the field and serial-field backends, not " + request.name);
+  }
+  if (request.weights) checked.weights = parse_weight_format(*request.weights);
+  checked.rebuild_every = request.rebuild_every.value_or(kDefaultRebuildEvery);
+  if (!is_device_backend(request.name)) {
     if (request.work_group_size || request.tile_size) {
-      throw UserError("--wg and --tile apply to the naive and tiled backends, not serial");
+      throw UserError("--wg and --tile apply to the device backends (naive, tiled, field), not " + request.name);
     }
     return checked;
   }
-  if (!is_device_backend(request.name)) {
-    throw UserError("unknown backend '" + request.name + "' (choose serial, naive or tiled)");
-  }
   const KernelKind kind = parse_kernel_kind(request.name);
-  if (kind == KernelKind::naive && request.tile_size) throw UserError("--tile applies to the tiled backend only");
+  if (kind != KernelKind::tiled && request.tile_size) throw UserError("--tile applies to the tiled backend only");
   checked.device = select_device(request.device);
   UpdateKernel kernel = default_update_kernel(kind, mesh.max_valence() + 1, checked.device->max_work_group_size);
+  kernel.weights = checked.weights;
   checked.sizes_from = "built-in default";
   if (request.work_group_size || request.tile_size) {
     if (request.work_group_size) kernel.work_group_size = *request.work_group_size;
@@ -79,8 +95,11 @@ CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& m
 
 std::unique_ptr<ParticleBackend> make_backend(const CheckedBackend& checked, const SurfaceMesh& mesh,
                                               const DistanceTable& distances, const EnergyParams& energy) {
+  if (checked.name == "serial-field") {
+    return std::make_unique<SerialFieldBackend>(mesh, distances, energy, checked.weights, checked.rebuild_every);
+  }
   if (!checked.device) return std::make_unique<SerialBackend>(mesh, distances, energy);
-  return std::make_unique<DeviceBackend>(*checked.device, mesh, distances, energy, *checked.kernel);
+  return make_device_backend(*checked.device, mesh, distances, energy, *checked.kernel, checked.rebuild_every);
 }
 
 }  // namespace meshparticles

@@ -1,5 +1,5 @@
 #pragma once
-// --backend serial|naive|tiled to a ready ParticleBackend.
+// --backend serial|serial-field|naive|tiled|field to a ready ParticleBackend.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -13,10 +13,12 @@
 namespace meshparticles {
 
 struct BackendRequest {
-  std::string name = "tiled";  // serial, naive, tiled
+  std::string name = "tiled";  // serial, serial-field, naive, tiled, field
   std::string device;          // --device (device backends)
   std::optional<std::size_t> work_group_size;  // --wg
   std::optional<std::size_t> tile_size;        // --tile (tiled)
+  std::optional<std::string> weights;          // --weights float|half (field backends)
+  std::optional<std::size_t> rebuild_every;    // --rebuild-every (field backends)
   // Where sizes tuned by `sweep --save` are looked up when neither --wg nor
   // --tile is given; none: use the built-in defaults.
   std::optional<std::filesystem::path> tuning_file;
@@ -32,9 +34,17 @@ struct CheckedBackend {
   std::string sizes_from;
   std::string sizes_note;  // details: the tuning entry used, or why none was
   bool tuning_refused = false;  // the tuning file was unreadable or its sizes refused: worth a warning
+  WeightFormat weights = WeightFormat::float32;  // field backends
+  std::size_t rebuild_every = 0;                 // field backends; 0: never
 };
 
-bool is_device_backend(const std::string& name);
+// The default of --rebuild-every: never, since the fixed-point field does not
+// drift (docs/ALGORITHM.md, "The field backend").
+inline constexpr std::size_t kDefaultRebuildEvery = 0;
+
+bool is_device_backend(const std::string& name);  // naive, tiled, field
+bool is_field_backend(const std::string& name);   // field, serial-field
+const std::vector<std::string>& backend_names();
 
 // Throws UserError for an unknown name, sizes given to a backend that has
 // none, and sizes the device refuses. `particles` picks the tuning entry.

@@ -1,40 +1,28 @@
 #include "backends/device_backend.hpp"
 
-#include "geodesics/memory_guard.hpp"
+#include <algorithm>
+
+#include "backends/direct_sum_backend.hpp"
+#include "backends/field_backend.hpp"
 
 namespace meshparticles {
 
 void check_device_limits(const DeviceDescription& device, const UpdateKernel& kernel) {
   if (kernel.work_group_size > device.max_work_group_size) {
     throw LimitExceeded("--wg " + std::to_string(kernel.work_group_size) + " exceeds the maximum work-group size " +
-                    std::to_string(device.max_work_group_size) + " of " + device.name);
+                        std::to_string(device.max_work_group_size) + " of " + device.name);
   }
   if (kernel.local_memory_bytes() > device.local_memory_bytes) {
-    throw LimitExceeded("the " + kernel_kind_name(kernel.kind) + " kernel with --wg " +
-                    std::to_string(kernel.work_group_size) +
-                    (kernel.kind == KernelKind::tiled ? " --tile " + std::to_string(kernel.tile_size) : "") +
-                    " needs " + std::to_string(kernel.local_memory_bytes()) + " bytes of local memory; " +
-                    device.name + " has " + std::to_string(device.local_memory_bytes));
+    throw LimitExceeded("the " + kernel_kind_name(kernel.kind) + " kernel with " + kernel.sizes_text() + " needs " +
+                        std::to_string(kernel.local_memory_bytes()) + " bytes of local memory; " + device.name +
+                        " has " + std::to_string(device.local_memory_bytes));
   }
 }
 
 namespace {
 
-void check_kernel_limits(const cl::Kernel& update, const cl::Device& device, const UpdateKernel& kernel) {
-  const auto kernel_limit = update.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device);
-  if (kernel.work_group_size > kernel_limit) {
-    throw LimitExceeded("--wg " + std::to_string(kernel.work_group_size) + " exceeds the " +
-                    kernel_kind_name(kernel.kind) + " kernel's work-group limit " + std::to_string(kernel_limit) +
-                    " on this device (CL_KERNEL_WORK_GROUP_SIZE)");
-  }
-}
-
 cl_uint particles_of_color(cl_uint particle_count, cl_uint color, cl_uint colors) {
   return color < particle_count ? (particle_count - color + colors - 1) / colors : 0;
-}
-
-void require_device_scheme(Scheme scheme) {
-  if (scheme == Scheme::sequential) throw UserError("the " + scheme_name(scheme) + " scheme runs only on --backend serial");
 }
 
 double event_milliseconds(const cl::Event& event) {
@@ -42,68 +30,62 @@ double event_milliseconds(const cl::Event& event) {
                 event.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-6;
 }
 
+double total_milliseconds(const std::vector<cl::Event>& events) {
+  double milliseconds = 0;
+  for (const auto& event : events) milliseconds += event_milliseconds(event);
+  return milliseconds;
+}
+
 }  // namespace
 
-DeviceBackend::DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const DistanceTable& distances,
-                             const EnergyParams& energy, const UpdateKernel& kernel)
-    : device_name_(device.name), kernel_(kernel), vertex_count_(cl_uint(mesh.vertex_count())) {
+DeviceBackend::DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel)
+    : kernel_(kernel), vertex_count_(cl_uint(mesh.vertex_count())), device_name_(device.name) {
   check_device_limits(device, kernel);
-  check_distance_table_fits(mesh.vertex_count(), device.max_allocation_bytes,
-                            "the largest buffer " + device.name + " allows");
   context_ = cl::Context(device.device);
   queue_ = cl::CommandQueue(context_, device.device, CL_QUEUE_PROFILING_ENABLE);
-  const cl::Program program = build_program(context_, device.device,
-                                            {kernel.file(), "apply_moves.cl", "particle_energies.cl"},
-                                            kernel.defines(energy.potential));
-  update_ = cl::Kernel(program, kernel.function().c_str());
-  claim_targets_ = cl::Kernel(program, "claim_targets");
-  apply_moves_ = cl::Kernel(program, "apply_moves");
-  particle_energies_ = cl::Kernel(program, "particle_energies");
-  check_kernel_limits(update_, device.device, kernel);
-
-  auto read_only = [&](const auto& values) {
-    using Value = typename std::decay_t<decltype(values)>::value_type;
-    return cl::Buffer(context_, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, values.size() * sizeof(Value),
-                      const_cast<Value*>(values.data()));
+  auto read_only = [&](const std::vector<VertexId>& values) {
+    return cl::Buffer(context_, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, values.size() * sizeof(VertexId),
+                      const_cast<VertexId*>(values.data()));
   };
-  distances_ = read_only(distances.values());
   ring_offsets_ = read_only(mesh.ring_offsets());
   ring_neighbors_ = read_only(mesh.ring_neighbors().empty() ? std::vector<VertexId>{0} : mesh.ring_neighbors());
-  moved_count_ = cl::Buffer(context_, CL_MEM_READ_WRITE, sizeof(cl_uint));
   claims_ = cl::Buffer(context_, CL_MEM_READ_WRITE, mesh.vertex_count() * sizeof(cl_uint));
+  reset_claims();
+}
 
-  const float inv_two_sigma_sq = float(energy.inv_two_sigma_sq());
-  update_.setArg(0, distances_);
-  update_.setArg(1, vertex_count_);
-  update_.setArg(2, ring_offsets_);
-  update_.setArg(3, ring_neighbors_);
-  update_.setArg(8, inv_two_sigma_sq);
-  particle_energies_.setArg(0, distances_);
-  particle_energies_.setArg(1, vertex_count_);
-  particle_energies_.setArg(4, inv_two_sigma_sq);
+void DeviceBackend::attach_commit_kernel(const cl::Program& program) { apply_moves_ = cl::Kernel(program, "apply_moves"); }
+
+void DeviceBackend::check_kernel_limits(const cl::Kernel& update, const DeviceDescription& device) const {
+  const auto kernel_limit = update.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device.device);
+  if (kernel_.work_group_size > kernel_limit) {
+    throw LimitExceeded("--wg " + std::to_string(kernel_.work_group_size) + " exceeds the " +
+                        kernel_kind_name(kernel_.kind) + " kernel's work-group limit " +
+                        std::to_string(kernel_limit) + " on this device (CL_KERNEL_WORK_GROUP_SIZE)");
+  }
+}
+
+void DeviceBackend::reset_claims() {
+  queue_.enqueueFillBuffer(claims_, CL_UINT_MAX, 0, vertex_count_ * sizeof(cl_uint));
 }
 
 void DeviceBackend::set_positions(std::span<const VertexId> positions) {
-  if (positions.size() != particle_count_) {
+  const bool resized = positions.size() != particle_count_;
+  if (resized) {
     particle_count_ = cl_uint(positions.size());
-    positions_ = cl::Buffer(context_, CL_MEM_READ_WRITE, positions.size() * sizeof(cl_uint));
-    chosen_ = cl::Buffer(context_, CL_MEM_READ_WRITE, positions.size() * sizeof(cl_uint));
-    energies_ = cl::Buffer(context_, CL_MEM_READ_WRITE, positions.size() * sizeof(cl_float));
-    update_.setArg(4, positions_);
-    update_.setArg(5, particle_count_);
-    update_.setArg(9, chosen_);
-    for (cl::Kernel* commit : {&claim_targets_, &apply_moves_}) {
-      commit->setArg(0, positions_);
-      commit->setArg(1, chosen_);
-      commit->setArg(2, particle_count_);
-      commit->setArg(5, claims_);
-    }
-    apply_moves_.setArg(6, moved_count_);
-    particle_energies_.setArg(2, positions_);
-    particle_energies_.setArg(3, particle_count_);
-    particle_energies_.setArg(5, energies_);
+    const std::size_t slots = std::max<std::size_t>(1, positions.size());
+    positions_ = cl::Buffer(context_, CL_MEM_READ_WRITE, slots * sizeof(cl_uint));
+    chosen_ = cl::Buffer(context_, CL_MEM_READ_WRITE, slots * sizeof(cl_uint));
+    move_counts_ = cl::Buffer(context_, CL_MEM_READ_WRITE, slots * sizeof(cl_uint));  // at most n colours move
+    moves_ = cl::Buffer(context_, CL_MEM_READ_WRITE, slots * sizeof(cl_uint2));
+    apply_moves_.setArg(0, positions_);
+    apply_moves_.setArg(1, chosen_);
+    apply_moves_.setArg(2, particle_count_);
+    apply_moves_.setArg(5, claims_);
+    apply_moves_.setArg(6, move_counts_);
+    apply_moves_.setArg(7, moves_);
   }
   queue_.enqueueWriteBuffer(positions_, CL_TRUE, 0, positions.size() * sizeof(cl_uint), positions.data());
+  positions_changed(resized);
 }
 
 std::vector<VertexId> DeviceBackend::last_choices() {
@@ -118,70 +100,61 @@ std::vector<VertexId> DeviceBackend::positions() {
   return positions;
 }
 
+cl_uint DeviceBackend::group_count(Scheme scheme, unsigned colors) const {
+  return scheme == Scheme::sequential ? std::max<cl_uint>(1, particle_count_) : sub_steps(scheme, colors);
+}
+
 IterationStats DeviceBackend::iterate(Scheme scheme, unsigned colors) {
-  require_device_scheme(scheme);
-  const cl_uint groups = sub_steps(scheme, colors);
-  queue_.enqueueFillBuffer(moved_count_, cl_uint{0}, 0, sizeof(cl_uint));
-  std::vector<cl::Event> update_events;
-  for (cl_uint color = 0; color < groups; ++color) {
+  const cl_uint groups = group_count(scheme, colors);
+  const cl_uint rank_stacks = scheme == Scheme::sequential ? 0 : 1;
+  const cl_uint counted = std::min(groups, particle_count_);  // colours that hold a particle
+  if (counted > 0) queue_.enqueueFillBuffer(move_counts_, cl_uint{0}, 0, counted * sizeof(cl_uint));
+  std::vector<cl::Event> kernel_events;
+  for (cl_uint color = 0; color < counted; ++color) {
     const cl_uint particles = particles_of_color(particle_count_, color, groups);
-    if (particles == 0) continue;
-    update_events.push_back(enqueue_update(color, groups, particles));
-    queue_.enqueueFillBuffer(claims_, CL_UINT_MAX, 0, vertex_count_ * sizeof(cl_uint));
-    for (cl::Kernel* commit : {&claim_targets_, &apply_moves_}) {
-      commit->setArg(3, color);
-      commit->setArg(4, groups);
-    }
-    queue_.enqueueNDRangeKernel(claim_targets_, cl::NullRange, cl::NDRange(particles));
+    kernel_events.push_back(enqueue_update(color, groups, particles, rank_stacks));
+    apply_moves_.setArg(3, color);
+    apply_moves_.setArg(4, groups);
     queue_.enqueueNDRangeKernel(apply_moves_, cl::NullRange, cl::NDRange(particles));
+    after_commit(color, groups, kernel_events);
   }
+  after_iteration(kernel_events);
+  std::vector<cl_uint> moved(counted);
+  if (counted > 0) queue_.enqueueReadBuffer(move_counts_, CL_FALSE, 0, counted * sizeof(cl_uint), moved.data());
   IterationStats stats;
-  cl_uint moved = 0;
-  queue_.enqueueReadBuffer(moved_count_, CL_FALSE, 0, sizeof moved, &moved);
   stats.energy = total_energy();  // blocks, so `moved` has arrived too
-  stats.moved = moved;
-  double kernel_ms = 0;
-  for (const auto& event : update_events) kernel_ms += event_milliseconds(event);
-  stats.kernel_ms = kernel_ms;
+  for (const cl_uint count : moved) stats.moved += count;
+  stats.kernel_ms = total_milliseconds(kernel_events);
   return stats;
 }
 
-cl::Event DeviceBackend::enqueue_update(cl_uint color, cl_uint colors, cl_uint particles) {
-  update_.setArg(6, color);
-  update_.setArg(7, colors);
-  const std::size_t work_group = kernel_.work_group_size;
-  cl::Event event;
-  queue_.enqueueNDRangeKernel(update_, cl::NullRange, cl::NDRange(kernel_.work_groups_for(particles) * work_group),
-                              cl::NDRange(work_group), nullptr, &event);
-  return event;
-}
-
 std::vector<VertexId> DeviceBackend::synchronous_choices() {
-  enqueue_update(0, 1, particle_count_);
-  return last_choices();
+  enqueue_update(0, 1, particle_count_, 1);
+  const std::vector<VertexId> choices = last_choices();
+  reset_claims();  // no apply_moves followed to put them back
+  return choices;
 }
 
 double DeviceBackend::time_update_kernels(Scheme scheme, unsigned colors) {
-  require_device_scheme(scheme);
-  const cl_uint groups = sub_steps(scheme, colors);
+  const cl_uint groups = group_count(scheme, colors);
   std::vector<cl::Event> events;
-  for (cl_uint color = 0; color < groups; ++color) {
-    const cl_uint particles = particles_of_color(particle_count_, color, groups);
-    if (particles > 0) events.push_back(enqueue_update(color, groups, particles));
+  for (cl_uint color = 0; color < std::min(groups, particle_count_); ++color) {
+    events.push_back(enqueue_update(color, groups, particles_of_color(particle_count_, color, groups),
+                                    scheme == Scheme::sequential ? 0 : 1));
   }
+  enqueue_measured_extras(events);
+  reset_claims();
   queue_.finish();
-  double milliseconds = 0;
-  for (const auto& event : events) milliseconds += event_milliseconds(event);
-  return milliseconds;
+  return total_milliseconds(events);
 }
 
-double DeviceBackend::total_energy() {
-  std::vector<float> energies(particle_count_);
-  queue_.enqueueNDRangeKernel(particle_energies_, cl::NullRange, cl::NDRange(particle_count_));
-  queue_.enqueueReadBuffer(energies_, CL_TRUE, 0, energies.size() * sizeof(float), energies.data());
-  double sum = 0;
-  for (const float e : energies) sum += e;
-  return sum / 2;  // every pair was counted from both ends
+std::unique_ptr<DeviceBackend> make_device_backend(const DeviceDescription& device, const SurfaceMesh& mesh,
+                                                   const DistanceTable& distances, const EnergyParams& energy,
+                                                   const UpdateKernel& kernel, std::size_t rebuild_every) {
+  if (kernel.kind == KernelKind::field) {
+    return std::make_unique<FieldBackend>(device, mesh, distances, energy, kernel, rebuild_every);
+  }
+  return std::make_unique<DirectSumBackend>(device, mesh, distances, energy, kernel);
 }
 
 }  // namespace meshparticles

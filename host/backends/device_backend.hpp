@@ -1,8 +1,13 @@
 #pragma once
-// The naive and tiled OpenCL backends: one class, the kernel is the
-// difference. The distance table and the mesh's one-rings live on the device;
-// positions stay there between iterations, and only the moved count and the
-// per-particle energies come back each iteration.
+// What every OpenCL backend shares: the context and queue, the mesh's
+// one-rings, the particle positions (they stay on the device between
+// iterations) and the sub-step loop - the update kernel writes and claims
+// each particle's choice, apply_moves commits the claimed moves and lists
+// them. The subclasses differ in how a choice is computed: by direct sums
+// over all particles (naive, tiled: DirectSumBackend) or from an accumulated
+// field (FieldBackend).
+#include <memory>
+
 #include "backends/update_kernel.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/distance_table.hpp"
@@ -24,18 +29,11 @@ void check_device_limits(const DeviceDescription& device, const UpdateKernel& ke
 
 class DeviceBackend : public ParticleBackend {
  public:
-  // Refuses a work-group size or tile size the device or the compiled kernel
-  // cannot take (LimitExceeded), a table it cannot hold and a kernel that does
-  // not build (UserError).
-  DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const DistanceTable& distances,
-                const EnergyParams& energy, const UpdateKernel& kernel);
-
   std::string device_name() const override { return device_name_; }
   void set_positions(std::span<const VertexId> positions) override;
   std::vector<VertexId> positions() override;
-  // Sequential is the serial reference's alone: UserError here.
+  // Sequential runs one sub-step per particle (n launches of each kernel).
   IterationStats iterate(Scheme scheme, unsigned colors) override;
-  double total_energy() override;
 
   // The vertex each particle of the last sub-step chose, before collisions
   // were resolved (for tests: what the update kernel itself decided).
@@ -45,32 +43,60 @@ class DeviceBackend : public ParticleBackend {
   // particle, so repeated calls do identical work.
   // The vertex every particle chooses in one synchronous step (one launch).
   std::vector<VertexId> synchronous_choices();
-  // The update kernels of one iteration of `scheme`: device milliseconds
-  // from profiling events.
+  // The update kernels of one iteration of `scheme`, plus what the backend
+  // measures with them (field: one rebuild of F); device milliseconds from
+  // profiling events.
   double time_update_kernels(Scheme scheme, unsigned colors);
 
- private:
-  // Enqueues the update kernel for the particles of `color`.
-  cl::Event enqueue_update(cl_uint color, cl_uint colors, cl_uint particles);
+ protected:
+  DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel);
+  // The subclass builds its program with apply_moves.cl in it and hands it
+  // over before anything runs.
+  void attach_commit_kernel(const cl::Program& program);
+  // Refuses a work-group size the compiled `update` kernel cannot take.
+  void check_kernel_limits(const cl::Kernel& update, const DeviceDescription& device) const;
 
-  std::string device_name_;
+  // The update kernel for the particles of `color` (rank_stacks 0: the
+  // sequential rule, every particle takes its best candidate).
+  virtual cl::Event enqueue_update(cl_uint color, cl_uint colors, cl_uint particles, cl_uint rank_stacks) = 0;
+  // Called after set_positions has uploaded them: `resized` when the
+  // particle count changed, so the per-particle buffers are new.
+  virtual void positions_changed(bool resized) = 0;
+  // After the moves of `color` were committed; events of kernels that
+  // belong in the iteration's kernel time.
+  virtual void after_commit(cl_uint /*color*/, cl_uint /*colors*/, std::vector<cl::Event>& /*events*/) {}
+  // After a whole iteration (field: the periodic rebuild).
+  virtual void after_iteration(std::vector<cl::Event>& /*events*/) {}
+  // What time_update_kernels measures beside the update kernels.
+  virtual void enqueue_measured_extras(std::vector<cl::Event>& /*events*/) {}
+
+  cl::Context context_;
+  cl::CommandQueue queue_;
   UpdateKernel kernel_;
   cl_uint vertex_count_;
   cl_uint particle_count_ = 0;
-  cl::Context context_;
-  cl::CommandQueue queue_;
-  cl::Kernel update_;
-  cl::Kernel claim_targets_;
-  cl::Kernel apply_moves_;
-  cl::Kernel particle_energies_;
-  cl::Buffer distances_;
   cl::Buffer ring_offsets_;
   cl::Buffer ring_neighbors_;
   cl::Buffer positions_;
   cl::Buffer chosen_;
-  cl::Buffer claims_;  // per vertex: the smallest index that chose it
-  cl::Buffer moved_count_;
-  cl::Buffer energies_;
+  cl::Buffer claims_;       // per vertex: the smallest index that chose it (claims.h)
+  cl::Buffer move_counts_;  // per colour of the iteration
+  cl::Buffer moves_;        // per colour: (from, to) of each committed move
+
+ private:
+  cl_uint group_count(Scheme scheme, unsigned colors) const;
+  void reset_claims();
+
+  std::string device_name_;
+  cl::Kernel apply_moves_;
 };
+
+// The backend for `kernel.kind`: naive and tiled sum directly, field keeps a
+// field (rebuilt from scratch every `rebuild_every` iterations; 0: never).
+// Throws LimitExceeded for sizes the device refuses, UserError for a table it
+// cannot hold or a kernel that does not build.
+std::unique_ptr<DeviceBackend> make_device_backend(const DeviceDescription& device, const SurfaceMesh& mesh,
+                                                   const DistanceTable& distances, const EnergyParams& energy,
+                                                   const UpdateKernel& kernel, std::size_t rebuild_every = 0);
 
 }  // namespace meshparticles

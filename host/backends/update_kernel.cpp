@@ -9,10 +9,18 @@ namespace meshparticles {
 KernelKind parse_kernel_kind(const std::string& name) {
   if (name == "naive") return KernelKind::naive;
   if (name == "tiled") return KernelKind::tiled;
-  throw UserError("unknown kernel '" + name + "' (choose naive or tiled)");
+  if (name == "field") return KernelKind::field;
+  throw UserError("unknown kernel '" + name + "' (choose naive, tiled or field)");
 }
 
-std::string kernel_kind_name(KernelKind kind) { return kind == KernelKind::naive ? "naive" : "tiled"; }
+std::string kernel_kind_name(KernelKind kind) {
+  switch (kind) {
+    case KernelKind::naive: return "naive";
+    case KernelKind::tiled: return "tiled";
+    case KernelKind::field: return "field";
+  }
+  return "?";
+}
 
 std::string UpdateKernel::file() const { return function() + ".cl"; }
 
@@ -21,6 +29,7 @@ std::string UpdateKernel::function() const { return kernel_kind_name(kind) + "_u
 // Mirrors PARTICLES_PER_GROUP in kernels/tiled_update.cl.
 std::size_t UpdateKernel::particles_per_group() const {
   if (kind == KernelKind::naive) return 1;
+  if (kind == KernelKind::field) return work_group_size;
   return work_group_size >= candidate_slots ? work_group_size / candidate_slots : 1;
 }
 
@@ -30,9 +39,11 @@ std::size_t UpdateKernel::work_groups_for(std::size_t particles) const {
 }
 
 // The __local arrays of each kernel, in bytes: per candidate slot a float
-// energy and a byte of occupancy; per particle a stack rank; the tile.
+// energy and a byte of occupancy; per particle a stack rank (not field); the
+// tile.
 std::size_t UpdateKernel::local_memory_bytes() const {
   const std::size_t particles = particles_per_group();
+  if (kind == KernelKind::field) return 5 * particles * candidate_slots;
   const std::size_t slots = 5 * particles * candidate_slots + 4 * particles;
   return kind == KernelKind::naive ? slots : slots + 4 * tile_size;
 }
@@ -42,12 +53,14 @@ KernelDefines UpdateKernel::defines(Potential potential) const {
                         {"CANDIDATE_SLOTS", (long long)candidate_slots},
                         {"POTENTIAL_GAUSS", potential == Potential::gauss ? 1 : 0}};
   if (kind == KernelKind::tiled) defines["TILE_SIZE"] = (long long)tile_size;
+  if (kind == KernelKind::field) defines["WEIGHTS_HALF"] = weights == WeightFormat::half ? 1 : 0;
   return defines;
 }
 
 std::string UpdateKernel::sizes_text() const {
   std::string text = "wg " + std::to_string(work_group_size);
   if (kind == KernelKind::tiled) text += " tile " + std::to_string(tile_size);
+  if (kind == KernelKind::field && weights == WeightFormat::half) text += " half";
   return text;
 }
 
@@ -58,11 +71,13 @@ UpdateKernel default_update_kernel(KernelKind kind, std::size_t candidate_slots,
   if (kind == KernelKind::naive) {
     // One work-item per candidate, rounded up to a multiple of 8.
     kernel.work_group_size = (candidate_slots + 7) / 8 * 8;
-  } else {
+  } else if (kind == KernelKind::tiled) {
     // The best or near-best of repeated sweeps on PoCL at sphere/1024
     // (docs/PERFORMANCE.md); `sweep --save` finds a device's own.
     kernel.work_group_size = 32;
     kernel.tile_size = 64;
+  } else {
+    kernel.work_group_size = 64;
   }
   kernel.work_group_size = std::max<std::size_t>(1, std::min(kernel.work_group_size, device_max_work_group));
   return kernel;

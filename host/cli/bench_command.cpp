@@ -1,5 +1,5 @@
 // `meshparticles bench`: the paper's Tables 1 and 2 on the committed meshes,
-// our serial, naive and tiled rows beside the paper's figures.
+// our serial, naive, tiled and field rows beside the paper's figures.
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -23,7 +23,7 @@ namespace {
 
 struct BenchOptions {
   std::vector<std::string> cases;  // "mesh:n"; default: the paper's
-  std::vector<std::string> backends = {"serial", "naive", "tiled"};
+  std::vector<std::string> backends = BenchSettings().backends;
   std::size_t iterations = 20;
   std::string scheme = "colored";
   unsigned colors = kDefaultColors;
@@ -148,7 +148,7 @@ void run_bench(const BenchOptions& options, bool colors_given) {
 void add_bench_command(CLI::App& app) {
   auto options = std::make_shared<BenchOptions>();
   CLI::App* bench = app.add_subcommand(
-      "bench", "The paper's Tables 1 and 2: time per iteration of serial, naive and tiled beside the paper's");
+      "bench", "The paper's Tables 1 and 2: time per iteration of serial, naive, tiled and field beside the paper's");
   bench->add_option("--case", options->cases,
                     "MESH:N, comma-separated (default: the paper's sphere 128..1024, torus 128..512, "
                     "atrium 256..1024)")
@@ -157,7 +157,7 @@ void add_bench_command(CLI::App& app) {
   bench->add_option("--backend", options->backends, "Rows, comma-separated")
       ->delimiter(',')
       ->allow_extra_args(false)
-      ->check(CLI::IsMember({"serial", "naive", "tiled"}))
+      ->check(CLI::IsMember(backend_names()))
       ->capture_default_str();
   bench->add_option("--iterations", options->iterations, "Timed iterations per row (the paper: 1000)")
       ->capture_default_str();

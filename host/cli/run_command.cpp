@@ -24,7 +24,7 @@ struct RunOptions {
   std::size_t particles = 1024;
   std::size_t iterations = 500;
   BackendRequest backend;
-  std::string scheme;  // default: sequential on serial, colored on devices
+  std::string scheme;  // default: sequential on the serial backends, colored on devices
   std::optional<unsigned> colors;
   std::string init = "farthest";
   std::optional<std::size_t> start_vertex;
@@ -39,17 +39,13 @@ struct RunOptions {
 
 Scheme chosen_scheme(const RunOptions& options) {
   if (!options.scheme.empty()) return parse_scheme(options.scheme);
-  return options.backend.name == "serial" ? Scheme::sequential : Scheme::colored;
+  return is_device_backend(options.backend.name) ? Scheme::colored : Scheme::sequential;
 }
 
 void check_arguments(const RunOptions& options, const SurfaceMesh& mesh, Scheme scheme, Init init) {
   if (options.particles > mesh.vertex_count()) {
     throw UserError("-n " + std::to_string(options.particles) + " is more particles than the " +
                     std::to_string(mesh.vertex_count()) + " vertices of " + options.mesh);
-  }
-  if (scheme == Scheme::sequential && is_device_backend(options.backend.name)) {
-    throw UserError("--scheme sequential is the paper's CPU loop and runs only on --backend serial "
-                    "(devices run synchronous or colored)");
   }
   if (options.colors && scheme != Scheme::colored) {
     throw UserError("--colors applies to --scheme colored, not " + scheme_name(scheme));
@@ -112,6 +108,10 @@ void run_run(RunOptions options) {
                            {"geodesic", options.geodesic},
                            {"out", options.out}};
   if (scheme == Scheme::colored) params["colors"] = colors;
+  if (is_field_backend(options.backend.name)) {
+    params["weights"] = weight_format_name(checked.weights);
+    params["rebuild_every"] = checked.rebuild_every;
+  }
   if (start_vertex) params["start_vertex"] = *options.start_vertex;
   if (checked.kernel) {
     params["wg"] = checked.kernel->work_group_size;
@@ -135,11 +135,14 @@ void add_run_command(CLI::App& app) {
       ->capture_default_str();
   run->add_option("--iterations", options->iterations, "Stop after this many iterations (or when none moves)")
       ->capture_default_str();
-  run->add_option("--backend", options->backend.name, "serial (the reference), naive or tiled (OpenCL)")
-      ->check(CLI::IsMember({"serial", "naive", "tiled"}))
+  run->add_option("--backend", options->backend.name,
+                  "serial (the reference), serial-field (the field method in plain C++), "
+                  "naive, tiled or field (OpenCL)")
+      ->check(CLI::IsMember(backend_names()))
       ->capture_default_str();
   run->add_option("--scheme", options->scheme,
-                  "sequential (serial only), synchronous or colored (default: sequential on serial, colored on devices)")
+                  "sequential, synchronous or colored (default: sequential on serial and serial-field, colored on "
+                  "the OpenCL backends)")
       ->check(CLI::IsMember({"sequential", "synchronous", "colored"}));
   run->add_option("--colors", options->colors, "Groups of the colored scheme (default " + std::to_string(kDefaultColors) + ")")->check(CLI::PositiveNumber);
   run->add_option("--init", options->init, "Start: v0 (all on one vertex), random, farthest (farthest-point sampling)")
@@ -160,6 +163,12 @@ void add_run_command(CLI::App& app) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
   run->add_option("--tile", options->backend.tile_size, "Tile size (particles staged in local memory; tiled only)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24));
+  run->add_option("--weights", options->backend.weights,
+                  "Weight table of the field backends: float (float32, default) or half (half the bytes)")
+      ->check(CLI::IsMember({"float", "half"}));
+  run->add_option("--rebuild-every", options->backend.rebuild_every,
+                  "Field backends: rebuild the field from scratch every N iterations (default 0: never; it is "
+                  "exact and does not drift)");
   run->add_option("--out", options->out, "Output directory")->capture_default_str();
   run->add_option("--tuning-file", options->tuning_file,
                   "Sizes saved by `sweep --save`, used when --wg and --tile are absent "

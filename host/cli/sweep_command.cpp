@@ -22,7 +22,7 @@ namespace {
 struct SweepOptions {
   std::string mesh;
   std::size_t particles = 1024;
-  std::vector<std::string> kernels = {"naive", "tiled"};
+  std::vector<std::string> kernels = {"naive", "tiled", "field"};
   std::vector<std::size_t> work_group_sizes = {8, 16, 32, 64, 128, 256};
   std::vector<std::size_t> tile_sizes = {16, 32, 64, 128, 256, 512, 1024};
   bool tiles_given = false;
@@ -54,7 +54,7 @@ std::vector<T> unique_in_order(const std::vector<T>& values) {
 void save_best(const SweepOptions& options, const std::filesystem::path& file, TuningStore store,
                const DeviceDescription& device, const std::vector<SweepResult>& results) {
   bool saved = false;
-  for (const KernelKind kind : {KernelKind::naive, KernelKind::tiled}) {
+  for (const KernelKind kind : {KernelKind::naive, KernelKind::tiled, KernelKind::field}) {
     const SweepResult* best = best_result(results, kind);
     if (!best) continue;
     store.put({device.name, kind, size_class(options.particles), best->kernel.work_group_size,
@@ -136,7 +136,7 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("--kernel", options->kernels, "Kernels to sweep, comma-separated")
       ->delimiter(',')
       ->allow_extra_args(false)
-      ->check(CLI::IsMember({"naive", "tiled"}))
+      ->check(CLI::IsMember({"naive", "tiled", "field"}))
       ->capture_default_str();
   sweep->add_option("--wg", options->work_group_sizes, "Work-group sizes, comma-separated")
       ->delimiter(',')

@@ -28,16 +28,19 @@ std::string raw_kernel_file(const std::string& file_name) {
 
 }  // namespace
 
-std::string kernel_source(const std::string& file_name) {
-  // One level of quoted includes is all the kernels use; headers guard
-  // themselves against being included twice.
+namespace {
+
+// Quoted includes are pasted in place, headers within headers too; the
+// headers guard themselves against being included twice.
+std::string expand_includes(const std::string& file_name, int depth) {
+  if (depth > 8) throw UserError("kernel includes nest too deep at " + file_name);
   std::istringstream lines(raw_kernel_file(file_name));
   std::string result, line;
   const std::string directive = "#include \"";
   while (std::getline(lines, line)) {
     if (line.rfind(directive, 0) == 0) {
       const std::string header = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
-      result += raw_kernel_file(header);
+      result += expand_includes(header, depth + 1);
     } else {
       result += line;
     }
@@ -45,5 +48,9 @@ std::string kernel_source(const std::string& file_name) {
   }
   return result;
 }
+
+}  // namespace
+
+std::string kernel_source(const std::string& file_name) { return expand_includes(file_name, 0); }
 
 }  // namespace meshparticles

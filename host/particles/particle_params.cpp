@@ -26,6 +26,14 @@ Init parse_init(const std::string& name) {
   throw UserError("unknown start '" + name + "' (choose v0, random or farthest)");
 }
 
+WeightFormat parse_weight_format(const std::string& name) {
+  if (name == "float") return WeightFormat::float32;
+  if (name == "half") return WeightFormat::half;
+  throw UserError("unknown weight format '" + name + "' (choose float or half)");
+}
+
+std::string weight_format_name(WeightFormat format) { return format == WeightFormat::float32 ? "float" : "half"; }
+
 std::string potential_name(Potential potential) { return potential == Potential::exp ? "exp" : "gauss"; }
 
 std::string scheme_name(Scheme scheme) {

@@ -9,6 +9,8 @@ namespace meshparticles {
 enum class Potential { exp, gauss };
 enum class Scheme { sequential, synchronous, colored };
 enum class Init { v0, random, farthest };
+// How the field backends store the weight table W = w(d).
+enum class WeightFormat { float32, half };
 
 Potential parse_potential(const std::string& name);
 Scheme parse_scheme(const std::string& name);
@@ -16,6 +18,8 @@ Init parse_init(const std::string& name);
 std::string potential_name(Potential potential);
 std::string scheme_name(Scheme scheme);
 std::string init_name(Init init);
+WeightFormat parse_weight_format(const std::string& name);  // "float" | "half"
+std::string weight_format_name(WeightFormat format);
 
 // Groups of the colored scheme when --colors is absent: the smallest K that
 // converged like the sequential loop on sphere/1024 (docs/ALGORITHM.md).

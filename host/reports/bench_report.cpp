@@ -14,9 +14,9 @@ namespace {
 std::optional<double> paper_ms(const BenchCase& bench, const std::string& backend) {
   const PaperFigures* figures = paper_figures_for(bench.mesh, bench.particles);
   if (!figures) return std::nullopt;
-  if (backend == "serial") return figures->cpu_ms;
+  if (backend == "serial" || backend == "serial-field") return figures->cpu_ms;
   if (backend == "naive") return figures->naive_ms;
-  return figures->tiled_ms;
+  return figures->tiled_ms;  // tiled, and field beside the paper's fastest
 }
 
 const BenchRow* row_of(const BenchCase& bench, const std::string& backend) {
@@ -43,7 +43,37 @@ std::string speedup_text(std::optional<double> speedup) {
 }
 
 std::string paper_label(const std::string& backend) {
-  return backend == "serial" ? "CPU" : backend == "naive" ? "GPU1" : "GPU2";
+  if (backend == "serial" || backend == "serial-field") return "CPU";
+  return backend == "naive" ? "GPU1" : "GPU2";
+}
+
+// How many times faster than the paper's GPU2 (tiled, GTX 260) a row is.
+std::optional<double> versus_paper_gpu2(const BenchCase& bench, const BenchRow& row) {
+  const PaperFigures* figures = paper_figures_for(bench.mesh, bench.particles);
+  if (!figures || !figures->tiled_ms) return std::nullopt;
+  return *figures->tiled_ms / row.mean_ms;
+}
+
+// For rows whose work follows the moves: "field: 4.1x the paper's GPU2 at
+// n=1024; moved per iteration n=128 12, ..." (one line per backend).
+std::string field_lines(const std::vector<const BenchCase*>& columns, const std::vector<std::string>& backends) {
+  std::string text;
+  for (const std::string& backend : backends) {
+    if (backend != "field" && backend != "serial-field") continue;
+    std::string versus, moved;
+    for (const BenchCase* bench : columns) {
+      const BenchRow* row = row_of(*bench, backend);
+      if (!row) continue;
+      const std::string n = "n=" + std::to_string(bench->particles);
+      if (const auto ratio = versus_paper_gpu2(*bench, *row)) {
+        versus += (versus.empty() ? "" : ", ") + n + " " + format_number("%.1fx", *ratio);
+      }
+      moved += (moved.empty() ? "" : ", ") + n + " " + format_number("%.0f", row->moved_mean);
+    }
+    text += backend + ": particles moved per timed iteration " + moved + "\n";
+    if (!versus.empty()) text += backend + ": times faster than the paper's GPU2 " + versus + "\n";
+  }
+  return text;
 }
 
 // The sizes each device row ran with in one table, e.g. "sizes: tiled wg 64
@@ -67,10 +97,11 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
                          const std::vector<BenchCase>& cases) {
   std::string text = "bench: ms per iteration, mean of " + std::to_string(settings.iterations) +
                      " iterations (the paper: 1000), [speed-up over the serial row of the same table]\n";
-  text += "ours: serial = the paper's CPU loop (sequential, 1 thread, double); naive and tiled on " + device_name +
+  text += "ours: serial = the paper's CPU loop (sequential, 1 thread, double); device rows on " + device_name +
           ", scheme " + scheme_name(settings.device_scheme) +
           (settings.device_scheme == Scheme::colored ? " K=" + std::to_string(settings.colors) : "") +
-          "\npaper: Xeon CPU and GTX 260 (Tables 1 and 2)\n";
+          "; the first iterations from a farthest-point start\n"
+          "paper: Xeon CPU and GTX 260 (Tables 1 and 2); field rows stand beside its fastest, GPU2\n";
   std::vector<std::string> meshes;
   for (const auto& bench : cases) {
     if (std::find(meshes.begin(), meshes.end(), bench.mesh) == meshes.end()) meshes.push_back(bench.mesh);
@@ -82,7 +113,7 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
       if (bench.mesh == mesh) columns.push_back(&bench);
     }
     text += "\n" + mesh + " (" + std::to_string(columns.front()->vertices) + " vertices)\n";
-    std::snprintf(cell, sizeof cell, "%-13s", "particles");
+    std::snprintf(cell, sizeof cell, "%-19s", "particles");
     text += cell;
     for (const BenchCase* bench : columns) {
       std::snprintf(cell, sizeof cell, "  %-17s %-15s", ("n=" + std::to_string(bench->particles) + " ours").c_str(),
@@ -91,7 +122,7 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
     }
     text += "\n";
     for (const std::string& backend : settings.backends) {
-      std::snprintf(cell, sizeof cell, "%-6s (%s)%*s", backend.c_str(), paper_label(backend).c_str(),
+      std::snprintf(cell, sizeof cell, "%-12s (%s)%*s", backend.c_str(), paper_label(backend).c_str(),
                     int(4 - paper_label(backend).size()), "");
       text += cell;
       for (const BenchCase* bench : columns) {
@@ -106,6 +137,7 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
       text += "\n";
     }
     text += sizes_line(columns);
+    text += field_lines(columns, settings.backends);
   }
   return text;
 }
@@ -125,6 +157,8 @@ nlohmann::json bench_json(const std::string& device_name, const BenchSettings& s
                               {"paper_ms", nullptr},
                               {"paper_speedup", nullptr}};
       if (row.kernel_ms) entry["kernel_ms"] = *row.kernel_ms;
+      entry["moved_per_iteration"] = row.moved_mean;
+      if (const auto ratio = versus_paper_gpu2(bench, row)) entry["times_faster_than_paper_gpu2"] = *ratio;
       if (!row.sizes.empty()) {
         entry["sizes"] = row.sizes;
         entry["sizes_from"] = row.sizes_from;
@@ -148,15 +182,16 @@ void write_bench_csv(const std::filesystem::path& file, const std::string& devic
                      const BenchSettings& settings, const std::vector<BenchCase>& cases) {
   write_file_atomically(file, [&](std::ostream& out) {
     out << "device,mesh,vertices,n,backend,scheme,sizes,sizes_from,iterations,ms_per_iteration,median_ms,min_ms,"
-           "kernel_ms,speedup_vs_serial,paper_ms,paper_speedup\n";
+           "kernel_ms,moved_per_iteration,speedup_vs_serial,paper_ms,paper_speedup\n";
     auto optional = [](std::optional<double> value) { return value ? format_number("%.6g", *value) : std::string(); };
     for (const auto& bench : cases) {
       for (const auto& row : bench.rows) {
-        out << csv_field(row.backend == "serial" ? "serial" : device_name) << ',' << bench.mesh << ','
+        out << csv_field(row.kernel_ms ? device_name : "serial") << ',' << bench.mesh << ','
             << bench.vertices << ',' << bench.particles << ',' << row.backend << ',' << scheme_name(row.scheme)
             << ',' << row.sizes << ',' << row.sizes_from << ',' << settings.iterations << ','
             << format_number("%.6g", row.mean_ms) << ',' << format_number("%.6g", row.timing.median_ms) << ','
             << format_number("%.6g", row.timing.min_ms) << ',' << optional(row.kernel_ms) << ','
+            << format_number("%.6g", row.moved_mean) << ','
             << optional(our_speedup(bench, row)) << ',' << optional(paper_ms(bench, row.backend)) << ','
             << optional(paper_speedup(bench, row.backend)) << '\n';
       }

@@ -71,14 +71,18 @@ std::string sweep_table(const DeviceDescription& device, const SweepContext& con
     text += line + result->reason + "\n";
   }
   const SweepResult* naive = best_result(results, KernelKind::naive);
-  const SweepResult* tiled = best_result(results, KernelKind::tiled);
-  for (const SweepResult* best : {naive, tiled}) {
+  for (const KernelKind kind : {KernelKind::naive, KernelKind::tiled, KernelKind::field}) {
+    const SweepResult* best = best_result(results, kind);
     if (!best) continue;
-    text += "\nbest " + kernel_kind_name(best->kernel.kind) + ": " + best->kernel.sizes_text() + ", " +
+    text += "\nbest " + kernel_kind_name(kind) + ": " + best->kernel.sizes_text() + ", " +
             format_number("%.3f", best->timing.median_ms) + " ms";
+    if (naive && kind != KernelKind::naive) {
+      text += " (" + format_number("%.2f", naive->timing.median_ms / best->timing.median_ms) + "x the best naive)";
+    }
   }
-  if (naive && tiled) {
-    text += " (" + format_number("%.2f", naive->timing.median_ms / tiled->timing.median_ms) + "x the best naive)";
+  if (best_result(results, KernelKind::field)) {
+    text += "\nfield: its update kernels plus one rebuild of F (n rows, what an iteration costs when half the "
+            "particles move)";
   }
   return text + "\n";
 }
@@ -88,7 +92,7 @@ nlohmann::json sweep_json(const DeviceDescription& device, const SweepContext& c
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& result : results) rows.push_back(row_json(result));
   nlohmann::json best = nlohmann::json::object();
-  for (const KernelKind kind : {KernelKind::naive, KernelKind::tiled}) {
+  for (const KernelKind kind : {KernelKind::naive, KernelKind::tiled, KernelKind::field}) {
     if (const SweepResult* result = best_result(results, kind)) best[kernel_kind_name(kind)] = row_json(*result);
   }
   return {{"device",

@@ -1,8 +1,9 @@
 #pragma once
 // `meshparticles bench`: average time per iteration of each backend on one
 // problem, the way the paper's Tables 1 and 2 measured it. The serial row is
-// the paper's CPU loop (sequential scheme); the device rows run the scheme a
-// `run` would, with the sizes a `run` would take (tuning file or default).
+// the paper's CPU loop (sequential scheme; serial-field too); the device rows
+// run the scheme a `run` would, with the sizes a `run` would take (tuning
+// file or default).
 #include <functional>
 #include <optional>
 #include <string>
@@ -15,7 +16,7 @@
 namespace meshparticles {
 
 struct BenchSettings {
-  std::vector<std::string> backends = {"serial", "naive", "tiled"};
+  std::vector<std::string> backends = {"serial", "naive", "tiled", "field"};
   Scheme device_scheme = Scheme::colored;
   unsigned colors = kDefaultColors;
   std::size_t iterations = 20;  // timed; the paper used 1000
@@ -23,13 +24,14 @@ struct BenchSettings {
 };
 
 struct BenchRow {
-  std::string backend;  // serial, naive, tiled
+  std::string backend;  // serial, serial-field, naive, tiled, field
   Scheme scheme = Scheme::sequential;
   std::string sizes;       // "wg 64 tile 128", empty for serial
   std::string sizes_from;  // tuning file, built-in default
   double mean_ms = 0;      // wall time per iteration, as the paper reports
   TimingSummary timing;    // the same samples' median and minimum
   std::optional<double> kernel_ms;  // update kernels per iteration (device rows), mean
+  double moved_mean = 0;            // particles moved per timed iteration, mean
 };
 
 struct BenchCase {

@@ -16,19 +16,19 @@ SweepResult measure(const DeviceDescription& device, const SurfaceMesh& mesh, co
                     const ReferenceChoices& reference, const UpdateKernel& kernel, const SweepSettings& settings) {
   SweepResult result{kernel, SweepStatus::ok, "", {}};
   try {
-    DeviceBackend backend(device, mesh, distances, energy, kernel);  // checks the limits, builds
-    backend.set_positions(positions);
-    const ChoiceVerdict verdict = reference.check(backend.synchronous_choices());
+    const auto backend = make_device_backend(device, mesh, distances, energy, kernel);  // checks the limits, builds
+    backend->set_positions(positions);
+    const ChoiceVerdict verdict = reference.check(backend->synchronous_choices());
     if (verdict.wrong > 0) {
       result.status = SweepStatus::failed;
       result.reason = std::to_string(verdict.wrong) + " of " + std::to_string(positions.size()) +
                       " choices differ from the serial reference, e.g. " + verdict.first_wrong;
       return result;
     }
-    for (std::size_t w = 0; w < settings.warmups; ++w) backend.time_update_kernels(settings.scheme, settings.colors);
+    for (std::size_t w = 0; w < settings.warmups; ++w) backend->time_update_kernels(settings.scheme, settings.colors);
     std::vector<double> samples;
     for (std::size_t r = 0; r < settings.repetitions; ++r) {
-      samples.push_back(backend.time_update_kernels(settings.scheme, settings.colors));
+      samples.push_back(backend->time_update_kernels(settings.scheme, settings.colors));
     }
     result.timing = summarize_timings(samples);
   } catch (const LimitExceeded& error) {
@@ -66,7 +66,7 @@ std::vector<UpdateKernel> sweep_configurations(const std::vector<KernelKind>& ki
       kernel.kind = kind;
       kernel.work_group_size = work_group;
       kernel.candidate_slots = candidate_slots;
-      if (kind == KernelKind::naive) {
+      if (kind != KernelKind::tiled) {
         configurations.push_back(kernel);
         continue;
       }

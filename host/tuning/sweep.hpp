@@ -31,7 +31,7 @@ struct SweepSettings {
   bool quiet = false;
 };
 
-// naive: one configuration per work-group size (tiles do not apply);
+// naive, field: one configuration per work-group size (tiles do not apply);
 // tiled: every work-group size with every tile size.
 std::vector<UpdateKernel> sweep_configurations(const std::vector<KernelKind>& kinds,
                                                const std::vector<std::size_t>& work_group_sizes,

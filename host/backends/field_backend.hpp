@@ -1,0 +1,48 @@
+#pragma once
+// The field method on the device: with F(v) = sum_i w(d(v, p_i)) over all
+// particles, a candidate's energy is E_c(v) = F(v) - w(d(v, p_c)), two reads
+// instead of a sum over n. F is built by streaming n rows of the weight table
+// W = w(d) and afterwards follows the moves: a particle moving from a to b
+// adds row b and subtracts row a, so an iteration costs in proportion to the
+// particles that moved. Contract: docs/ALGORITHM.md, "The field backend".
+#include "backends/device_backend.hpp"
+
+namespace meshparticles {
+
+class FieldBackend : public DeviceBackend {
+ public:
+  // Computes W on the device from `distances` (float32 in the distances' own
+  // buffer, or half). rebuild_every: rebuild F from scratch every that many
+  // iterations (0: never; the fixed-point field does not drift).
+  FieldBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const DistanceTable& distances,
+               const EnergyParams& energy, const UpdateKernel& kernel, std::size_t rebuild_every);
+
+  double total_energy() override;
+
+  // For tests: F(v) of every vertex in field units (2^-40), and a rebuild
+  // from the current positions.
+  std::vector<std::int64_t> field();
+  void rebuild_field();
+
+ private:
+  cl::Event enqueue_update(cl_uint color, cl_uint colors, cl_uint particles, cl_uint rank_stacks) override;
+  void positions_changed(bool resized) override;
+  void after_commit(cl_uint color, cl_uint colors, std::vector<cl::Event>& events) override;
+  void after_iteration(std::vector<cl::Event>& events) override;
+  void enqueue_measured_extras(std::vector<cl::Event>& events) override;
+  cl::Event enqueue_rebuild();
+  cl::NDRange vertex_range() const;
+
+  std::size_t rebuild_every_;
+  std::size_t iterations_ = 0;
+  cl::Kernel update_;
+  cl::Kernel rebuild_;
+  cl::Kernel apply_to_field_;
+  cl::Kernel particle_energies_;
+  cl::Buffer weights_;
+  cl::Buffer field_;      // F(v), 64-bit fixed point
+  cl::Buffer occupancy_;  // particles on each vertex
+  cl::Buffer energies_;   // per particle, fixed point
+};
+
+}  // namespace meshparticles

@@ -1,0 +1,43 @@
+// The field method's stored weights and fixed-point field: one definition for
+// every field kernel (host/particles/field_units.hpp mirrors it for the
+// serial twin). Contract: docs/ALGORITHM.md, "The field backend".
+#ifndef FIELD_H
+#define FIELD_H
+
+#include "particle_energy.h"
+
+// The weight table W[u][v] = w(d(u, v)), row-major, V x V: float32, or half
+// precision (1: half the bytes streamed). Half values are only read and
+// written through vload_half / vstore_half, which need no cl_khr_fp16.
+#ifndef WEIGHTS_HALF
+#define WEIGHTS_HALF 0
+#endif
+
+#if WEIGHTS_HALF
+typedef half weight_t;
+inline float stored_weight(__global const half* weights, ulong index) { return vload_half(index, weights); }
+inline float8 stored_weights8(__global const half* weights, ulong index) { return vload_half8(0, weights + index); }
+#else
+typedef float weight_t;
+inline float stored_weight(__global const float* weights, ulong index) { return weights[index]; }
+inline float8 stored_weights8(__global const float* weights, ulong index) { return vload8(0, weights + index); }
+#endif
+
+// F(v) = sum_i W[p_i][v] is kept in 64-bit integers counting units of 2^-40.
+// Integer sums are exact: adding row b and subtracting row a when a particle
+// moves from a to b leaves exactly what a rebuild would give, whatever the
+// order of the additions, and E_c(v) = F(v) - W[p_c][v] subtracts exactly
+// even where particle c's own weight dominates F. A weight is truncated to
+// whole units (weights below 2^-40 count as zero; truncation, not rounding,
+// because it is one instruction on every device). F <= n * 2^40 < 2^63
+// holds for n < 2^23 (the host checks).
+#define FIELD_UNITS_PER_WEIGHT 0x1p40f
+
+inline long field_units(float weight) { return convert_long(weight * FIELD_UNITS_PER_WEIGHT); }
+inline long8 field_units8(float8 weights) { return convert_long8(weights * FIELD_UNITS_PER_WEIGHT); }
+
+// An energy in field units as the float the candidate rule compares: one
+// rounding, to nearest.
+inline float field_energy(long units) { return convert_float(units) * (1.0f / FIELD_UNITS_PER_WEIGHT); }
+
+#endif

@@ -1,0 +1,139 @@
+// What is particular to the field backends (device and serial twin): the
+// fixed-point field is exact, so incremental updates over 1,000 iterations
+// leave exactly what a rebuild gives and stay within 1e-5 of the field
+// summed in double from the distance table; rebuilding changes nothing; the
+// half-precision table gives the same run on both twins.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "backends/field_backend.hpp"
+#include "backends/serial_field_backend.hpp"
+#include "particle_test_support.hpp"
+#include "particles/energy.hpp"
+#include "particles/field_units.hpp"
+#include "particles/initial_placement.hpp"
+#include "particles/particle_run.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+FieldBackend& as_field(DeviceBackend& backend) { return dynamic_cast<FieldBackend&>(backend); }
+
+// F(v) summed in double straight from the distances: the field's meaning.
+std::vector<double> exact_field(const MeshWithDistances& m, const EnergyParams& energy,
+                                const std::vector<VertexId>& positions) {
+  std::vector<double> field(m.mesh.vertex_count(), 0.0);
+  for (const VertexId p : positions) {
+    const auto row = m.distances.row(p);
+    for (std::size_t v = 0; v < field.size(); ++v) {
+      field[v] += pair_weight(energy.potential, row[v], energy.inv_two_sigma_sq());
+    }
+  }
+  return field;
+}
+
+void expect_close_to_exact(const std::vector<std::int64_t>& units, const std::vector<double>& exact) {
+  ASSERT_EQ(units.size(), exact.size());
+  for (std::size_t v = 0; v < units.size(); ++v) {
+    const double value = double(units[v]) / double(kFieldUnitsPerWeight);
+    ASSERT_NEAR(value, exact[v], 1e-5 * std::max(exact[v], 1e-3)) << "vertex " << v;
+  }
+}
+
+// Colored with K = 2 never settles on the torus: particles keep moving, and
+// each colour moves fewer than half the particles, so every update is
+// incremental (field_accumulate.cl rebuilds above half).
+constexpr std::size_t kParticles = 200;
+constexpr std::size_t kIterations = 1000;
+
+std::size_t total_moved(const RunOutcome& outcome) {
+  std::size_t moved = 0;
+  for (const auto& record : outcome.trace) moved += record.moved;
+  return moved;
+}
+
+TEST(Field, DeviceIncrementalUpdatesMatchARebuildAfter1000Iterations) {
+  const MeshWithDistances m("torus.off");
+  const EnergyParams energy = m.default_energy(kParticles);
+  const auto start = place_particles(m.distances, {Init::random, kParticles, 3, std::nullopt});
+  auto backend = device_backend(m, energy, KernelKind::field, 64);
+  const RunOutcome outcome = run_particles(*backend, start, {Scheme::colored, 2, kIterations, true});
+  ASSERT_EQ(outcome.trace.size(), kIterations) << "the run settled: the test needs moves";
+  EXPECT_GT(total_moved(outcome), 5 * kIterations);
+  FieldBackend& field = as_field(*backend);
+  const std::vector<std::int64_t> incremental = field.field();
+  field.rebuild_field();
+  EXPECT_EQ(incremental, field.field());
+  expect_close_to_exact(incremental, exact_field(m, energy, outcome.positions));
+}
+
+TEST(Field, SerialTwinIncrementalUpdatesMatchARebuildAfter1000Iterations) {
+  const MeshWithDistances m("torus.off");
+  const EnergyParams energy = m.default_energy(kParticles);
+  const auto start = place_particles(m.distances, {Init::random, kParticles, 3, std::nullopt});
+  SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+  const RunOutcome outcome = run_particles(twin, start, {Scheme::colored, 2, kIterations, true});
+  ASSERT_EQ(outcome.trace.size(), kIterations);
+  EXPECT_GT(total_moved(outcome), 5 * kIterations);
+  const std::vector<std::int64_t> incremental = twin.field();
+  twin.rebuild_field();
+  EXPECT_EQ(incremental, twin.field());
+  expect_close_to_exact(incremental, exact_field(m, energy, outcome.positions));
+}
+
+// Rebuilding every iteration, and the rebuild the device does instead of an
+// update when a colour moves more than half the particles (synchronous from
+// the stacked start), give bit-identical runs. (The twins are compared with
+// themselves: the device's exp and the host's differ in the last bits of W.)
+TEST(Field, RebuildingChangesNothing) {
+  const MeshWithDistances m("patch.off");
+  const std::size_t particles = 100;
+  const EnergyParams energy = m.default_energy(particles);
+  const UpdateKernel kernel = default_update_kernel(KernelKind::field, m.mesh.max_valence() + 1, 64);
+  for (const Init init : {Init::random, Init::v0}) {
+    SCOPED_TRACE(init_name(init));
+    const auto start = place_particles(m.distances, {init, particles, 4, std::nullopt});
+    SerialFieldBackend serial_never(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+    SerialFieldBackend serial_always(m.mesh, m.distances, energy, WeightFormat::float32, 1);
+    FieldBackend device_never(select_device(""), m.mesh, m.distances, energy, kernel, 0);
+    FieldBackend device_always(select_device(""), m.mesh, m.distances, energy, kernel, 1);
+    const std::pair<ParticleBackend*, ParticleBackend*> pairs[] = {{&serial_never, &serial_always},
+                                                                   {&device_never, &device_always}};
+    for (const auto& [never, always] : pairs) {
+      const RunOutcome expected = run_particles(*never, start, {Scheme::synchronous, 1, 40, true});
+      if (init == Init::random) {  // the start this test needs to reach the device's rebuild path
+        EXPECT_GT(expected.trace.front().moved, particles / 2);
+      }
+      const RunOutcome got = run_particles(*always, start, {Scheme::synchronous, 1, 40, true});
+      EXPECT_EQ(got.positions, expected.positions);
+      ASSERT_EQ(got.trace.size(), expected.trace.size());
+      for (std::size_t i = 0; i < got.trace.size(); ++i) EXPECT_EQ(got.trace[i].energy, expected.trace[i].energy);
+    }
+    EXPECT_EQ(serial_never.field(), serial_always.field());
+    EXPECT_EQ(device_never.field(), device_always.field());
+  }
+}
+
+// The half table: both twins store the same half values, so they make the
+// same moves; and the table really is half (weights differ from float32).
+TEST(Field, HalfWeightsGiveTheSameRunOnBothTwins) {
+  const MeshWithDistances m("torus.off");
+  const EnergyParams energy = m.default_energy(kParticles);
+  const auto start = place_particles(m.distances, {Init::farthest, kParticles, 1, std::nullopt});
+  SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::half, 0);
+  auto device = device_backend(m, energy, KernelKind::field, 32, 0, WeightFormat::half);
+  const RunOutcome expected = run_particles(twin, start, {Scheme::colored, 8, 50, true});
+  const RunOutcome got = run_particles(*device, start, {Scheme::colored, 8, 50, true});
+  EXPECT_EQ(got.positions, expected.positions);
+  ASSERT_EQ(got.trace.size(), expected.trace.size());
+  for (std::size_t i = 0; i < got.trace.size(); ++i) EXPECT_EQ(got.trace[i].moved, expected.trace[i].moved);
+  SerialFieldBackend full(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+  full.set_positions(start);
+  twin.set_positions(start);
+  EXPECT_NE(full.field(), twin.field());
+  EXPECT_NEAR(full.total_energy(), twin.total_energy(), 1e-3 * full.total_energy());
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
