@@ -2,7 +2,7 @@
 # The main job from a fresh Debian 12 machine: installs what is missing,
 # builds Release into build/, then runs `meshparticles ARGS` - or, with no
 # ARGS, the main job: `meshparticles run` (the committed sphere, 1024
-# particles, the tiled kernel on the first GPU or else PoCL, output in ./out).
+# particles, the field backend on the first GPU or else PoCL, output in ./out).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 cd "$ROOT"

@@ -65,7 +65,7 @@ expect_exit(run_field_half 0 "converged" run ${TETRA} -n 2 --backend field --wei
 expect_exit(run_bad_start_vertex 2 "--start-vertex 9 is not a vertex of the surface" run ${TETRA} -n 2 --init v0 --start-vertex 9 --out ${RUN_OUT})
 expect_exit(run_unwritable_out 2 "cannot create output directory /dev/null/out" run ${TETRA} -n 2 --out /dev/null/out)
 # Whole runs on the tetrahedron: every backend, files written, summary printed.
-foreach(backend serial naive tiled)
+foreach(backend serial serial-field naive tiled field)
   expect_exit(run_${backend} 0 "particles: [0-9]+ done in .*(converged|iteration limit reached)" run ${TETRA} -n 2 --backend ${backend} --no-cache --out ${RUN_OUT}/${backend})
 endforeach()
 # A kernel that does not build: exit 2, the build log follows the message.
@@ -75,9 +75,16 @@ expect_exit_of(run_kernel_build_failure 2 "OpenCL kernels failed to build \\(nai
             env MESHPARTICLES_KERNEL_DIR=${CMAKE_CURRENT_BINARY_DIR}/broken_kernels
             $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend naive --no-cache --out ${RUN_OUT})
 set_tests_properties(cli.run_kernel_build_failure PROPERTIES ENVIRONMENT MULTILINE=1)
+file(COPY ${PROJECT_SOURCE_DIR}/kernels/ DESTINATION ${CMAKE_CURRENT_BINARY_DIR}/broken_field_kernels)
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/broken_field_kernels/field.h "#error the field header is broken\n")
+expect_exit_of(run_field_kernel_build_failure 2 "OpenCL kernels failed to build \\(field_weights\\.cl.*build log:"
+            env MESHPARTICLES_KERNEL_DIR=${CMAKE_CURRENT_BINARY_DIR}/broken_field_kernels
+            $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend field --no-cache --out ${RUN_OUT})
+set_tests_properties(cli.run_field_kernel_build_failure PROPERTIES ENVIRONMENT MULTILINE=1)
 # Performance commands: bad arguments, then the tuning loop end to end.
 expect_exit(sweep_zero_iterations 2 "--iterations must be at least 1" sweep ${TORUS} -n 8 --iterations 0 --no-cache)
 expect_exit(sweep_tile_without_tiled 2 "--tile applies to the tiled kernel" sweep ${TORUS} --kernel naive --tile 8)
+expect_exit(sweep_weights_without_field 2 "--weights applies to the field kernel, which is not swept" sweep ${TORUS} --kernel naive --weights half)
 expect_exit(sweep_unknown_kernel 2 "--kernel: cuda not in" sweep ${TORUS} --kernel naive,cuda)
 expect_exit(sweep_too_many_particles 2 "-n 5 is more particles than the 4 vertices" sweep ${TETRA} -n 5)
 expect_exit(sweep_unwritable_csv 2 "/nonexistent-dir/s.csv: cannot write" sweep ${TETRA} -n 2 --csv /nonexistent-dir/s.csv)

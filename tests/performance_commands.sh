@@ -21,7 +21,7 @@ head -n 1 "$work/sweep.csv" | grep -q "^device,max_work_group_size,local_memory_
 [ -s "$tuning" ] || fail "sweep --save wrote no tuning file"
 saved_wg=$(/usr/bin/python3 -c "import json,sys; e=[e for e in json.load(open(sys.argv[1]))['entries'] if e['kernel']=='tiled'][0]; print(e['wg'])" "$tuning")
 
-"$bin" run "$mesh" -n 64 --iterations 2 --tuning-file "$tuning" --out "$work/run" -q > /dev/null
+"$bin" run "$mesh" -n 64 --iterations 2 --backend tiled --tuning-file "$tuning" --out "$work/run" -q > /dev/null
 grep -q '"sizes_from": "tuning file"' "$work/run/report.json" || fail "run did not take the tuning file's sizes"
 grep -Eq "\"wg\": $saved_wg,?$" "$work/run/report.json" || fail "run's wg is not the saved $saved_wg"
 
@@ -30,7 +30,7 @@ saved_field_wg=$(/usr/bin/python3 -c "import json,sys; e=[e for e in json.load(o
 grep -Eq "\"wg\": $saved_field_wg,?$" "$work/run/report.json" || fail "field run's wg is not the saved $saved_field_wg"
 grep -q '"weights": "float"' "$work/run/report.json" || fail "field run's report does not name its weights"
 
-"$bin" run "$mesh" -n 64 --iterations 2 --tuning-file "$tuning" --wg 32 --tile 8 --out "$work/run" -q > /dev/null
+"$bin" run "$mesh" -n 64 --iterations 2 --backend tiled --tuning-file "$tuning" --wg 32 --tile 8 --out "$work/run" -q > /dev/null
 grep -q '"sizes_from": "--wg/--tile"' "$work/run/report.json" || fail "flags did not override the tuning file"
 
 echo "not json" > "$work/broken.json"

@@ -31,7 +31,9 @@ ReferenceChoices::ReferenceChoices(const SurfaceMesh& mesh, const SerialBackend&
   }
 }
 
-ChoiceVerdict ReferenceChoices::check(std::span<const VertexId> chosen) const {
+double choice_tolerance(WeightFormat weights) { return weights == WeightFormat::half ? 1e-3 : 1e-5; }
+
+ChoiceVerdict ReferenceChoices::check(std::span<const VertexId> chosen, double tolerance) const {
   ChoiceVerdict verdict;
   auto wrong = [&](std::size_t c, const std::string& what) {
     if (verdict.wrong++ == 0) verdict.first_wrong = "particle " + std::to_string(c) + " " + what;
@@ -58,7 +60,7 @@ ChoiceVerdict ReferenceChoices::check(std::span<const VertexId> chosen) const {
     }
     const std::size_t want = order[rank];
     const double scale = std::max(std::abs(energies[want]), 1e-30);
-    const auto close = [&](std::size_t j) { return std::abs(energies[j] - energies[want]) <= tolerance_ * scale; };
+    const auto close = [&](std::size_t j) { return std::abs(energies[j] - energies[want]) <= tolerance * scale; };
     ++verdict.ranked_choices;
     bool unique = true;
     for (std::size_t j = 0; j < energies.size(); ++j) unique = unique && (j == want || !close(j));

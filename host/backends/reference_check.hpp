@@ -19,6 +19,11 @@ struct ChoiceVerdict {
 
 // The reference's candidate energies (double) for every particle of one
 // configuration, computed once and checked against any number of kernels.
+// The tolerance a kernel's choices are held to: 1e-5 relative for float32
+// weights; 1e-3 for the half-precision table of the field backends, whose
+// weights are each rounded to 11 significant bits (2^-11 = 4.9e-4).
+double choice_tolerance(WeightFormat weights);
+
 class ReferenceChoices {
  public:
   // A choice is right when its energy is within `tolerance` (relative) of the
@@ -28,7 +33,8 @@ class ReferenceChoices {
                    double tolerance = 1e-5);
 
   // `chosen`: the vertex of every particle after one synchronous step.
-  ChoiceVerdict check(std::span<const VertexId> chosen) const;
+  ChoiceVerdict check(std::span<const VertexId> chosen) const { return check(chosen, tolerance_); }
+  ChoiceVerdict check(std::span<const VertexId> chosen, double tolerance) const;
 
  private:
   const SurfaceMesh& mesh_;

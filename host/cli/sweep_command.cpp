@@ -26,6 +26,8 @@ struct SweepOptions {
   std::vector<std::size_t> work_group_sizes = {8, 16, 32, 64, 128, 256};
   std::vector<std::size_t> tile_sizes = {16, 32, 64, 128, 256, 512, 1024};
   bool tiles_given = false;
+  std::string weights = "float";
+  bool weights_given = false;
   std::size_t iterations = 20;
   std::string scheme = "colored";
   unsigned colors = kDefaultColors;
@@ -79,6 +81,8 @@ void run_sweep_command(SweepOptions options, bool colors_given) {
   for (const auto& name : unique_in_order(options.kernels)) kinds.push_back(parse_kernel_kind(name));
   const bool any_tiled = std::find(kinds.begin(), kinds.end(), KernelKind::tiled) != kinds.end();
   if (options.tiles_given && !any_tiled) throw UserError("--tile applies to the tiled kernel, which is not swept");
+  const bool any_field = std::find(kinds.begin(), kinds.end(), KernelKind::field) != kinds.end();
+  if (options.weights_given && !any_field) throw UserError("--weights applies to the field kernel, which is not swept");
   if (options.iterations == 0) throw UserError("--iterations must be at least 1 (timed iterations per configuration)");
   const SurfaceMesh mesh = load_mesh_or_default(options.mesh, options.table.quiet);
   if (options.particles > mesh.vertex_count()) {
@@ -101,8 +105,11 @@ void run_sweep_command(SweepOptions options, bool colors_given) {
       place_particles(distances, {parse_init(options.init), options.particles, options.seed, std::nullopt});
 
   const SweepSettings settings{scheme, options.colors, options.iterations, 2, options.table.quiet};
-  const auto configurations = sweep_configurations(kinds, unique_in_order(options.work_group_sizes),
-                                                   unique_in_order(options.tile_sizes), mesh.max_valence() + 1);
+  auto configurations = sweep_configurations(kinds, unique_in_order(options.work_group_sizes),
+                                             unique_in_order(options.tile_sizes), mesh.max_valence() + 1);
+  for (UpdateKernel& kernel : configurations) {
+    if (kernel.kind == KernelKind::field) kernel.weights = parse_weight_format(options.weights);
+  }
   const std::vector<SweepResult> results =
       run_sweep(device, mesh, distances, energy, positions, configurations, settings);
 
@@ -149,6 +156,12 @@ void add_sweep_command(CLI::App& app) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
       ->capture_default_str()
       ->each([options](const std::string&) { options->tiles_given = true; });
+  sweep->add_option("--weights", options->weights,
+                    "Weight table of the field kernel: float or half (half is held to 1e-3 of the reference, "
+                    "not 1e-5)")
+      ->check(CLI::IsMember({"float", "half"}))
+      ->capture_default_str()
+      ->each([options](const std::string&) { options->weights_given = true; });
   sweep->add_option("--iterations", options->iterations, "Timed iterations per configuration (after 2 warm-ups)")
       ->capture_default_str();
   sweep->add_option("--scheme", options->scheme, "synchronous or colored: the launches one iteration makes")
