@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "backends/field_backend.hpp"
 #include "backends/serial_field_backend.hpp"
@@ -113,6 +114,54 @@ TEST(Field, RebuildingChangesNothing) {
     EXPECT_EQ(serial_never.field(), serial_always.field());
     EXPECT_EQ(device_never.field(), device_always.field());
   }
+}
+
+// Why the field is fixed point: the same moves applied to a float32 field
+// drift from the sum of the same weights in double past the 1e-5 the choices
+// are held to, while the fixed-point field stays at its truncation error
+// (at most 2^-40 per particle). Prints the figures docs/ALGORITHM.md quotes:
+//   build/unit_tests --gtest_filter=Field.AFloat32FieldWouldDrift
+TEST(Field, AFloat32FieldWouldDrift) {
+  const MeshWithDistances m("torus.off");
+  const EnergyParams energy = m.default_energy(kParticles);
+  const float inv_two_sigma_sq = float(energy.inv_two_sigma_sq());
+  const auto weight = [&](VertexId a, std::size_t v) { return std::exp(-m.distances.row(a)[v] * inv_two_sigma_sq); };
+  const std::size_t vertices = m.mesh.vertex_count();
+  std::vector<VertexId> positions = place_particles(m.distances, {Init::random, kParticles, 3, std::nullopt});
+  SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+  twin.set_positions(positions);
+  std::vector<float> float_field(vertices, 0.0f);
+  for (const VertexId p : positions) {
+    for (std::size_t v = 0; v < vertices; ++v) float_field[v] += weight(p, v);
+  }
+  std::size_t moves = 0;
+  double float_error = 0, fixed_error = 0;
+  for (std::size_t iteration = 1; iteration <= kIterations; ++iteration) {
+    twin.iterate(Scheme::colored, 2);  // each particle moves at most once per iteration
+    const std::vector<VertexId> now = twin.positions();
+    for (std::size_t c = 0; c < kParticles; ++c) {
+      if (now[c] == positions[c]) continue;
+      ++moves;
+      for (std::size_t v = 0; v < vertices; ++v) float_field[v] += weight(now[c], v) - weight(positions[c], v);
+    }
+    positions = now;
+    if (iteration % 100 != 0 && iteration != 1) continue;
+    // The same float32 weights summed in double: what both fields should hold.
+    std::vector<double> exact(vertices, 0.0);
+    for (const VertexId p : positions) {
+      for (std::size_t v = 0; v < vertices; ++v) exact[v] += double(weight(p, v));
+    }
+    float_error = fixed_error = 0;
+    for (std::size_t v = 0; v < vertices; ++v) {
+      float_error = std::max(float_error, std::abs(float_field[v] - exact[v]) / exact[v]);
+      fixed_error = std::max(
+          fixed_error, std::abs(double(twin.field()[v]) / double(kFieldUnitsPerWeight) - exact[v]) / exact[v]);
+    }
+    std::printf("  after %4zu iterations (%6zu moves): largest relative error of F, float32 %.2e, fixed point %.2e\n",
+                iteration, moves, float_error, fixed_error);
+  }
+  EXPECT_GT(float_error, 1e-5);
+  EXPECT_LT(fixed_error, 1e-8);
 }
 
 // The half table: both twins store the same half values, so they make the

@@ -64,6 +64,18 @@ void DeviceBackend::check_kernel_limits(const cl::Kernel& update, const DeviceDe
   }
 }
 
+cl::Event DeviceBackend::launch_update(cl::Kernel& update, cl_uint color_arg, cl_uint color, cl_uint colors,
+                                       cl_uint particles, cl_uint rank_stacks) {
+  update.setArg(color_arg, color);
+  update.setArg(color_arg + 1, colors);
+  update.setArg(color_arg + 2, rank_stacks);
+  const std::size_t work_group = kernel_.work_group_size;
+  cl::Event event;
+  queue_.enqueueNDRangeKernel(update, cl::NullRange, cl::NDRange(kernel_.work_groups_for(particles) * work_group),
+                              cl::NDRange(work_group), nullptr, &event);
+  return event;
+}
+
 void DeviceBackend::reset_claims() {
   queue_.enqueueFillBuffer(claims_, CL_UINT_MAX, 0, vertex_count_ * sizeof(cl_uint));
 }

@@ -55,6 +55,10 @@ class DeviceBackend : public ParticleBackend {
   void attach_commit_kernel(const cl::Program& program);
   // Refuses a work-group size the compiled `update` kernel cannot take.
   void check_kernel_limits(const cl::Kernel& update, const DeviceDescription& device) const;
+  // Launches an update kernel whose arguments from `color_arg` on are
+  // (color, colors, rank_stacks), over the work-groups `particles` need.
+  cl::Event launch_update(cl::Kernel& update, cl_uint color_arg, cl_uint color, cl_uint colors, cl_uint particles,
+                          cl_uint rank_stacks);
 
   // The update kernel for the particles of `color` (rank_stacks 0: the
   // sequential rule, every particle takes its best candidate).

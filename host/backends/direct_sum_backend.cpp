@@ -52,14 +52,7 @@ void DirectSumBackend::positions_changed(bool resized) {
 }
 
 cl::Event DirectSumBackend::enqueue_update(cl_uint color, cl_uint colors, cl_uint particles, cl_uint rank_stacks) {
-  update_.setArg(kColor, color);
-  update_.setArg(kColors, colors);
-  update_.setArg(kRankStacks, rank_stacks);
-  const std::size_t work_group = kernel_.work_group_size;
-  cl::Event event;
-  queue_.enqueueNDRangeKernel(update_, cl::NullRange, cl::NDRange(kernel_.work_groups_for(particles) * work_group),
-                              cl::NDRange(work_group), nullptr, &event);
-  return event;
+  return launch_update(update_, kColor, color, colors, particles, rank_stacks);
 }
 
 double DirectSumBackend::total_energy() {

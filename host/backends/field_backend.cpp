@@ -138,14 +138,7 @@ std::vector<std::int64_t> FieldBackend::field() {
 }
 
 cl::Event FieldBackend::enqueue_update(cl_uint color, cl_uint colors, cl_uint particles, cl_uint rank_stacks) {
-  update_.setArg(kColor, color);
-  update_.setArg(kColors, colors);
-  update_.setArg(kRankStacks, rank_stacks);
-  const std::size_t work_group = kernel_.work_group_size;
-  cl::Event event;
-  queue_.enqueueNDRangeKernel(update_, cl::NullRange, cl::NDRange(kernel_.work_groups_for(particles) * work_group),
-                              cl::NDRange(work_group), nullptr, &event);
-  return event;
+  return launch_update(update_, kColor, color, colors, particles, rank_stacks);
 }
 
 void FieldBackend::after_commit(cl_uint color, cl_uint colors, std::vector<cl::Event>& events) {

@@ -1,5 +1,6 @@
 #include "backends/serial_backend.hpp"
 
+#include "backends/host_collisions.hpp"
 #include "particles/energy.hpp"
 
 namespace meshparticles {
@@ -73,15 +74,8 @@ std::size_t SerialBackend::synchronous_step(unsigned color, unsigned colors) {
       targets.push_back(target);
     }
   }
-  std::vector<bool> taken(mesh_.vertex_count(), false);
-  std::size_t moved = 0;
-  for (std::size_t k = 0; k < movers.size(); ++k) {  // movers are in index order
-    if (taken[targets[k]]) continue;
-    taken[targets[k]] = true;
-    positions_[movers[k]] = targets[k];
-    ++moved;
-  }
-  return moved;
+  return commit_in_index_order(targets, mesh_.vertex_count(),
+                               [&](std::size_t k) { positions_[movers[k]] = targets[k]; });
 }
 
 IterationStats SerialBackend::iterate(Scheme scheme, unsigned colors) {

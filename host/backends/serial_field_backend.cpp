@@ -1,5 +1,6 @@
 #include "backends/serial_field_backend.hpp"
 
+#include "backends/host_collisions.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/memory_guard.hpp"
 #include "particles/energy.hpp"
@@ -101,15 +102,7 @@ std::size_t SerialFieldBackend::synchronous_step(unsigned color, unsigned colors
       targets.push_back(target);
     }
   }
-  std::vector<bool> taken(vertex_count_, false);
-  std::size_t moved = 0;
-  for (std::size_t k = 0; k < movers.size(); ++k) {  // movers are in index order
-    if (taken[targets[k]]) continue;
-    taken[targets[k]] = true;
-    move(movers[k], targets[k]);
-    ++moved;
-  }
-  return moved;
+  return commit_in_index_order(targets, vertex_count_, [&](std::size_t k) { move(movers[k], targets[k]); });
 }
 
 IterationStats SerialFieldBackend::iterate(Scheme scheme, unsigned colors) {

@@ -1,7 +1,8 @@
 #pragma once
-// The one interface every backend implements (serial reference, naive and
-// tiled OpenCL kernels). A backend holds the particle positions; one call of
-// iterate() is one iteration of the chosen scheme.
+// The one interface every backend implements (the serial reference and its
+// field twin; the naive, tiled and field OpenCL backends). A backend holds
+// the particle positions; one call of iterate() is one iteration of the
+// chosen scheme.
 #include <optional>
 #include <span>
 #include <string>
@@ -15,7 +16,7 @@ namespace meshparticles {
 struct IterationStats {
   std::size_t moved = 0;
   double energy = 0;                 // total pair energy after the iteration
-  std::optional<double> kernel_ms;  // update kernels, from profiling events (device backends)
+  std::optional<double> kernel_ms;  // update kernels (field: and its field updates), from profiling events (device backends)
 };
 
 class ParticleBackend {
