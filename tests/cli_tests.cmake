@@ -97,3 +97,14 @@ expect_exit(bench_zero_iterations 2 "--iterations must be at least 1" bench --ca
 add_test(NAME cli.performance_commands
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/performance_commands.sh $<TARGET_FILE:meshparticles> ${TORUS}
                  ${CMAKE_CURRENT_BINARY_DIR}/performance_commands ${PROJECT_SOURCE_DIR}/scripts/plot_sweep.py)
+# Quality of particle files.
+set(PARTICLES_DATA ${DATA}/particles)
+expect_exit(quality_missing_file 2 "missing\\.particles: no such file" quality ${TORUS} ${PARTICLES_DATA}/missing.particles)
+expect_exit(quality_bad_line 2 "two_numbers\\.particles: line 2 is not three numbers" quality ${TORUS} ${PARTICLES_DATA}/two_numbers.particles)
+expect_exit(quality_nan 2 "nan\\.particles: line 2" quality ${TORUS} ${PARTICLES_DATA}/nan.particles)
+expect_exit(quality_empty 2 "empty\\.particles: no particles" quality ${TORUS} ${PARTICLES_DATA}/empty.particles)
+expect_exit(compare_needs_two 2 "particles" compare ${TORUS} ${PARTICLES_DATA}/blank_lines.particles)
+expect_exit(compare_bad_second 2 "header\\.particles: line 1 is not three numbers" compare ${TORUS} ${PARTICLES_DATA}/blank_lines.particles ${PARTICLES_DATA}/header.particles)
+add_test(NAME cli.quality_commands
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/quality_commands.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes/patch.off
+                 ${CMAKE_CURRENT_BINARY_DIR}/quality_commands)

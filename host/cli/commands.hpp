@@ -29,5 +29,7 @@ void add_geodesics_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_quality_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
 
 }  // namespace meshparticles

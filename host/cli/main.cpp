@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   add_run_command(app);
   add_sweep_command(app);
   add_bench_command(app);
+  add_quality_command(app);
+  add_compare_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

@@ -12,6 +12,7 @@
 #include "geodesics/distance_cache.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
+#include "quality/distribution_quality.hpp"
 #include "reports/run_outputs.hpp"
 #include "tuning/tuning_store.hpp"
 
@@ -55,7 +56,7 @@ void check_arguments(const RunOptions& options, const SurfaceMesh& mesh, Scheme 
   }
 }
 
-void print_summary(const RunOptions& options, const nlohmann::json& report) {
+void print_summary(const RunOptions& options, const nlohmann::json& report, const DistributionQuality& quality) {
   const auto& params = report["params"];
   std::printf("mesh        %s (%zu vertices)\n", options.mesh.c_str(), report["mesh"]["vertices"].get<std::size_t>());
   std::printf("particles   %zu, %s on %s, scheme %s\n", options.particles, options.backend.name.c_str(),
@@ -65,6 +66,7 @@ void print_summary(const RunOptions& options, const nlohmann::json& report) {
   std::printf("energy      %.6g -> %.6g\n", report["initial_energy"].get<double>(), report["final_energy"].get<double>());
   std::printf("time        %.3f ms/iteration", report["avg_iteration_ms"].get<double>());
   if (report.contains("avg_kernel_ms")) std::printf(" (update kernels %.3f ms)", report["avg_kernel_ms"].get<double>());
+  std::printf("\nquality     %s", quality_line(quality).c_str());
   std::printf("\noutput      %s/{particles.particles, particles.csv, report.json}\n", options.out.c_str());
 }
 
@@ -119,9 +121,11 @@ void run_run(RunOptions options) {
     params["sizes_from"] = checked.sizes_from;
     if (!checked.sizes_note.empty()) params["sizes_note"] = checked.sizes_note;
   }
-  const nlohmann::json report = run_report(mesh, {options.mesh, params, backend->device_name()}, outcome);
+  nlohmann::json report = run_report(mesh, {options.mesh, params, backend->device_name()}, outcome);
+  const DistributionQuality quality = measure_quality(mesh, distances, outcome.positions, energy);
+  report["quality"] = quality_json(quality);
   write_run_outputs(options.out, mesh, outcome.positions, report);
-  print_summary(options, report);
+  print_summary(options, report, quality);
 }
 
 }  // namespace
@@ -133,7 +137,8 @@ void add_run_command(CLI::App& app) {
   run->add_option("-n,--particles", options->particles, "Number of particles, 1..V")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  run->add_option("--iterations", options->iterations, "Stop after this many iterations (or when none moves)")
+  run->add_option("--iterations", options->iterations,
+                  "Stop after this many iterations (or when none moves); 0 writes the start and its quality")
       ->capture_default_str();
   run->add_option("--backend", options->backend.name,
                   "serial (the reference), serial-field (the field method in plain C++), "

@@ -1,0 +1,108 @@
+// `meshparticles quality MESH PARTICLES` and `meshparticles compare MESH A B`:
+// how evenly particle files (ours or ShapeWorks .particles) cover a mesh,
+// one set or two side by side (docs/QUALITY.md).
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/mesh_loading.hpp"
+#include "common/user_error.hpp"
+#include "quality/particle_set_report.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+struct QualityOptions {
+  std::string mesh;
+  std::vector<std::string> particle_files;  // one (quality) or two (compare)
+  std::optional<double> sigma;
+  std::string potential = "exp";
+  std::string geodesic = "fmm";
+  bool json = false;
+  DistanceTableOptions table;
+};
+
+void run_quality(const QualityOptions& options) {
+  const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet);
+  // Read before the distance table, so a bad file fails in a second.
+  for (const auto& file : options.particle_files) read_particle_points(file);
+  TableSource source;
+  const DistanceTable distances =
+      load_or_compute_distances(mesh, options.table.request(parse_method(options.geodesic)), source);
+  const Potential potential = parse_potential(options.potential);
+  std::vector<MeasuredSet> sets;
+  for (const auto& file : options.particle_files) {
+    sets.push_back(measure_particle_file(mesh, distances, file, potential, options.sigma));
+  }
+  const bool comparing = sets.size() == 2;
+  double a_to_b = 0, b_to_a = 0;
+  if (comparing) {
+    a_to_b = mean_distance_to_nearest(distances, sets[0].snapped.positions, sets[1].snapped.positions);
+    b_to_a = mean_distance_to_nearest(distances, sets[1].snapped.positions, sets[0].snapped.positions);
+  }
+  if (options.json) {
+    nlohmann::json out = {{"mesh", options.mesh}};
+    if (comparing) {
+      out["a"] = measured_set_json(sets[0]);
+      out["b"] = measured_set_json(sets[1]);
+      out["mean_distance_a_to_b"] = a_to_b;
+      out["mean_distance_b_to_a"] = b_to_a;
+    } else {
+      out.update(measured_set_json(sets[0]));
+    }
+    std::cout << out.dump(2) << "\n";
+    return;
+  }
+  std::cout << "mesh " << options.mesh << " (" << mesh.vertex_count() << " vertices, mean edge "
+            << mesh.mean_edge_length() << "); geodesic distances, " << potential_name(potential) << " potential\n\n";
+  std::vector<const MeasuredSet*> columns;
+  for (const auto& set : sets) columns.push_back(&set);
+  std::cout << quality_table(columns);
+  if (comparing) {
+    std::cout << "\nmean distance to the nearest particle of the other set: A -> B " << a_to_b << ", B -> A "
+              << b_to_a << " (d_hex of A " << sets[0].quality.d_hex << ")\n";
+  }
+}
+
+void add_shared_options(CLI::App& command, QualityOptions& options) {
+  command.add_option("--sigma", options.sigma, "Sigma of the energy (default: the run's rule for each set's n)")
+      ->check(CLI::PositiveNumber);
+  command.add_option("--potential", options.potential, "exp or gauss")
+      ->check(CLI::IsMember({"exp", "gauss"}))
+      ->capture_default_str();
+  command.add_option("--geodesic", options.geodesic, "Distance solver: fmm or dijkstra")
+      ->check(CLI::IsMember({"fmm", "dijkstra"}))
+      ->capture_default_str();
+  command.add_flag("--json", options.json, "Machine-readable output");
+  add_distance_table_options(command, options.table);
+}
+
+}  // namespace
+
+void add_quality_command(CLI::App& app) {
+  auto options = std::make_shared<QualityOptions>();
+  CLI::App* quality = app.add_subcommand(
+      "quality", "How evenly a particle file covers a mesh: nearest-neighbour distances, packing and covering radii, "
+                 "energy (points are snapped to the nearest vertex)");
+  quality->add_option("mesh", options->mesh, "Mesh file")->required();
+  quality->add_option("particles", options->particle_files, "Particle file: one \"x y z\" per line (.particles)")
+      ->required()
+      ->expected(1);
+  add_shared_options(*quality, *options);
+  quality->callback([options] { run_quality(*options); });
+}
+
+void add_compare_command(CLI::App& app) {
+  auto options = std::make_shared<QualityOptions>();
+  CLI::App* compare = app.add_subcommand(
+      "compare", "Two particle files on one mesh side by side, and how far each set's particles are from the other's");
+  compare->add_option("mesh", options->mesh, "Mesh file")->required();
+  compare->add_option("particles", options->particle_files, "Particle files A and B (.particles)")
+      ->required()
+      ->expected(2);
+  add_shared_options(*compare, *options);
+  compare->callback([options] { run_quality(*options); });
+}
+
+}  // namespace meshparticles

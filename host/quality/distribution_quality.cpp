@@ -1,0 +1,98 @@
+#include "quality/distribution_quality.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_set>
+
+#include "particles/energy.hpp"
+#include "reports/text_format.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+nlohmann::json optional_json(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
+                                    std::span<const VertexId> positions, const EnergyParams& energy) {
+  DistributionQuality quality;
+  const std::size_t n = positions.size();
+  quality.particles = n;
+  quality.d_hex = n > 0 ? hexagonal_spacing(mesh.area(), n) : 0;
+
+  std::vector<double> nearest(n, kInfinity);
+  const double inv_two_sigma_sq = energy.inv_two_sigma_sq();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto row = distances.row(positions[i]);
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const double d = row[positions[j]];
+      nearest[i] = std::min(nearest[i], d);
+      nearest[j] = std::min(nearest[j], d);
+      quality.energy += pair_weight(energy.potential, d, inv_two_sigma_sq);
+    }
+  }
+  double sum = 0, sum_sq = 0, minimum = kInfinity;
+  std::size_t counted = 0;
+  for (const double d : nearest) {
+    if (std::isinf(d)) continue;  // alone in its component
+    sum += d;
+    sum_sq += d * d;
+    minimum = std::min(minimum, d);
+    ++counted;
+  }
+  if (counted > 0) {
+    const double mean = sum / double(counted);
+    const double variance = std::max(0.0, sum_sq / double(counted) - mean * mean);
+    quality.nn_min = minimum;
+    quality.nn_mean = mean;
+    quality.nn_std = std::sqrt(variance);
+    if (mean > 0) quality.nn_cv = *quality.nn_std / mean;
+    quality.rho = minimum / quality.d_hex;
+  }
+
+  if (n > 0) {
+    double farthest = 0;  // the covering radius: the vertex farthest from every particle
+    std::vector<float> to_nearest(mesh.vertex_count(), std::numeric_limits<float>::infinity());
+    for (const VertexId p : positions) {
+      const auto row = distances.row(p);
+      for (std::size_t v = 0; v < to_nearest.size(); ++v) to_nearest[v] = std::min(to_nearest[v], row[v]);
+    }
+    for (const float d : to_nearest) farthest = std::max(farthest, double(d));
+    if (!std::isinf(farthest)) quality.cover = farthest / quality.d_hex;
+  }
+
+  std::unordered_set<VertexId> occupied;
+  for (const VertexId p : positions) quality.stacked += occupied.insert(p).second ? 0 : 1;
+  return quality;
+}
+
+nlohmann::json quality_json(const DistributionQuality& quality) {
+  return {{"nn_min", optional_json(quality.nn_min)},
+          {"nn_mean", optional_json(quality.nn_mean)},
+          {"nn_std", optional_json(quality.nn_std)},
+          {"nn_cv", optional_json(quality.nn_cv)},
+          {"rho", optional_json(quality.rho)},
+          {"cover", optional_json(quality.cover)},
+          {"energy", quality.energy},
+          {"stacked", quality.stacked},
+          {"d_hex", quality.d_hex}};
+}
+
+std::string quality_line(const DistributionQuality& quality) {
+  auto text = [](const std::optional<double>& value, const char* pattern) {
+    return value ? format_number(pattern, *value) : std::string("-");
+  };
+  return "nn min " + text(quality.nn_min, "%.4g") + " mean " + text(quality.nn_mean, "%.4g") + " cv " +
+         text(quality.nn_cv, "%.3f") + ", rho " + text(quality.rho, "%.3f") + ", cover " +
+         text(quality.cover, "%.3f") + ", energy " + format_number("%.6g", quality.energy) + ", " +
+         std::to_string(quality.stacked) + " stacked";
+}
+
+}  // namespace meshparticles

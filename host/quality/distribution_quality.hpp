@@ -1,0 +1,38 @@
+#pragma once
+// How evenly a particle set covers a surface, measured geodesically from the
+// distance table (docs/QUALITY.md): nearest-neighbour distances, normalized
+// packing and covering radii, energy, stacked particles.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "geodesics/distance_table.hpp"
+#include "particles/particle_params.hpp"
+
+namespace meshparticles {
+
+struct DistributionQuality {
+  std::size_t particles = 0;
+  // Nearest-neighbour geodesic distance of each particle (another particle on
+  // its vertex: 0; none in its component: left out). Absent with < 2 particles.
+  std::optional<double> nn_min, nn_mean, nn_std, nn_cv;
+  double d_hex = 0;             // sqrt(2A / (sqrt(3) n)), the hexagonal spacing
+  std::optional<double> rho;    // nn_min / d_hex: the normalized packing radius
+  std::optional<double> cover;  // max over vertices of the distance to the nearest particle, / d_hex;
+                                // absent when a component holds no particle
+  double energy = 0;            // sum_{i<j} w(d(p_i, p_j)) at the given sigma, in double
+  std::size_t stacked = 0;      // particles on a vertex a lower-index particle occupies
+};
+
+DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
+                                    std::span<const VertexId> positions, const EnergyParams& energy);
+
+// The report.json form: keys nn_min, nn_mean, nn_std, nn_cv, rho, cover,
+// energy, stacked (null where a value is absent), plus d_hex.
+nlohmann::json quality_json(const DistributionQuality& quality);
+
+// One line for a run's summary: "nn 0.0723 / 0.0981 (cv 0.071), rho 0.74, cover 0.93, 0 stacked".
+std::string quality_line(const DistributionQuality& quality);
+
+}  // namespace meshparticles

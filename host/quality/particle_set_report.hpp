@@ -1,0 +1,34 @@
+#pragma once
+// Particle files measured on a mesh, for `quality` (one set) and `compare`
+// (two side by side, plus how far each set's particles are from the other's).
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "particles/particle_file.hpp"
+#include "quality/distribution_quality.hpp"
+
+namespace meshparticles {
+
+struct MeasuredSet {
+  std::string path;
+  SnappedParticles snapped;
+  EnergyParams energy;  // sigma: --sigma, else the default rule for this set's n
+  DistributionQuality quality;
+};
+
+MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceTable& distances, const std::string& path,
+                                  Potential potential, std::optional<double> sigma);
+
+// The mean over the particles of `from` of the geodesic distance to the
+// nearest particle of `to` (+inf when some particle has none in its component).
+double mean_distance_to_nearest(const DistanceTable& distances, const std::vector<VertexId>& from,
+                                const std::vector<VertexId>& to);
+
+nlohmann::json measured_set_json(const MeasuredSet& set);
+
+// The metrics as a table, one column per set.
+std::string quality_table(const std::vector<const MeasuredSet*>& sets);
+
+}  // namespace meshparticles

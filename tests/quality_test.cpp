@@ -1,0 +1,167 @@
+// Quality metrics on configurations whose answers are known by hand: a
+// regular grid on the unit square (geodesics there are straight lines), two
+// particles at a known distance, a stack, a component without particles; and
+// the particle-file reader against bad files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "common/user_error.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "particle_test_support.hpp"
+#include "particles/particle_file.hpp"
+#include "quality/distribution_quality.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+// An 11 x 11 grid of spacing 0.1 on the unit square, two triangles per cell.
+class GridSquare : public ::testing::Test {
+ protected:
+  static constexpr int kSide = 11;
+  static void SetUpTestSuite() {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "meshparticles_grid.off";
+    {
+      std::ofstream out(file);
+      out << "OFF\n" << kSide * kSide << " " << 2 * (kSide - 1) * (kSide - 1) << " 0\n";
+      for (int j = 0; j < kSide; ++j) {
+        for (int i = 0; i < kSide; ++i) out << 0.1 * i << " " << 0.1 * j << " 0\n";
+      }
+      for (int j = 0; j + 1 < kSide; ++j) {
+        for (int i = 0; i + 1 < kSide; ++i) {
+          const int a = j * kSide + i, b = a + 1, c = a + kSide, d = c + 1;
+          out << "3 " << a << " " << b << " " << d << "\n3 " << a << " " << d << " " << c << "\n";
+        }
+      }
+    }
+    std::vector<std::string> warnings;
+    mesh_ = new SurfaceMesh(read_mesh(file, warnings));
+    distances_ = new DistanceTable(compute_all_pairs(*mesh_, GeodesicMethod::fast_marching, 0, true));
+  }
+  static void TearDownTestSuite() {
+    delete distances_;
+    delete mesh_;
+  }
+  // The vertex at grid point (i, j): the reader keeps the file's order here.
+  static VertexId at(int i, int j) {
+    const VertexId v = VertexId(j * kSide + i);
+    EXPECT_NEAR(mesh_->positions()[v].x, 0.1 * i, 1e-6);  // read as float
+    return v;
+  }
+  static DistributionQuality measure(const std::vector<VertexId>& positions, double sigma = 0.1) {
+    return measure_quality(*mesh_, *distances_, positions, {Potential::exp, sigma});
+  }
+  static SurfaceMesh* mesh_;
+  static DistanceTable* distances_;
+};
+SurfaceMesh* GridSquare::mesh_ = nullptr;
+DistanceTable* GridSquare::distances_ = nullptr;
+
+TEST_F(GridSquare, TwoParticlesAtAKnownDistance) {
+  const double sigma = 0.2;
+  const DistributionQuality q = measure({at(0, 0), at(5, 0)}, sigma);
+  ASSERT_TRUE(q.nn_min && q.nn_mean && q.nn_cv && q.rho && q.cover);
+  EXPECT_NEAR(*q.nn_min, 0.5, 1e-6);
+  EXPECT_NEAR(*q.nn_mean, 0.5, 1e-6);
+  EXPECT_NEAR(*q.nn_cv, 0.0, 1e-9);
+  const double d_hex = std::sqrt(2.0 / (std::sqrt(3.0) * 2));
+  EXPECT_NEAR(q.d_hex, d_hex, 1e-9);
+  EXPECT_NEAR(*q.rho, 0.5 / d_hex, 1e-5);
+  EXPECT_NEAR(q.energy, std::exp(-0.5 / (2 * sigma * sigma)), 1e-6);
+  // The farthest vertex from both is the corner (1, 1), sqrt(0.5^2 + 1) from (0.5, 0).
+  EXPECT_NEAR(*q.cover * d_hex, std::sqrt(1.25), 1e-3);
+  EXPECT_EQ(q.stacked, 0u);
+}
+
+TEST_F(GridSquare, ARegularLatticeHasNoSpreadInItsSpacing) {
+  std::vector<VertexId> lattice;  // every other grid point: spacing 0.2, 36 particles
+  for (int j = 0; j < kSide; j += 2) {
+    for (int i = 0; i < kSide; i += 2) lattice.push_back(at(i, j));
+  }
+  const DistributionQuality q = measure(lattice);
+  ASSERT_TRUE(q.nn_min && q.nn_mean && q.nn_cv && q.rho && q.cover);
+  EXPECT_NEAR(*q.nn_min, 0.2, 1e-6);
+  EXPECT_NEAR(*q.nn_mean, 0.2, 1e-6);
+  EXPECT_NEAR(*q.nn_cv, 0.0, 1e-5);
+  const double d_hex = std::sqrt(2.0 / (std::sqrt(3.0) * 36));
+  EXPECT_NEAR(*q.rho, 0.2 / d_hex, 1e-5);
+  // The cell centres (odd, odd) are farthest from every particle: a half diagonal.
+  EXPECT_NEAR(*q.cover * d_hex, std::sqrt(0.02), 1e-3);
+  double energy = 0;  // straight-line distances on the flat square
+  for (std::size_t a = 0; a < lattice.size(); ++a) {
+    for (std::size_t b = a + 1; b < lattice.size(); ++b) {
+      const Vec3 d = mesh_->positions()[lattice[a]] - mesh_->positions()[lattice[b]];
+      energy += std::exp(-std::sqrt(dot(d, d)) / (2 * 0.1 * 0.1));
+    }
+  }
+  EXPECT_NEAR(q.energy, energy, 1e-4 * energy);
+  EXPECT_EQ(q.stacked, 0u);
+
+  double partner_energy = 1.0;  // a second particle on lattice[7]: w(0) with it, and its pairs with the rest
+  for (std::size_t b = 0; b < lattice.size(); ++b) {
+    if (b != 7) partner_energy += std::exp(-(*distances_)(lattice[7], lattice[b]) / (2 * 0.1 * 0.1));
+  }
+  lattice.push_back(lattice[7]);
+  const DistributionQuality stacked = measure(lattice);
+  EXPECT_EQ(stacked.stacked, 1u);
+  EXPECT_EQ(*stacked.nn_min, 0.0);
+  EXPECT_EQ(*stacked.rho, 0.0);
+  EXPECT_NEAR(stacked.energy, q.energy + partner_energy, 1e-9 * stacked.energy);
+}
+
+TEST(Quality, AComponentWithoutParticlesLeavesTheCoverUndefined) {
+  const MeshWithDistances m("two_pieces.off");
+  ASSERT_EQ(m.mesh.component_count(), 2u);
+  std::vector<VertexId> one_side, both_sides;
+  for (VertexId v = 0; v < m.mesh.vertex_count(); ++v) {
+    if (m.mesh.component_of(v) == m.mesh.component_of(0) && one_side.size() < 2) one_side.push_back(v);
+    if (m.mesh.component_of(v) != m.mesh.component_of(0) && both_sides.empty()) both_sides.push_back(v);
+  }
+  both_sides.push_back(0);
+  const EnergyParams energy{Potential::exp, 1.0};
+  const DistributionQuality one = measure_quality(m.mesh, m.distances, one_side, energy);
+  EXPECT_FALSE(one.cover.has_value());
+  EXPECT_TRUE(one.nn_min.has_value());
+  // One particle in each component: neither has a neighbour, both cover their own.
+  const DistributionQuality two = measure_quality(m.mesh, m.distances, both_sides, energy);
+  EXPECT_FALSE(two.nn_min.has_value());
+  EXPECT_TRUE(two.cover.has_value());
+  EXPECT_EQ(two.energy, 0.0);
+  EXPECT_TRUE(quality_json(two)["nn_min"].is_null());
+}
+
+std::string error_of(const std::string& name) {
+  try {
+    read_particle_points(std::string(TEST_DATA_DIR) + "/particles/" + name);
+  } catch (const UserError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+TEST(ParticleFile, BadFilesGiveAClearError) {
+  EXPECT_NE(error_of("missing.particles").find("missing.particles: no such file"), std::string::npos);
+  EXPECT_NE(error_of("empty.particles").find("empty.particles: no particles"), std::string::npos);
+  EXPECT_NE(error_of("two_numbers.particles").find("line 2 is not three numbers"), std::string::npos);
+  EXPECT_NE(error_of("four_numbers.particles").find("line 1 is not three numbers"), std::string::npos);
+  EXPECT_NE(error_of("header.particles").find("line 1 is not three numbers"), std::string::npos);
+  EXPECT_NE(error_of("nan.particles").find("line 2"), std::string::npos);
+  EXPECT_NE(error_of("").find("is a directory"), std::string::npos);
+}
+
+TEST(ParticleFile, PointsSnapToTheNearestVertexAndTheLargestSnapIsReported) {
+  const auto points = read_particle_points(std::string(TEST_DATA_DIR) + "/particles/blank_lines.particles");
+  ASSERT_EQ(points.size(), 2u);
+  const MeshWithDistances m("tetrahedron.off");
+  std::vector<Vec3> shifted;
+  for (VertexId v = 0; v < m.mesh.vertex_count(); ++v) shifted.push_back(m.mesh.positions()[v] + Vec3{0.01 * v, 0, 0});
+  const SnappedParticles snapped = snap_to_vertices(m.mesh, shifted);
+  for (VertexId v = 0; v < m.mesh.vertex_count(); ++v) EXPECT_EQ(snapped.positions[v], v);
+  EXPECT_NEAR(snapped.largest_snap, 0.01 * double(m.mesh.vertex_count() - 1), 1e-12);
+  EXPECT_EQ(snapped.largest_snap_particle, m.mesh.vertex_count() - 1);
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
