@@ -9,7 +9,7 @@ PACKAGES=(
   build-essential cmake pkg-config
   opencl-headers opencl-clhpp-headers ocl-icd-opencl-dev pocl-opencl-icd
   libopenmesh-dev libgtest-dev libcli11-dev nlohmann-json3-dev
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-meshio
 )
 
 missing=()

@@ -107,4 +107,5 @@ expect_exit(compare_needs_two 2 "particles" compare ${TORUS} ${PARTICLES_DATA}/b
 expect_exit(compare_bad_second 2 "header\\.particles: line 1 is not three numbers" compare ${TORUS} ${PARTICLES_DATA}/blank_lines.particles ${PARTICLES_DATA}/header.particles)
 add_test(NAME cli.quality_commands
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/quality_commands.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes/patch.off
-                 ${CMAKE_CURRENT_BINARY_DIR}/quality_commands)
+                 ${CMAKE_CURRENT_BINARY_DIR}/quality_commands ${PROJECT_SOURCE_DIR}/scripts)
+expect_exit(bench_quality_csv 2 "--csv applies to the timing tables \\(with --quality, use --json\\)" bench --quality --csv ${CMAKE_CURRENT_BINARY_DIR}/q.csv)

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# quality_commands.sh MESHPARTICLES MESH WORKDIR: the quality loop end to end.
-# run --iterations 0 writes the start with its quality; `quality` on that
-# file reproduces the report's metrics; `compare` of a file with itself finds
-# zero distances both ways; a run that iterates lowers the energy it reports.
+# quality_commands.sh MESHPARTICLES MESH WORKDIR SCRIPTS: the quality loop
+# end to end. run --iterations 0 writes the start with its quality and the
+# ParaView files; `quality` on that file reproduces the report's metrics;
+# `compare` of a file with itself finds zero distances both ways; a run that
+# iterates lowers the energy it reports; bench --quality tabulates the
+# baselines; render.py and plot_trace.py draw them.
 set -euo pipefail
-bin=$1 mesh=$2 work=$3
+bin=$1 mesh=$2 work=$3 scripts=$4
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 json() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))" "$@"; }
@@ -36,4 +38,21 @@ import json, sys
 print(json.load(open(sys.argv[2]))['quality']['energy'] < json.load(open(sys.argv[1]))['quality']['energy'])" \
   "$work/start/report.json" "$work/end/report.json")
 [ "$lower" = True ] || fail "the run did not lower the energy of its start"
+[ -s "$work/end/particles.ply" ] && [ -s "$work/end/mesh_distance.vtk" ] || fail "no ParaView files"
+
+"$bin" bench --quality --case torus:64 --backend serial,field --json "$work/bench_quality.json" -q > "$work/bench_quality.txt"
+grep -q "^farthest " "$work/bench_quality.txt" || fail "bench --quality has no farthest row"
+rows=$(json "$work/bench_quality.json" "[r['placement'] + '/' + str(r['backend']) for r in d['quality_cases'][0]['rows']]")
+[ "$rows" = "['random/None', 'farthest/None', 'paper: v0 + sequential/serial', 'default/serial', 'default/field']" ] \
+  || fail "bench --quality rows: $rows"
+[ "$(json "$work/bench_quality.json" "abs(d['quality_cases'][0]['rows'][4]['energy_vs_serial']) < 0.005")" = True ] \
+  || fail "field's energy is not within 0.5% of the serial reference's"
+
+"$scripts/render.py" "$mesh" "$work/start/particles.particles" "$work/end/particles.particles" --out "$work/render.png" > /dev/null
+"$scripts/plot_trace.py" "$work/end/report.json" --out "$work/trace.png" > /dev/null
+[ -s "$work/render.png" ] && [ -s "$work/trace.png" ] || fail "render.py or plot_trace.py wrote no PNG"
+if "$scripts/render.py" "$mesh" "$work/start/report.json" --out "$work/bad.png" 2> "$work/render_error.txt"; then
+  fail "render.py accepted a JSON file as particles"
+fi
+grep -q "not a particle file" "$work/render_error.txt" || fail "render.py: no clear error for a bad particle file"
 echo "ok"

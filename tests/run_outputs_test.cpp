@@ -11,6 +11,7 @@
 #include "common/user_error.hpp"
 #include "particle_test_support.hpp"
 #include "particles/particle_run.hpp"
+#include "quality/distribution_quality.hpp"
 #include "reports/run_outputs.hpp"
 
 namespace meshparticles::testing {
@@ -35,7 +36,8 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
 
   const auto directory = std::filesystem::temp_directory_path() / ("mp_outputs_" + std::to_string(::getpid()));
   prepare_output_directory(directory / "nested");
-  write_run_outputs(directory / "nested", mesh, outcome.positions, report);
+  const std::vector<float> field = distance_to_nearest_particle(distances, outcome.positions);
+  write_run_outputs(directory / "nested", mesh, outcome.positions, report, field);
 
   const std::string csv = slurp(directory / "nested" / "particles.csv");
   std::istringstream rows(csv);
@@ -60,6 +62,24 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   EXPECT_EQ(written["stopped"], outcome.converged ? "converged" : "max_iterations");
   EXPECT_EQ(written["trace"].size(), outcome.trace.size());
   EXPECT_FALSE(written.contains("avg_kernel_ms"));  // serial: no kernels
+
+  // ParaView files: a PLY vertex element per particle, a VTK value per vertex.
+  std::istringstream ply(slurp(directory / "nested" / "particles.ply"));
+  std::string line;
+  std::getline(ply, line);
+  EXPECT_EQ(line, "ply");
+  while (std::getline(ply, line) && line.rfind("element vertex", 0) != 0) {}
+  EXPECT_EQ(line, "element vertex " + std::to_string(outcome.positions.size()));
+  const std::string vtk = slurp(directory / "nested" / "mesh_distance.vtk");
+  EXPECT_NE(vtk.find("POINTS " + std::to_string(mesh.vertex_count()) + " float"), std::string::npos);
+  EXPECT_NE(vtk.find("POLYGONS " + std::to_string(mesh.triangle_count())), std::string::npos);
+  const auto values_at = vtk.find("LOOKUP_TABLE default\n");
+  ASSERT_NE(values_at, std::string::npos);
+  std::istringstream values(vtk.substr(values_at + 21));
+  std::size_t zeros = 0, count = 0;
+  for (double value; values >> value; ++count) zeros += value == 0.0;
+  EXPECT_EQ(count, mesh.vertex_count());
+  EXPECT_GE(zeros, 1u);  // the vertices the particles sit on
   std::filesystem::remove_all(directory);
 }
 

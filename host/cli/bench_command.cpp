@@ -13,6 +13,8 @@
 #include "common/user_error.hpp"
 #include "geodesics/distance_cache.hpp"
 #include "mesh/mesh_generator.hpp"
+#include "particles/particle_run.hpp"
+#include "quality/quality_bench.hpp"
 #include "reports/bench_report.hpp"
 #include "tuning/paper_figures.hpp"
 #include "tuning/tuning_store.hpp"
@@ -32,6 +34,7 @@ struct BenchOptions {
   std::string csv;
   std::string json;
   std::string tuning_file;
+  bool quality = false;
   DistanceTableOptions table;
 };
 
@@ -42,6 +45,9 @@ struct CaseRequest {
 
 std::vector<CaseRequest> requested_cases(const BenchOptions& options) {
   std::vector<CaseRequest> cases;
+  if (options.cases.empty() && options.quality) {  // each committed mesh at its largest paper case
+    return {{"sphere", 1024}, {"torus", 512}, {"atrium", 1024}};
+  }
   if (options.cases.empty()) {
     for (const auto& figures : paper_figures()) cases.push_back({figures.mesh, figures.particles});
     return cases;
@@ -84,6 +90,7 @@ void run_bench(const BenchOptions& options, bool colors_given) {
   settings.colors = options.colors;
   settings.iterations = options.iterations;
   if (settings.iterations == 0) throw UserError("--iterations must be at least 1");
+  if (options.quality && !options.csv.empty()) throw UserError("--csv applies to the timing tables (with --quality, use --json)");
   for (const auto& file : {options.csv, options.json}) {
     if (!file.empty()) check_writable(file);
   }
@@ -112,8 +119,10 @@ void run_bench(const BenchOptions& options, bool colors_given) {
     }
   }
 
-  ProgressLine progress("bench", requests.size() * settings.backends.size(), options.table.quiet);
+  const std::size_t rows_per_case = settings.backends.size() + (options.quality ? 3 : 0);
+  ProgressLine progress("bench", requests.size() * rows_per_case, options.table.quiet);
   std::vector<BenchCase> results;
+  std::vector<QualityCase> quality_results;
   std::size_t done = 0;
   std::string current_mesh;
   std::optional<DistanceTable> distances;
@@ -129,11 +138,23 @@ void run_bench(const BenchOptions& options, bool colors_given) {
       distances.emplace(load_or_compute_distances(mesh, table.request(GeodesicMethod::fast_marching), source));
       current_mesh = request.mesh;
     }
-    results.push_back(bench_case(request.mesh, mesh, *distances, request.particles, checked[r], settings,
-                                 [&](const std::string& what) { progress.update(done++, what); }));
+    const auto on_row = [&](const std::string& what) { progress.update(done++, what); };
+    if (options.quality) {
+      quality_results.push_back(
+          quality_case(request.mesh, mesh, *distances, request.particles, checked[r], kDefaultMaxIterations, on_row));
+    } else {
+      results.push_back(bench_case(request.mesh, mesh, *distances, request.particles, checked[r], settings, on_row));
+    }
   }
   progress.update(done);
   progress.finish();
+  if (options.quality) {
+    std::cout << quality_tables(quality_results);
+    if (!options.json.empty()) {
+      write_file_atomically(options.json, [&](std::ostream& out) { out << quality_bench_json(quality_results).dump(2) << "\n"; });
+    }
+    return;
+  }
 
   std::cout << bench_tables(device_name, settings, results);
   if (!options.csv.empty()) write_bench_csv(options.csv, device_name, settings, results);
@@ -171,6 +192,9 @@ void add_bench_command(CLI::App& app) {
   bench->add_option("--meshes-dir", options->meshes_dir, "Where the committed meshes are")->capture_default_str();
   bench->add_option("--csv", options->csv, "Also write the rows as CSV to this file");
   bench->add_option("--json", options->json, "Also write the rows as JSON to this file");
+  bench->add_flag("--quality", options->quality,
+                  "Instead of timing: the quality of random, farthest-point, the paper's start with its sequential "
+                  "loop, and the default run on each backend (default cases: sphere:1024, torus:512, atrium:1024)");
   bench->add_option("--tuning-file", options->tuning_file,
                     "Sizes saved by `sweep --save` (default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
   add_distance_table_options(*bench, options->table);

@@ -23,7 +23,7 @@ namespace {
 struct RunOptions {
   std::string mesh;
   std::size_t particles = 1024;
-  std::size_t iterations = 500;
+  std::size_t iterations = kDefaultMaxIterations;
   BackendRequest backend;
   std::string scheme;  // default: sequential on the serial backends, colored on devices
   std::optional<unsigned> colors;
@@ -67,7 +67,8 @@ void print_summary(const RunOptions& options, const nlohmann::json& report, cons
   std::printf("time        %.3f ms/iteration", report["avg_iteration_ms"].get<double>());
   if (report.contains("avg_kernel_ms")) std::printf(" (update kernels %.3f ms)", report["avg_kernel_ms"].get<double>());
   std::printf("\nquality     %s", quality_line(quality).c_str());
-  std::printf("\noutput      %s/{particles.particles, particles.csv, report.json}\n", options.out.c_str());
+  std::printf("\noutput      %s/{particles.particles, particles.csv, report.json, particles.ply, mesh_distance.vtk}\n",
+              options.out.c_str());
 }
 
 void run_run(RunOptions options) {
@@ -124,7 +125,8 @@ void run_run(RunOptions options) {
   nlohmann::json report = run_report(mesh, {options.mesh, params, backend->device_name()}, outcome);
   const DistributionQuality quality = measure_quality(mesh, distances, outcome.positions, energy);
   report["quality"] = quality_json(quality);
-  write_run_outputs(options.out, mesh, outcome.positions, report);
+  write_run_outputs(options.out, mesh, outcome.positions, report,
+                    distance_to_nearest_particle(distances, outcome.positions));
   print_summary(options, report, quality);
 }
 

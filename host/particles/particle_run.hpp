@@ -8,10 +8,13 @@
 
 namespace meshparticles {
 
+// The iteration limit of a run when --iterations is absent.
+constexpr std::size_t kDefaultMaxIterations = 500;
+
 struct RunSettings {
   Scheme scheme = Scheme::colored;
   unsigned colors = 8;
-  std::size_t max_iterations = 500;
+  std::size_t max_iterations = kDefaultMaxIterations;
   bool quiet = false;  // no progress line
 };
 

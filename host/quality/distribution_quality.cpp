@@ -20,6 +20,15 @@ nlohmann::json optional_json(const std::optional<double>& value) {
 
 }  // namespace
 
+std::vector<float> distance_to_nearest_particle(const DistanceTable& distances, std::span<const VertexId> positions) {
+  std::vector<float> nearest(distances.vertex_count(), std::numeric_limits<float>::infinity());
+  for (const VertexId p : positions) {
+    const auto row = distances.row(p);
+    for (std::size_t v = 0; v < nearest.size(); ++v) nearest[v] = std::min(nearest[v], row[v]);
+  }
+  return nearest;
+}
+
 DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy) {
   DistributionQuality quality;
@@ -59,12 +68,7 @@ DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable
 
   if (n > 0) {
     double farthest = 0;  // the covering radius: the vertex farthest from every particle
-    std::vector<float> to_nearest(mesh.vertex_count(), std::numeric_limits<float>::infinity());
-    for (const VertexId p : positions) {
-      const auto row = distances.row(p);
-      for (std::size_t v = 0; v < to_nearest.size(); ++v) to_nearest[v] = std::min(to_nearest[v], row[v]);
-    }
-    for (const float d : to_nearest) farthest = std::max(farthest, double(d));
+    for (const float d : distance_to_nearest_particle(distances, positions)) farthest = std::max(farthest, double(d));
     if (!std::isinf(farthest)) quality.cover = farthest / quality.d_hex;
   }
 

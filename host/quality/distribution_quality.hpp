@@ -25,6 +25,10 @@ struct DistributionQuality {
   std::size_t stacked = 0;      // particles on a vertex a lower-index particle occupies
 };
 
+// The geodesic distance from every vertex to its nearest particle (+inf in a
+// component without particles): the covering radius is its maximum.
+std::vector<float> distance_to_nearest_particle(const DistanceTable& distances, std::span<const VertexId> positions);
+
 DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy);
 

@@ -6,6 +6,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
+#include "reports/paraview_export.hpp"
 
 namespace meshparticles {
 
@@ -82,9 +83,13 @@ void prepare_output_directory(const std::filesystem::path& directory) {
 }
 
 void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh,
-                       const std::vector<VertexId>& positions, const nlohmann::json& report) {
+                       const std::vector<VertexId>& positions, const nlohmann::json& report,
+                       std::span<const float> distance_to_nearest_particle) {
   write_file_atomically(directory / "particles.particles", [&](std::ostream& out) { write_points(out, mesh, positions); });
   write_file_atomically(directory / "particles.csv", [&](std::ostream& out) { write_csv(out, mesh, positions); });
+  write_particles_ply(directory / "particles.ply", mesh, positions);
+  write_mesh_field_vtk(directory / "mesh_distance.vtk", mesh, distance_to_nearest_particle,
+                       "distance_to_nearest_particle");
   write_file_atomically(directory / "report.json", [&](std::ostream& out) { out << report.dump(2) << "\n"; });
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // What `meshparticles run` leaves in its output directory, each file written
 // atomically: particles.particles (ShapeWorks: one "x y z" per line),
-// particles.csv (particle,vertex,x,y,z with input vertex ids) and
-// report.json (mesh, parameters, device, trace, timings).
+// particles.csv (particle,vertex,x,y,z with input vertex ids), report.json
+// (mesh, parameters, device, trace, timings, quality), and for ParaView
+// particles.ply (point cloud) and mesh_distance.vtk (the mesh with the
+// distance from each vertex to its nearest particle).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -24,6 +26,7 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunContext& context, co
 void prepare_output_directory(const std::filesystem::path& directory);
 
 void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh,
-                       const std::vector<VertexId>& positions, const nlohmann::json& report);
+                       const std::vector<VertexId>& positions, const nlohmann::json& report,
+                       std::span<const float> distance_to_nearest_particle);
 
 }  // namespace meshparticles

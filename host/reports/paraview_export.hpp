@@ -1,0 +1,22 @@
+#pragma once
+// Files ParaView (and most viewers) open directly: the particles as a PLY
+// point cloud, and the mesh with one value per vertex as a VTK legacy
+// polydata file. Plain ASCII, written atomically.
+#include <filesystem>
+#include <span>
+#include <string>
+
+#include "mesh/surface_mesh.hpp"
+
+namespace meshparticles {
+
+// One vertex element per particle, with its index and mesh vertex (input id).
+void write_particles_ply(const std::filesystem::path& file, const SurfaceMesh& mesh,
+                         std::span<const VertexId> positions);
+
+// The mesh's triangles with `values[v]` at each vertex, named `name`
+// (infinite values, e.g. a component without particles, are written as -1).
+void write_mesh_field_vtk(const std::filesystem::path& file, const SurfaceMesh& mesh, std::span<const float> values,
+                          const std::string& name);
+
+}  // namespace meshparticles
