@@ -46,7 +46,7 @@ struct CaseRequest {
 std::vector<CaseRequest> requested_cases(const BenchOptions& options) {
   std::vector<CaseRequest> cases;
   if (options.cases.empty() && options.quality) {  // each committed mesh at its largest paper case
-    return {{"sphere", 1024}, {"torus", 512}, {"atrium", 1024}};
+    return {{"sphere", 1024}, {"torus", 512}, {"atrium", 1024}, {"patch", 100}};
   }
   if (options.cases.empty()) {
     for (const auto& figures : paper_figures()) cases.push_back({figures.mesh, figures.particles});
@@ -194,7 +194,8 @@ void add_bench_command(CLI::App& app) {
   bench->add_option("--json", options->json, "Also write the rows as JSON to this file");
   bench->add_flag("--quality", options->quality,
                   "Instead of timing: the quality of random, farthest-point, the paper's start with its sequential "
-                  "loop, and the default run on each backend (default cases: sphere:1024, torus:512, atrium:1024)");
+                  "loop, and the default run on each backend (default cases: sphere:1024, torus:512, atrium:1024, "
+                  "patch:100)");
   bench->add_option("--tuning-file", options->tuning_file,
                     "Sizes saved by `sweep --save` (default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
   add_distance_table_options(*bench, options->table);
