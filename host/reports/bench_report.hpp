@@ -1,6 +1,6 @@
 #pragma once
 // What `meshparticles bench` prints and writes: per mesh, a block in the
-// layout of the paper's Tables 1 and 2 (rows serial/naive/tiled, columns
+// layout of the paper's Tables 1 and 2 (a row per backend: serial, naive, tiled, field, columns
 // particle counts) with our figure, its speed-up over our serial row, and
 // the paper's figure and speed-up beside it; the same as CSV and JSON.
 #include <filesystem>
