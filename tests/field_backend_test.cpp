@@ -125,7 +125,9 @@ TEST(Field, AFloat32FieldWouldDrift) {
   const MeshWithDistances m("torus.off");
   const EnergyParams energy = m.default_energy(kParticles);
   const float inv_two_sigma_sq = float(energy.inv_two_sigma_sq());
-  const auto weight = [&](VertexId a, std::size_t v) { return std::exp(-m.distances.row(a)[v] * inv_two_sigma_sq); };
+  const auto weight = [&](VertexId a, std::size_t v) {
+    return pair_weight_float(energy.potential, m.distances.row(a)[v], inv_two_sigma_sq);
+  };
   const std::size_t vertices = m.mesh.vertex_count();
   std::vector<VertexId> positions = place_particles(m.distances, {Init::random, kParticles, 3, std::nullopt});
   SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::float32, 0);

@@ -17,8 +17,7 @@ SerialFieldBackend::SerialFieldBackend(const SurfaceMesh& mesh, const DistanceTa
   const auto& d = distances.values();
   weights_.resize(d.size());
   for (std::size_t i = 0; i < d.size(); ++i) {
-    const float x = energy.potential == Potential::exp ? d[i] : d[i] * d[i];
-    weights_[i] = stored_weight(weights, std::exp(-x * inv_two_sigma_sq));
+    weights_[i] = stored_weight(weights, pair_weight_float(energy.potential, d[i], inv_two_sigma_sq));
   }
   field_.assign(vertex_count_, 0);
   occupancy_.assign(vertex_count_, 0);

@@ -26,14 +26,15 @@ struct QualityOptions {
 void run_quality(const QualityOptions& options) {
   const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet);
   // Read before the distance table, so a bad file fails in a second.
-  for (const auto& file : options.particle_files) read_particle_points(file);
+  std::vector<std::vector<Vec3>> points;
+  for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
   TableSource source;
   const DistanceTable distances =
       load_or_compute_distances(mesh, options.table.request(parse_method(options.geodesic)), source);
   const Potential potential = parse_potential(options.potential);
   std::vector<MeasuredSet> sets;
-  for (const auto& file : options.particle_files) {
-    sets.push_back(measure_particle_file(mesh, distances, file, potential, options.sigma));
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    sets.push_back(measure_particle_file(mesh, distances, options.particle_files[k], points[k], potential, options.sigma));
   }
   const bool comparing = sets.size() == 2;
   double a_to_b = 0, b_to_a = 0;

@@ -123,10 +123,10 @@ void run_run(RunOptions options) {
     if (!checked.sizes_note.empty()) params["sizes_note"] = checked.sizes_note;
   }
   nlohmann::json report = run_report(mesh, {options.mesh, params, backend->device_name()}, outcome);
-  const DistributionQuality quality = measure_quality(mesh, distances, outcome.positions, energy);
+  const std::vector<float> to_nearest = distance_to_nearest_particle(distances, outcome.positions);
+  const DistributionQuality quality = measure_quality(mesh, distances, outcome.positions, energy, to_nearest);
   report["quality"] = quality_json(quality);
-  write_run_outputs(options.out, mesh, outcome.positions, report,
-                    distance_to_nearest_particle(distances, outcome.positions));
+  write_run_outputs(options.out, mesh, outcome.positions, report, to_nearest);
   print_summary(options, report, quality);
 }
 

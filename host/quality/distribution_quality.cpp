@@ -31,6 +31,12 @@ std::vector<float> distance_to_nearest_particle(const DistanceTable& distances, 
 
 DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy) {
+  return measure_quality(mesh, distances, positions, energy, distance_to_nearest_particle(distances, positions));
+}
+
+DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
+                                    std::span<const VertexId> positions, const EnergyParams& energy,
+                                    std::span<const float> to_nearest) {
   DistributionQuality quality;
   const std::size_t n = positions.size();
   quality.particles = n;
@@ -68,7 +74,7 @@ DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable
 
   if (n > 0) {
     double farthest = 0;  // the covering radius: the vertex farthest from every particle
-    for (const float d : distance_to_nearest_particle(distances, positions)) farthest = std::max(farthest, double(d));
+    for (const float d : to_nearest) farthest = std::max(farthest, double(d));
     if (!std::isinf(farthest)) quality.cover = farthest / quality.d_hex;
   }
 

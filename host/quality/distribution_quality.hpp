@@ -29,6 +29,11 @@ struct DistributionQuality {
 // component without particles): the covering radius is its maximum.
 std::vector<float> distance_to_nearest_particle(const DistanceTable& distances, std::span<const VertexId> positions);
 
+// `to_nearest`: distance_to_nearest_particle of these positions, for a
+// caller that also writes it out; the shorter form computes it.
+DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
+                                    std::span<const VertexId> positions, const EnergyParams& energy,
+                                    std::span<const float> to_nearest);
 DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy);
 

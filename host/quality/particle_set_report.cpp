@@ -10,10 +10,10 @@
 namespace meshparticles {
 
 MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceTable& distances, const std::string& path,
-                                  Potential potential, std::optional<double> sigma) {
+                                  const std::vector<Vec3>& points, Potential potential, std::optional<double> sigma) {
   MeasuredSet set;
   set.path = path;
-  set.snapped = snap_to_vertices(mesh, read_particle_points(path));
+  set.snapped = snap_to_vertices(mesh, points);
   const std::size_t n = set.snapped.positions.size();
   set.energy = {potential, sigma.value_or(default_sigma(potential, mesh.area(), n))};
   set.quality = measure_quality(mesh, distances, set.snapped.positions, set.energy);

@@ -18,8 +18,10 @@ struct MeasuredSet {
   DistributionQuality quality;
 };
 
+// `points`: read_particle_points(path), read by the caller before the
+// distance table so that a bad file fails fast.
 MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceTable& distances, const std::string& path,
-                                  Potential potential, std::optional<double> sigma);
+                                  const std::vector<Vec3>& points, Potential potential, std::optional<double> sigma);
 
 // The mean over the particles of `from` of the geodesic distance to the
 // nearest particle of `to` (+inf when some particle has none in its component).

@@ -29,9 +29,9 @@ QualityCase quality_case(const std::string& mesh_name, const SurfaceMesh& mesh, 
   };
   add_start("random", Init::random);
   add_start("farthest", Init::farthest);
-  CheckedBackend serial;
+  BackendRequest serial;
   serial.name = "serial";
-  add_run("paper: v0 + sequential", serial, Init::v0, Scheme::sequential);
+  add_run("paper: v0 + sequential", check_backend(serial, mesh, particles), Init::v0, Scheme::sequential);
   const QualityRow* serial_default = nullptr;
   for (const CheckedBackend& checked : backends) {
     add_run("default", checked, Init::farthest, Scheme::colored);
