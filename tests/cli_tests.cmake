@@ -69,18 +69,20 @@ foreach(backend serial serial-field naive tiled field)
   expect_exit(run_${backend} 0 "particles: [0-9]+ done in .*(converged|iteration limit reached)" run ${TETRA} -n 2 --backend ${backend} --no-cache --out ${RUN_OUT}/${backend})
 endforeach()
 # A kernel that does not build: exit 2, the build log follows the message.
-file(COPY ${PROJECT_SOURCE_DIR}/kernels/ DESTINATION ${CMAKE_CURRENT_BINARY_DIR}/broken_kernels)
-file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/broken_kernels/naive_update.cl "__kernel void naive_update( this is not OpenCL C\n")
-expect_exit_of(run_kernel_build_failure 2 "OpenCL kernels failed to build \\(naive_update\\.cl.*build log:"
-            env MESHPARTICLES_KERNEL_DIR=${CMAKE_CURRENT_BINARY_DIR}/broken_kernels
-            $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend naive --no-cache --out ${RUN_OUT})
-set_tests_properties(cli.run_kernel_build_failure PROPERTIES ENVIRONMENT MULTILINE=1)
-file(COPY ${PROJECT_SOURCE_DIR}/kernels/ DESTINATION ${CMAKE_CURRENT_BINARY_DIR}/broken_field_kernels)
-file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/broken_field_kernels/field.h "#error the field header is broken\n")
-expect_exit_of(run_field_kernel_build_failure 2 "OpenCL kernels failed to build \\(field_weights\\.cl.*build log:"
-            env MESHPARTICLES_KERNEL_DIR=${CMAKE_CURRENT_BINARY_DIR}/broken_field_kernels
-            $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend field --no-cache --out ${RUN_OUT})
-set_tests_properties(cli.run_field_kernel_build_failure PROPERTIES ENVIRONMENT MULTILINE=1)
+# expect_kernel_build_failure(NAME BACKEND FILE TEXT REGEX): `run --backend
+# BACKEND` with kernels/FILE replaced by TEXT.
+function(expect_kernel_build_failure name backend file text pattern)
+  set(dir ${CMAKE_CURRENT_BINARY_DIR}/broken_kernels_${name})
+  file(COPY ${PROJECT_SOURCE_DIR}/kernels/ DESTINATION ${dir})
+  file(WRITE ${dir}/${file} "${text}")
+  expect_exit_of(${name} 2 ${pattern} env MESHPARTICLES_KERNEL_DIR=${dir}
+                 $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend ${backend} --no-cache --out ${RUN_OUT})
+  set_tests_properties(cli.${name} PROPERTIES ENVIRONMENT MULTILINE=1)
+endfunction()
+expect_kernel_build_failure(run_kernel_build_failure naive naive_update.cl
+  "__kernel void naive_update( this is not OpenCL C\n" "OpenCL kernels failed to build \\(naive_update\\.cl.*build log:")
+expect_kernel_build_failure(run_field_kernel_build_failure field field.h
+  "#error the field header is broken\n" "OpenCL kernels failed to build \\(field_weights\\.cl.*build log:")
 # Performance commands: bad arguments, then the tuning loop end to end.
 expect_exit(sweep_zero_iterations 2 "--iterations must be at least 1" sweep ${TORUS} -n 8 --iterations 0 --no-cache)
 expect_exit(sweep_tile_without_tiled 2 "--tile applies to the tiled kernel" sweep ${TORUS} --kernel naive --tile 8)
