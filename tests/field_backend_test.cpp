@@ -58,7 +58,7 @@ TEST(Field, DeviceIncrementalUpdatesMatchARebuildAfter1000Iterations) {
   const MeshWithDistances m("torus.off");
   const EnergyParams energy = m.default_energy(kParticles);
   const auto start = place_particles(m.distances, {Init::random, kParticles, 3, std::nullopt});
-  auto backend = device_backend(m, energy, KernelKind::field, 64);
+  auto backend = device_backend(m, energy, "field", 64);
   const RunOutcome outcome = run_particles(*backend, start, {Scheme::colored, 2, kIterations, true});
   ASSERT_EQ(outcome.trace.size(), kIterations) << "the run settled: the test needs moves";
   EXPECT_GT(total_moved(outcome), 5 * kIterations);
@@ -91,14 +91,14 @@ TEST(Field, RebuildingChangesNothing) {
   const MeshWithDistances m("patch.off");
   const std::size_t particles = 100;
   const EnergyParams energy = m.default_energy(particles);
-  const UpdateKernel kernel = default_update_kernel(KernelKind::field, m.mesh.max_valence() + 1, 64);
+  const UpdateKernel kernel = default_update_kernel(field_backend(), m.mesh.max_valence() + 1, 64);
   for (const Init init : {Init::random, Init::v0}) {
     SCOPED_TRACE(init_name(init));
     const auto start = place_particles(m.distances, {init, particles, 4, std::nullopt});
     SerialFieldBackend serial_never(m.mesh, m.distances, energy, WeightFormat::float32, 0);
     SerialFieldBackend serial_always(m.mesh, m.distances, energy, WeightFormat::float32, 1);
-    FieldBackend device_never(select_device(""), m.mesh, m.distances, energy, kernel, 0);
-    FieldBackend device_always(select_device(""), m.mesh, m.distances, energy, kernel, 1);
+    FieldBackend device_never(select_device(""), kernel, {m.mesh, m.distances, energy, WeightFormat::float32, 0});
+    FieldBackend device_always(select_device(""), kernel, {m.mesh, m.distances, energy, WeightFormat::float32, 1});
     const std::pair<ParticleBackend*, ParticleBackend*> pairs[] = {{&serial_never, &serial_always},
                                                                    {&device_never, &device_always}};
     for (const auto& [never, always] : pairs) {
@@ -173,7 +173,7 @@ TEST(Field, HalfWeightsGiveTheSameRunOnBothTwins) {
   const EnergyParams energy = m.default_energy(kParticles);
   const auto start = place_particles(m.distances, {Init::farthest, kParticles, 1, std::nullopt});
   SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::half, 0);
-  auto device = device_backend(m, energy, KernelKind::field, 32, 0, WeightFormat::half);
+  auto device = device_backend(m, energy, "field", 32, 0, WeightFormat::half);
   const RunOutcome expected = run_particles(twin, start, {Scheme::colored, 8, 50, true});
   const RunOutcome got = run_particles(*device, start, {Scheme::colored, 8, 50, true});
   EXPECT_EQ(got.positions, expected.positions);

@@ -145,16 +145,19 @@ TEST(Geodesics, ResultDoesNotDependOnThreadCount) {
 }
 
 TEST(MemoryGuard, RefusesATableThatDoesNotFitAndSaysWhatWould) {
-  EXPECT_NO_THROW(check_distance_table_fits(1000, 1ull << 30, "host memory"));
+  EXPECT_NO_THROW(check_table_fits(1000, 4, 1ull << 30, "distance table", "host memory"));
   try {
-    check_distance_table_fits(100000, 1ull << 30, "host memory");
+    check_table_fits(100000, 4, 1ull << 30, "distance table", "host memory");
     FAIL() << "a 37 GiB table was accepted with 1 GiB available";
   } catch (const UserError& error) {
     const std::string message = error.what();
-    EXPECT_NE(message.find("100000 x 100000"), std::string::npos) << message;
-    EXPECT_NE(message.find("at most 15"), std::string::npos) << message;  // sqrt(0.85 GiB / 4) = 15,109
+    EXPECT_NE(message.find("the 100000 x 100000 distance table needs 37.25 GiB but host memory holds 1.00 GiB"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("at most 16384 vertices fit"), std::string::npos) << message;  // sqrt(2^30 / 4)
   }
   EXPECT_EQ(max_vertices_for(400), 10u);
+  EXPECT_EQ(max_vertices_for(600, 6), 10u);
 }
 
 }  // namespace

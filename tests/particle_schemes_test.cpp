@@ -30,9 +30,9 @@ TEST(WholeRuns, SynchronousAndColoredAgreeOnEveryBackend) {
     SerialBackend reference(m.mesh, m.distances, energy);
     const RunOutcome expected = run(reference, start, scheme, colors, 50);
     ASSERT_EQ(expected.trace.size(), 50u) << "the runs should still be moving particles";
-    for (const KernelSize& size : {KernelSize{KernelKind::naive, 16, 0}, KernelSize{KernelKind::naive, 5, 0},
-                                   KernelSize{KernelKind::tiled, 64, 256}, KernelSize{KernelKind::tiled, 24, 7},
-                                   KernelSize{KernelKind::field, 64, 0}, KernelSize{KernelKind::field, 5, 0}}) {
+    for (const KernelSize& size : {KernelSize{"naive", 16, 0}, KernelSize{"naive", 5, 0},
+                                   KernelSize{"tiled", 64, 256}, KernelSize{"tiled", 24, 7},
+                                   KernelSize{"field", 64, 0}, KernelSize{"field", 5, 0}}) {
       SCOPED_TRACE(describe(size));
       auto kernel = device_backend(m, energy, size.kind, size.work_group, size.tile);
       const RunOutcome got = run(*kernel, start, scheme, colors, 50);
@@ -69,9 +69,9 @@ TEST(WholeRuns, SequentialAgreesOnEveryBackend) {
     ASSERT_GT(expected.trace.size(), 2u);
     std::vector<std::unique_ptr<ParticleBackend>> backends;
     backends.push_back(std::make_unique<SerialFieldBackend>(m.mesh, m.distances, energy, WeightFormat::float32, 0));
-    backends.push_back(device_backend(m, energy, KernelKind::naive, 8));
-    backends.push_back(device_backend(m, energy, KernelKind::tiled, 16, 32));
-    backends.push_back(device_backend(m, energy, KernelKind::field, 16));
+    backends.push_back(device_backend(m, energy, "naive", 8));
+    backends.push_back(device_backend(m, energy, "tiled", 16, 32));
+    backends.push_back(device_backend(m, energy, "field", 16));
     for (const auto& backend : backends) {
       const RunOutcome got = run(*backend, start, Scheme::sequential, 1, 30);
       EXPECT_EQ(got.positions, expected.positions);
@@ -125,7 +125,7 @@ TEST(Schemes, EverySchemeSeparatesThePapersStart) {
     return std::set<VertexId>(positions.begin(), positions.end()).size();
   };
   SerialBackend serial(m.mesh, m.distances, energy);
-  auto tiled = device_backend(m, energy, KernelKind::tiled, 64, 128);
+  auto tiled = device_backend(m, energy, "tiled", 64, 128);
   EXPECT_EQ(distinct(run(serial, start, Scheme::sequential, 1, 300).positions), particles);
   for (const auto& [scheme, colors] : {std::pair{Scheme::synchronous, 1u}, std::pair{Scheme::colored, 8u}}) {
     SCOPED_TRACE(scheme_name(scheme));

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/backend_table.hpp"
 #include "backends/device_backend.hpp"
 #include "backends/serial_backend.hpp"
 #include "geodesics/distance_table.hpp"
@@ -32,19 +33,20 @@ struct MeshWithDistances {
 };
 
 inline std::unique_ptr<DeviceBackend> device_backend(const MeshWithDistances& m, const EnergyParams& energy,
-                                                     KernelKind kind, std::size_t work_group, std::size_t tile = 0,
+                                                     const std::string& kind, std::size_t work_group,
+                                                     std::size_t tile = 0,
                                                      WeightFormat weights = WeightFormat::float32) {
   UpdateKernel kernel;
-  kernel.kind = kind;
+  kernel.backend = &find_backend(kind);
   kernel.work_group_size = work_group;
   kernel.tile_size = tile;
   kernel.candidate_slots = m.mesh.max_valence() + 1;
   kernel.weights = weights;
-  return make_device_backend(select_device(""), m.mesh, m.distances, energy, kernel);
+  return make_device_backend(select_device(""), kernel, BackendInputs{m.mesh, m.distances, energy});
 }
 
 struct KernelSize {
-  KernelKind kind;
+  std::string kind;  // a device backend
   std::size_t work_group;
   std::size_t tile;
 };
@@ -53,18 +55,18 @@ struct KernelSize {
 // one, odd, larger than the work-group and larger than n.
 inline const std::vector<KernelSize>& kernel_sizes() {
   static const std::vector<KernelSize> sizes = {
-      {KernelKind::naive, 1, 0},    {KernelKind::naive, 3, 0},    {KernelKind::naive, 8, 0},
-      {KernelKind::naive, 32, 0},   {KernelKind::tiled, 1, 1},    {KernelKind::tiled, 5, 3},
-      {KernelKind::tiled, 12, 7},   {KernelKind::tiled, 64, 256}, {KernelKind::tiled, 100, 1000},
-      {KernelKind::tiled, 256, 33}, {KernelKind::field, 1, 0},    {KernelKind::field, 7, 0},
-      {KernelKind::field, 64, 0},   {KernelKind::field, 256, 0},
+      {"naive", 1, 0},    {"naive", 3, 0},    {"naive", 8, 0},
+      {"naive", 32, 0},   {"tiled", 1, 1},    {"tiled", 5, 3},
+      {"tiled", 12, 7},   {"tiled", 64, 256}, {"tiled", 100, 1000},
+      {"tiled", 256, 33}, {"field", 1, 0},    {"field", 7, 0},
+      {"field", 64, 0},   {"field", 256, 0},
   };
   return sizes;
 }
 
 inline std::string describe(const KernelSize& size) {
-  return kernel_kind_name(size.kind) + " wg " + std::to_string(size.work_group) +
-         (size.kind == KernelKind::tiled ? " tile " + std::to_string(size.tile) : "");
+  return size.kind + " wg " + std::to_string(size.work_group) +
+         (size.kind == "tiled" ? " tile " + std::to_string(size.tile) : "");
 }
 
 }  // namespace meshparticles::testing

@@ -13,6 +13,7 @@
 #include "particle_test_support.hpp"
 #include "particles/particle_file.hpp"
 #include "quality/distribution_quality.hpp"
+#include "reports/quality_report.hpp"
 
 namespace meshparticles::testing {
 namespace {

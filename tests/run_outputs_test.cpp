@@ -1,5 +1,5 @@
-// What a run leaves behind: the three files, complete, with input vertex ids
-// and the report's promised keys.
+// What a run leaves behind: every file, complete, with input vertex ids and
+// the report's promised keys - from the real pipeline, as `run` calls it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,9 +10,9 @@
 
 #include "common/user_error.hpp"
 #include "particle_test_support.hpp"
-#include "particles/particle_run.hpp"
-#include "quality/distribution_quality.hpp"
+#include "pipeline/run_pipeline.hpp"
 #include "reports/run_outputs.hpp"
+#include "reports/run_report.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -26,18 +26,26 @@ std::string slurp(const std::filesystem::path& file) {
 
 TEST(RunOutputs, WritesParticlesCsvAndReport) {
   std::vector<std::string> warnings;
-  // Vertices 0 and 1 of this file have no face: the surface's ids differ from the file's.
+  // Vertices 0 and 3 of this file have no face: the surface's ids differ from the file's.
   const SurfaceMesh mesh = read_mesh(std::string(TEST_DATA_DIR) + "/unreferenced_vertices.off", warnings);
-  const DistanceTable distances = compute_all_pairs(mesh, GeodesicMethod::fast_marching, 1, true);
-  SerialBackend serial(mesh, distances, {Potential::exp, 0.5});
-  const std::vector<VertexId> start = {0, 0};
-  const RunOutcome outcome = run_particles(serial, start, {Scheme::sequential, 1, 10, true});
-  const nlohmann::json report = run_report(mesh, {"m.off", {{"n", 2}}, "serial"}, outcome);
+  RunRequest request;
+  request.mesh_label = "m.off";
+  request.particles = 2;
+  request.max_iterations = 10;
+  request.backend.name = "serial";
+  request.init = Init::v0;
+  request.start_vertex = 1;  // the file's vertex 1 is the surface's vertex 0
+  request.sigma = 0.5;
+  request.quiet = true;  // no cache directory: computed
+  const RunResult result = run_pipeline(mesh, request);
+  const RunOutcome& outcome = result.outcome;
+  EXPECT_EQ(result.start, (std::vector<VertexId>{0, 0}));
+  EXPECT_EQ(result.plan.scheme, Scheme::sequential) << "the serial backend's default";
 
   const auto directory = std::filesystem::temp_directory_path() / ("mp_outputs_" + std::to_string(::getpid()));
   prepare_output_directory(directory / "nested");
-  const std::vector<float> field = distance_to_nearest_particle(distances, outcome.positions);
-  write_run_outputs(directory / "nested", mesh, outcome.positions, report, field);
+  const nlohmann::json report = run_report(mesh, result, directory / "nested");
+  write_run_outputs(directory / "nested", mesh, result, report);
 
   const std::string csv = slurp(directory / "nested" / "particles.csv");
   std::istringstream rows(csv);
@@ -56,9 +64,14 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   EXPECT_EQ(lines, outcome.positions.size());
 
   const auto written = nlohmann::json::parse(slurp(directory / "nested" / "report.json"));
-  for (const char* key : {"mesh", "params", "device", "iterations_run", "stopped", "trace", "avg_iteration_ms"}) {
+  for (const char* key : {"mesh", "params", "device", "iterations_run", "stopped", "trace", "avg_iteration_ms",
+                          "quality", "seconds", "distances"}) {
     EXPECT_TRUE(written.contains(key)) << key;
   }
+  EXPECT_EQ(written["params"]["start_vertex"], 1);
+  EXPECT_EQ(written["params"]["sigma"], 0.5);
+  EXPECT_EQ(written["params"]["sigma_from"], "--sigma");
+  EXPECT_EQ(written["quality"]["energy"], result.quality.energy);
   EXPECT_EQ(written["stopped"], outcome.converged ? "converged" : "max_iterations");
   EXPECT_EQ(written["trace"].size(), outcome.trace.size());
   EXPECT_FALSE(written.contains("avg_kernel_ms"));  // serial: no kernels

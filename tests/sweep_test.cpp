@@ -10,16 +10,17 @@
 
 #include <unistd.h>
 
+#include "backends/backend_table.hpp"
 #include "particle_test_support.hpp"
 #include "particles/initial_placement.hpp"
-#include "tuning/sweep.hpp"
+#include "measurement/sweep.hpp"
 
 namespace meshparticles::testing {
 namespace {
 
-UpdateKernel sizes(KernelKind kind, std::size_t wg, std::size_t tile, const SurfaceMesh& mesh) {
+UpdateKernel sizes(const std::string& kind, std::size_t wg, std::size_t tile, const SurfaceMesh& mesh) {
   UpdateKernel kernel;
-  kernel.kind = kind;
+  kernel.backend = &find_backend(kind);
   kernel.work_group_size = wg;
   kernel.tile_size = tile;
   kernel.candidate_slots = mesh.max_valence() + 1;
@@ -28,10 +29,11 @@ UpdateKernel sizes(KernelKind kind, std::size_t wg, std::size_t tile, const Surf
 
 TEST(SweepConfigurations, NaiveTakesNoTiles) {
   const auto configurations =
-      sweep_configurations({KernelKind::naive, KernelKind::tiled}, {8, 64}, {16, 32, 64}, 7);
-  ASSERT_EQ(configurations.size(), 2u + 6u);
-  EXPECT_EQ(configurations[0].kind, KernelKind::naive);
-  EXPECT_EQ(configurations[2].kind, KernelKind::tiled);
+      sweep_configurations({"naive", "tiled", "naive"}, {8, 64, 8}, {16, 32, 64}, 7, WeightFormat::half);
+  ASSERT_EQ(configurations.size(), 2u + 6u) << "each kernel and size once";
+  EXPECT_EQ(configurations[0].name(), "naive");
+  EXPECT_EQ(configurations[0].weights, WeightFormat::float32) << "naive takes no weight format";
+  EXPECT_EQ(configurations[2].name(), "tiled");
   EXPECT_EQ(configurations[2].tile_size, 16u);
   EXPECT_EQ(configurations.back().work_group_size, 64u);
   EXPECT_EQ(configurations.back().tile_size, 64u);
@@ -48,10 +50,10 @@ class SweepTest : public ::testing::Test {
 TEST_F(SweepTest, TimesValidSizesAndSkipsRefusedOnes) {
   const DeviceDescription device = select_device("");
   const std::vector<UpdateKernel> configurations = {
-      sizes(KernelKind::naive, 8, 0, m.mesh), sizes(KernelKind::tiled, 32, 16, m.mesh),
-      sizes(KernelKind::tiled, device.max_work_group_size + 1, 16, m.mesh),
-      sizes(KernelKind::tiled, 8, device.local_memory_bytes, m.mesh)};
-  const auto results = run_sweep(device, m.mesh, m.distances, energy, positions, configurations, settings);
+      sizes("naive", 8, 0, m.mesh), sizes("tiled", 32, 16, m.mesh),
+      sizes("tiled", device.max_work_group_size + 1, 16, m.mesh),
+      sizes("tiled", 8, device.local_memory_bytes, m.mesh)};
+  const auto results = measure_configurations(device, m.mesh, m.distances, energy, positions, configurations, settings);
   ASSERT_EQ(results.size(), 4u);
   for (int k : {0, 1}) {
     EXPECT_EQ(results[k].status, SweepStatus::ok) << results[k].reason;
@@ -62,7 +64,7 @@ TEST_F(SweepTest, TimesValidSizesAndSkipsRefusedOnes) {
   EXPECT_NE(results[2].reason.find("maximum work-group size"), std::string::npos) << results[2].reason;
   EXPECT_EQ(results[3].status, SweepStatus::skipped);
   EXPECT_NE(results[3].reason.find("local memory"), std::string::npos) << results[3].reason;
-  EXPECT_EQ(best_result(results, KernelKind::tiled), &results[1]);
+  EXPECT_EQ(best_result(results, "tiled"), &results[1]);
 }
 
 // A tiled kernel that takes each particle's second-best candidate.
@@ -82,8 +84,8 @@ TEST_F(SweepTest, AWrongKernelIsFailedAndNotTimed) {
   std::ofstream(directory / "tiled_update.cl") << source;
 
   ::setenv("MESHPARTICLES_KERNEL_DIR", directory.c_str(), 1);
-  const auto results = run_sweep(select_device(""), m.mesh, m.distances, energy, positions,
-                                 {sizes(KernelKind::naive, 8, 0, m.mesh), sizes(KernelKind::tiled, 16, 32, m.mesh)},
+  const auto results = measure_configurations(select_device(""), m.mesh, m.distances, energy, positions,
+                                 {sizes("naive", 8, 0, m.mesh), sizes("tiled", 16, 32, m.mesh)},
                                  settings);
   ::unsetenv("MESHPARTICLES_KERNEL_DIR");
   std::filesystem::remove_all(directory);
@@ -92,7 +94,7 @@ TEST_F(SweepTest, AWrongKernelIsFailedAndNotTimed) {
   EXPECT_EQ(results[1].status, SweepStatus::failed);
   EXPECT_NE(results[1].reason.find("differ from the serial reference"), std::string::npos) << results[1].reason;
   EXPECT_EQ(results[1].timing.median_ms, 0.0) << "a failed configuration must not be timed";
-  EXPECT_EQ(best_result(results, KernelKind::tiled), nullptr);
+  EXPECT_EQ(best_result(results, "tiled"), nullptr);
 }
 
 }  // namespace

@@ -1,11 +1,9 @@
 #include "backends/backend_factory.hpp"
 
-#include <algorithm>
-
+#include "backends/backend_table.hpp"
 #include "backends/device_backend.hpp"
-#include "backends/serial_backend.hpp"
-#include "backends/serial_field_backend.hpp"
 #include "common/user_error.hpp"
+#include "geodesics/memory_guard.hpp"
 #include "tuning/tuning_store.hpp"
 
 namespace meshparticles {
@@ -19,7 +17,7 @@ void apply_tuned_sizes(const std::filesystem::path& file, const DeviceDescriptio
                        UpdateKernel& kernel, CheckedBackend& checked) {
   std::optional<TunedSizes> tuned;
   try {
-    tuned = TuningStore::load(file).find(device.name, kernel.kind, particles);
+    tuned = TuningStore::load(file, device_backend_names()).find(device.name, kernel.name(), particles);
   } catch (const UserError& error) {
     checked.sizes_note = error.what();
     checked.tuning_refused = true;
@@ -27,6 +25,12 @@ void apply_tuned_sizes(const std::filesystem::path& file, const DeviceDescriptio
   }
   if (!tuned) {
     checked.sizes_note = "no entry for this device and kernel in " + file.string();
+    return;
+  }
+  if (kernel.spec().takes_tile != (tuned->tile_size > 0)) {
+    checked.sizes_note = "the " + kernel.name() + " entry in " + file.string() + " has " +
+                         (tuned->tile_size > 0 ? "a tile, which this kernel does not take" : "no tile");
+    checked.tuning_refused = true;
     return;
   }
   UpdateKernel candidate = kernel;
@@ -44,62 +48,75 @@ void apply_tuned_sizes(const std::filesystem::path& file, const DeviceDescriptio
   checked.sizes_note = file.string() + ", entry " + tuned->size_class + " measured on " + tuned->measured_on;
 }
 
-}  // namespace
-
-const std::vector<std::string>& backend_names() {
-  static const std::vector<std::string> names = {"serial", "serial-field", "naive", "tiled", "field"};
+std::vector<std::string> names_where(bool (*keep)(const BackendDescriptor&)) {
+  std::vector<std::string> names;
+  for (const BackendDescriptor* backend : backend_table()) {
+    if (keep(*backend)) names.push_back(backend->name);
+  }
   return names;
 }
 
-bool is_device_backend(const std::string& name) { return name == "naive" || name == "tiled" || name == "field"; }
+void check_options_apply(const BackendRequest& request, const BackendDescriptor& backend) {
+  if ((request.weights || request.rebuild_every) && !backend.field_method) {
+    const auto field = names_where([](const BackendDescriptor& b) { return b.field_method; });
+    throw UserError("--weights and --rebuild-every apply to the " + choice_list(field, "and") + " backends, not " +
+                    backend.name);
+  }
+  if ((request.work_group_size || request.tile_size) && !backend.on_device()) {
+    throw UserError("--wg and --tile apply to the device backends (" + choice_list(device_backend_names()) +
+                    "), not " + backend.name);
+  }
+  if (request.tile_size && !backend.device->takes_tile) {
+    const auto tiled = names_where([](const BackendDescriptor& b) { return b.on_device() && b.device->takes_tile; });
+    throw UserError("--tile applies to the " + choice_list(tiled) + " backend only");
+  }
+}
 
-bool is_field_backend(const std::string& name) { return name == "field" || name == "serial-field"; }
+}  // namespace
+
+const DistanceTable& dense_table_for(const DistanceStore& distances, const std::string& backend) {
+  if (const DistanceTable* table = distances.dense_table()) return *table;
+  throw UserError("the " + backend + " backend needs the complete distance table");
+}
 
 CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& mesh, std::size_t particles) {
   CheckedBackend checked;
-  checked.name = request.name;
-  if (std::find(backend_names().begin(), backend_names().end(), request.name) == backend_names().end()) {
-    throw UserError("unknown backend '" + request.name + "' (choose serial, serial-field, naive, tiled or field)");
-  }
-  if ((request.weights || request.rebuild_every) && !is_field_backend(request.name)) {
-    throw UserError("--weights and --rebuild-every apply to the field and serial-field backends, not " + request.name);
-  }
-  if (request.weights) checked.weights = parse_weight_format(*request.weights);
+  checked.descriptor = &find_backend(request.name);
+  const BackendDescriptor& backend = *checked.descriptor;
+  check_options_apply(request, backend);
+  checked.weights = request.weights.value_or(WeightFormat::float32);
   checked.rebuild_every = request.rebuild_every.value_or(kDefaultRebuildEvery);
-  if (!is_device_backend(request.name)) {
-    if (request.work_group_size || request.tile_size) {
-      throw UserError("--wg and --tile apply to the device backends (naive, tiled, field), not " + request.name);
-    }
-    return checked;
-  }
-  const KernelKind kind = parse_kernel_kind(request.name);
-  if (kind != KernelKind::tiled && request.tile_size) throw UserError("--tile applies to the tiled backend only");
+  check_table_fits(mesh.vertex_count(), sizeof(float) + backend.extra_host_bytes_per_entry,
+                   usable_host_memory_bytes(),
+                   backend.extra_host_bytes_per_entry ? "distance and weight tables" : "distance table",
+                   "host memory");
+  if (!backend.on_device()) return checked;
+
   checked.device = select_device(request.device);
-  UpdateKernel kernel = default_update_kernel(kind, mesh.max_valence() + 1, checked.device->max_work_group_size);
+  UpdateKernel kernel = default_update_kernel(backend, mesh.max_valence() + 1, checked.device->max_work_group_size);
   kernel.weights = checked.weights;
   checked.sizes_from = "built-in default";
   if (request.work_group_size || request.tile_size) {
     if (request.work_group_size) kernel.work_group_size = *request.work_group_size;
     if (request.tile_size) kernel.tile_size = *request.tile_size;
     checked.sizes_from = "--wg/--tile";
-    if (kind == KernelKind::tiled && !(request.work_group_size && request.tile_size)) {
+    if (backend.device->takes_tile && !(request.work_group_size && request.tile_size)) {
       checked.sizes_note = "the size not given is the built-in default";
     }
   } else if (request.tuning_file) {
     apply_tuned_sizes(*request.tuning_file, *checked.device, particles, kernel, checked);
   }
   check_device_limits(*checked.device, kernel);
+  check_device_memory(*checked.device, kernel, mesh.vertex_count(), mesh.edge_count(), particles);
   checked.kernel = kernel;
   return checked;
 }
 
 std::unique_ptr<ParticleBackend> make_backend(const CheckedBackend& checked, const SurfaceMesh& mesh,
-                                              const DistanceTable& distances, const EnergyParams& energy) {
-  if (checked.name == "serial-field") {
-    return std::make_unique<SerialFieldBackend>(mesh, distances, energy, checked.weights, checked.rebuild_every);
-  }
-  if (!checked.device) return std::make_unique<SerialBackend>(mesh, distances, energy);
-  return make_device_backend(*checked.device, mesh, distances, energy, *checked.kernel, checked.rebuild_every);
+                                              const DistanceStore& distances, const EnergyParams& energy) {
+  const BackendInputs inputs{mesh, distances, energy, checked.weights, checked.rebuild_every};
+  if (checked.device) return make_device_backend(*checked.device, *checked.kernel, inputs);
+  return checked.descriptor->make_host(inputs);
 }
 
 }  // namespace meshparticles

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "backends/direct_sum_backend.hpp"
-#include "backends/field_backend.hpp"
+#include "geodesics/memory_guard.hpp"
+#include "opencl/program_cache.hpp"
 
 namespace meshparticles {
 
@@ -13,10 +13,25 @@ void check_device_limits(const DeviceDescription& device, const UpdateKernel& ke
                         std::to_string(device.max_work_group_size) + " of " + device.name);
   }
   if (kernel.local_memory_bytes() > device.local_memory_bytes) {
-    throw LimitExceeded("the " + kernel_kind_name(kernel.kind) + " kernel with " + kernel.sizes_text() + " needs " +
+    throw LimitExceeded("the " + kernel.name() + " kernel with " + kernel.sizes_text() + " needs " +
                         std::to_string(kernel.local_memory_bytes()) + " bytes of local memory; " + device.name +
                         " has " + std::to_string(device.local_memory_bytes));
   }
+}
+
+void check_device_memory(const DeviceDescription& device, const UpdateKernel& kernel, std::size_t vertex_count,
+                         std::size_t edge_count, std::size_t particle_count) {
+  const std::string backend = "the " + kernel.name() + " backend's ";
+  check_table_fits(vertex_count, sizeof(float), device.max_allocation_bytes, "table on the device",
+                   "the largest buffer " + device.name + " allows");
+  // Everything but the table: one-rings, claims and F (8 bytes) per vertex,
+  // positions, choices, move counts and lists per particle.
+  const std::uint64_t linear_bytes = 4 * (std::uint64_t(vertex_count) + 1) + 8 * std::uint64_t(edge_count) +
+                                     12 * std::uint64_t(vertex_count) + 20 * std::uint64_t(particle_count);
+  const std::uint64_t global = device.global_memory_bytes;
+  const std::uint64_t for_table = global > linear_bytes ? global - linear_bytes : 0;
+  check_table_fits(vertex_count, kernel.spec().table_bytes_per_entry(kernel), for_table, backend + "tables",
+                   "the memory of " + device.name + " (after its other buffers)");
 }
 
 namespace {
@@ -39,28 +54,52 @@ double total_milliseconds(const std::vector<cl::Event>& events) {
 }  // namespace
 
 DeviceBackend::DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel)
-    : kernel_(kernel), vertex_count_(cl_uint(mesh.vertex_count())), device_name_(device.name) {
+    : device_(device), kernel_(kernel), vertex_count_(cl_uint(mesh.vertex_count())) {
   check_device_limits(device, kernel);
-  context_ = cl::Context(device.device);
+  check_device_memory(device, kernel, mesh.vertex_count(), mesh.edge_count(), 0);
+  context_ = device_context(device.device);
   queue_ = cl::CommandQueue(context_, device.device, CL_QUEUE_PROFILING_ENABLE);
-  auto read_only = [&](const std::vector<VertexId>& values) {
-    return cl::Buffer(context_, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, values.size() * sizeof(VertexId),
-                      const_cast<VertexId*>(values.data()));
+  auto read_only = [&](const std::vector<VertexId>& values, const std::string& what) {
+    return allocate(CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, values.size() * sizeof(VertexId), what, values.data());
   };
-  ring_offsets_ = read_only(mesh.ring_offsets());
-  ring_neighbors_ = read_only(mesh.ring_neighbors().empty() ? std::vector<VertexId>{0} : mesh.ring_neighbors());
-  claims_ = cl::Buffer(context_, CL_MEM_READ_WRITE, mesh.vertex_count() * sizeof(cl_uint));
+  ring_offsets_ = read_only(mesh.ring_offsets(), "the one-ring offsets");
+  ring_neighbors_ = read_only(mesh.ring_neighbors().empty() ? std::vector<VertexId>{0} : mesh.ring_neighbors(),
+                              "the one-rings");
+  claims_ = allocate(CL_MEM_READ_WRITE, mesh.vertex_count() * sizeof(cl_uint), "the vertex claims");
   reset_claims();
 }
 
-void DeviceBackend::attach_commit_kernel(const cl::Program& program) { apply_moves_ = cl::Kernel(program, "apply_moves"); }
+cl::Program DeviceBackend::program(const DeviceDescription& device, Potential potential) {
+  const cl::Program built = cached_program(device.device, kernel_.spec().program_files, kernel_.defines(potential));
+  apply_moves_ = cl::Kernel(built, "apply_moves");
+  return built;
+}
 
-void DeviceBackend::check_kernel_limits(const cl::Kernel& update, const DeviceDescription& device) const {
-  const auto kernel_limit = update.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device.device);
-  if (kernel_.work_group_size > kernel_limit) {
-    throw LimitExceeded("--wg " + std::to_string(kernel_.work_group_size) + " exceeds the " +
-                        kernel_kind_name(kernel_.kind) + " kernel's work-group limit " +
-                        std::to_string(kernel_limit) + " on this device (CL_KERNEL_WORK_GROUP_SIZE)");
+void DeviceBackend::check_kernel_limits(const cl::Kernel& kernel, const DeviceDescription& device) const {
+  const std::string function = kernel.getInfo<CL_KERNEL_FUNCTION_NAME>();
+  const auto work_group_limit = kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device.device);
+  if (kernel_.work_group_size > work_group_limit) {
+    throw LimitExceeded("--wg " + std::to_string(kernel_.work_group_size) + " exceeds the " + function +
+                        " kernel's work-group limit " + std::to_string(work_group_limit) +
+                        " on this device (CL_KERNEL_WORK_GROUP_SIZE)");
+  }
+  const auto local_bytes = kernel.getWorkGroupInfo<CL_KERNEL_LOCAL_MEM_SIZE>(device.device);
+  if (local_bytes > device.local_memory_bytes) {
+    throw LimitExceeded("the " + function + " kernel with " + kernel_.sizes_text() + " uses " +
+                        std::to_string(local_bytes) + " bytes of local memory once compiled; " + device.name +
+                        " has " + std::to_string(device.local_memory_bytes) + " (CL_KERNEL_LOCAL_MEM_SIZE)");
+  }
+}
+
+cl::Buffer DeviceBackend::allocate(cl_mem_flags flags, std::size_t bytes, const std::string& what,
+                                   const void* initial) {
+  try {
+    return cl::Buffer(context_, flags, std::max<std::size_t>(bytes, 1), const_cast<void*>(initial));
+  } catch (const cl::Error& error) {
+    throw UserError("cannot allocate " + what + " (" + gibibytes(double(bytes)) + ") on " + device_.name +
+                    ", which has " + gibibytes(double(device_.global_memory_bytes)) + " in all and " +
+                    gibibytes(double(device_.max_allocation_bytes)) + " in its largest buffer: " +
+                    opencl_error_text(error.err()));
   }
 }
 
@@ -85,10 +124,10 @@ void DeviceBackend::set_positions(std::span<const VertexId> positions) {
   if (resized) {
     particle_count_ = cl_uint(positions.size());
     const std::size_t slots = std::max<std::size_t>(1, positions.size());
-    positions_ = cl::Buffer(context_, CL_MEM_READ_WRITE, slots * sizeof(cl_uint));
-    chosen_ = cl::Buffer(context_, CL_MEM_READ_WRITE, slots * sizeof(cl_uint));
-    move_counts_ = cl::Buffer(context_, CL_MEM_READ_WRITE, slots * sizeof(cl_uint));  // at most n colours move
-    moves_ = cl::Buffer(context_, CL_MEM_READ_WRITE, slots * sizeof(cl_uint2));
+    positions_ = allocate(CL_MEM_READ_WRITE, slots * sizeof(cl_uint), "the positions");
+    chosen_ = allocate(CL_MEM_READ_WRITE, slots * sizeof(cl_uint), "the choices");
+    move_counts_ = allocate(CL_MEM_READ_WRITE, slots * sizeof(cl_uint), "the move counts");  // at most n colours move
+    moves_ = allocate(CL_MEM_READ_WRITE, slots * sizeof(cl_uint2), "the move lists");
     apply_moves_.setArg(0, positions_);
     apply_moves_.setArg(1, chosen_);
     apply_moves_.setArg(2, particle_count_);
@@ -160,13 +199,9 @@ double DeviceBackend::time_update_kernels(Scheme scheme, unsigned colors) {
   return total_milliseconds(events);
 }
 
-std::unique_ptr<DeviceBackend> make_device_backend(const DeviceDescription& device, const SurfaceMesh& mesh,
-                                                   const DistanceTable& distances, const EnergyParams& energy,
-                                                   const UpdateKernel& kernel, std::size_t rebuild_every) {
-  if (kernel.kind == KernelKind::field) {
-    return std::make_unique<FieldBackend>(device, mesh, distances, energy, kernel, rebuild_every);
-  }
-  return std::make_unique<DirectSumBackend>(device, mesh, distances, energy, kernel);
+std::unique_ptr<DeviceBackend> make_device_backend(const DeviceDescription& device, const UpdateKernel& kernel,
+                                                   const BackendInputs& inputs) {
+  return kernel.spec().make(device, kernel, inputs);
 }
 
 }  // namespace meshparticles

@@ -27,9 +27,17 @@ class LimitExceeded : public UserError {
 // at its sizes (maximum work-group size, local memory); no compilation needed.
 void check_device_limits(const DeviceDescription& device, const UpdateKernel& kernel);
 
+// Throws UserError (naming the bytes needed, the bytes the device has and
+// the vertices that would fit) when the backend's buffers for this mesh and
+// n cannot fit on the device: its V x V table against the largest buffer,
+// everything against the global memory. Checked before any distance is
+// computed and again before anything is allocated.
+void check_device_memory(const DeviceDescription& device, const UpdateKernel& kernel, std::size_t vertex_count,
+                         std::size_t edge_count, std::size_t particle_count);
+
 class DeviceBackend : public ParticleBackend {
  public:
-  std::string device_name() const override { return device_name_; }
+  std::string device_name() const override { return device_.name; }
   void set_positions(std::span<const VertexId> positions) override;
   std::vector<VertexId> positions() override;
   // Sequential runs one sub-step per particle (n launches of each kernel).
@@ -50,11 +58,15 @@ class DeviceBackend : public ParticleBackend {
 
  protected:
   DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel);
-  // The subclass builds its program with apply_moves.cl in it and hands it
-  // over before anything runs.
-  void attach_commit_kernel(const cl::Program& program);
-  // Refuses a work-group size the compiled `update` kernel cannot take.
-  void check_kernel_limits(const cl::Kernel& update, const DeviceDescription& device) const;
+  // The backend's one program (its descriptor's files, apply_moves.cl among
+  // them), from the process's program cache; the commit kernel is taken from it.
+  cl::Program program(const DeviceDescription& device, Potential potential);
+  // Refuses sizes the compiled kernel cannot take: its work-group limit and
+  // its local memory (CL_KERNEL_WORK_GROUP_SIZE, CL_KERNEL_LOCAL_MEM_SIZE).
+  void check_kernel_limits(const cl::Kernel& kernel, const DeviceDescription& device) const;
+  // A device buffer of `bytes`; an allocation the device refuses is a
+  // UserError naming `what`, the bytes and the device's memory.
+  cl::Buffer allocate(cl_mem_flags flags, std::size_t bytes, const std::string& what, const void* initial = nullptr);
   // Launches an update kernel whose arguments from `color_arg` on are
   // (color, colors, rank_stacks), over the work-groups `particles` need.
   cl::Event launch_update(cl::Kernel& update, cl_uint color_arg, cl_uint color, cl_uint colors, cl_uint particles,
@@ -74,6 +86,7 @@ class DeviceBackend : public ParticleBackend {
   // What time_update_kernels measures beside the update kernels.
   virtual void enqueue_measured_extras(std::vector<cl::Event>& /*events*/) {}
 
+  DeviceDescription device_;
   cl::Context context_;
   cl::CommandQueue queue_;
   UpdateKernel kernel_;
@@ -91,16 +104,13 @@ class DeviceBackend : public ParticleBackend {
   cl_uint group_count(Scheme scheme, unsigned colors) const;
   void reset_claims();
 
-  std::string device_name_;
   cl::Kernel apply_moves_;
 };
 
-// The backend for `kernel.kind`: naive and tiled sum directly, field keeps a
-// field (rebuilt from scratch every `rebuild_every` iterations; 0: never).
-// Throws LimitExceeded for sizes the device refuses, UserError for a table it
+// The backend whose kernel `kernel` is, made by its descriptor. Throws
+// LimitExceeded for sizes the device refuses, UserError for buffers it
 // cannot hold or a kernel that does not build.
-std::unique_ptr<DeviceBackend> make_device_backend(const DeviceDescription& device, const SurfaceMesh& mesh,
-                                                   const DistanceTable& distances, const EnergyParams& energy,
-                                                   const UpdateKernel& kernel, std::size_t rebuild_every = 0);
+std::unique_ptr<DeviceBackend> make_device_backend(const DeviceDescription& device, const UpdateKernel& kernel,
+                                                   const BackendInputs& inputs);
 
 }  // namespace meshparticles

@@ -11,8 +11,7 @@ class DirectSumBackend : public DeviceBackend {
   // Refuses sizes the device or the compiled kernel cannot take
   // (LimitExceeded), a table it cannot hold and a kernel that does not build
   // (UserError).
-  DirectSumBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const DistanceTable& distances,
-                   const EnergyParams& energy, const UpdateKernel& kernel);
+  DirectSumBackend(const DeviceDescription& device, const UpdateKernel& kernel, const BackendInputs& inputs);
 
   double total_energy() override;
 
@@ -25,5 +24,9 @@ class DirectSumBackend : public DeviceBackend {
   cl::Buffer distances_;
   cl::Buffer energies_;
 };
+
+// The descriptors of the paper's GPU1 and GPU2 (backend_table.hpp).
+const BackendDescriptor& naive_backend();
+const BackendDescriptor& tiled_backend();
 
 }  // namespace meshparticles

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "geodesics/memory_guard.hpp"
 #include "particles/field_units.hpp"
 
 namespace meshparticles {
@@ -19,55 +18,19 @@ enum ApplyArg : cl_uint {
   kApplyMoveCounts, kApplyMoves, kApplyField, kApplyOccupancy
 };
 
-namespace {
-
-// W on the device: the distances are uploaded once and turned into weights,
-// in place for float32; for half, into a second buffer, after which the
-// distances' buffer is released.
-cl::Buffer weight_table(const cl::Context& context, const cl::CommandQueue& queue, const cl::Program& program,
-                        const DistanceTable& distances, const EnergyParams& energy, WeightFormat format) {
-  const std::size_t entries = distances.values().size();
-  cl::Buffer table(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, entries * sizeof(float),
-                   const_cast<float*>(distances.values().data()));
-  cl::Kernel kernel(program, "weight_table");
-  const float inv_two_sigma_sq = float(energy.inv_two_sigma_sq());
-  if (format == WeightFormat::float32) {
-    kernel.setArg(0, table);
-    kernel.setArg(1, inv_two_sigma_sq);
-    queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(entries));
-    queue.finish();
-    return table;
-  }
-  cl::Buffer weights(context, CL_MEM_READ_WRITE, entries * sizeof(cl_half));
-  kernel.setArg(0, table);
-  kernel.setArg(1, inv_two_sigma_sq);
-  kernel.setArg(2, weights);
-  queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(entries));
-  queue.finish();
-  return weights;
-}
-
-}  // namespace
-
-FieldBackend::FieldBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const DistanceTable& distances,
-                           const EnergyParams& energy, const UpdateKernel& kernel, std::size_t rebuild_every)
-    : DeviceBackend(device, mesh, kernel), rebuild_every_(rebuild_every) {
-  check_distance_table_fits(mesh.vertex_count(), device.max_allocation_bytes,
-                            "the largest buffer " + device.name + " allows");
-  const cl::Program program =
-      build_program(context_, device.device,
-                    {"field_weights.cl", "field_accumulate.cl", kernel.file(), "apply_moves.cl"},
-                    kernel.defines(energy.potential));
-  attach_commit_kernel(program);
-  update_ = cl::Kernel(program, kernel.function().c_str());
-  rebuild_ = cl::Kernel(program, "field_rebuild");
-  apply_to_field_ = cl::Kernel(program, "field_apply_moves");
-  particle_energies_ = cl::Kernel(program, "field_energies");
+FieldBackend::FieldBackend(const DeviceDescription& device, const UpdateKernel& kernel, const BackendInputs& inputs)
+    : DeviceBackend(device, inputs.mesh, kernel), rebuild_every_(inputs.rebuild_every) {
+  const DistanceTable& distances = dense_table_for(inputs.distances, kernel.name());
+  const cl::Program built = program(device, inputs.energy.potential);
+  update_ = cl::Kernel(built, kernel.function().c_str());
+  rebuild_ = cl::Kernel(built, "field_rebuild");
+  apply_to_field_ = cl::Kernel(built, "field_apply_moves");
+  particle_energies_ = cl::Kernel(built, "field_energies");
   for (const cl::Kernel* launched : {&update_, &rebuild_, &apply_to_field_}) check_kernel_limits(*launched, device);
 
-  weights_ = weight_table(context_, queue_, program, distances, energy, kernel.weights);
-  field_ = cl::Buffer(context_, CL_MEM_READ_WRITE, mesh.vertex_count() * sizeof(cl_long));
-  occupancy_ = cl::Buffer(context_, CL_MEM_READ_WRITE, mesh.vertex_count() * sizeof(cl_uint));
+  compute_weight_table(built, distances, inputs.energy);
+  field_ = allocate(CL_MEM_READ_WRITE, vertex_count_ * sizeof(cl_long), "the field");
+  occupancy_ = allocate(CL_MEM_READ_WRITE, vertex_count_ * sizeof(cl_uint), "the occupancy");
 
   update_.setArg(kField, field_);
   update_.setArg(kWeights, weights_);
@@ -89,13 +52,38 @@ FieldBackend::FieldBackend(const DeviceDescription& device, const SurfaceMesh& m
   particle_energies_.setArg(4, field_);
 }
 
+// W on the device: the distances are uploaded once and turned into weights,
+// in place for float32; for half, into a second buffer, after which the
+// distances' buffer is released. A 2-D launch, rows by columns: V^2 items in
+// one dimension would pass 2^32 at V = 65,536.
+void FieldBackend::compute_weight_table(const cl::Program& program, const DistanceTable& distances,
+                                        const EnergyParams& energy) {
+  cl::Buffer table = allocate(CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, distances.byte_size(), "the distance table",
+                              distances.values().data());
+  cl::Kernel kernel(program, "weight_table");
+  kernel.setArg(0, table);
+  kernel.setArg(1, vertex_count_);
+  kernel.setArg(2, float(energy.inv_two_sigma_sq()));
+  if (kernel_.weights == WeightFormat::float32) {
+    weights_ = table;
+  } else {
+    weights_ = allocate(CL_MEM_READ_WRITE, distances.values().size() * sizeof(cl_half), "the half weight table");
+    kernel.setArg(3, weights_);
+  }
+  const std::size_t columns_per_group = std::min<std::size_t>(64, device_.max_work_group_size);
+  const std::size_t columns = (vertex_count_ + columns_per_group - 1) / columns_per_group * columns_per_group;
+  queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(columns, vertex_count_),
+                              cl::NDRange(columns_per_group, 1));
+  queue_.finish();
+}
+
 void FieldBackend::positions_changed(bool resized) {
   if (resized) {
     if (particle_count_ > kMaxFieldParticles) {
       throw UserError("the field backend takes at most " + std::to_string(kMaxFieldParticles) + " particles (" +
                       std::to_string(particle_count_) + " asked): its 64-bit field would overflow");
     }
-    energies_ = cl::Buffer(context_, CL_MEM_READ_WRITE, std::max<std::size_t>(1, particle_count_) * sizeof(cl_long));
+    energies_ = allocate(CL_MEM_READ_WRITE, particle_count_ * sizeof(cl_long), "the particle energies");
     update_.setArg(kPositions, positions_);
     update_.setArg(kParticleCount, particle_count_);
     update_.setArg(kChosen, chosen_);
@@ -129,6 +117,19 @@ cl::Event FieldBackend::enqueue_rebuild() {
 void FieldBackend::rebuild_field() {
   enqueue_rebuild();
   queue_.finish();
+}
+
+std::vector<float> FieldBackend::weights() {
+  const std::size_t entries = std::size_t(vertex_count_) * vertex_count_;
+  std::vector<float> widened(entries);
+  if (kernel_.weights == WeightFormat::float32) {
+    queue_.enqueueReadBuffer(weights_, CL_TRUE, 0, entries * sizeof(float), widened.data());
+    return widened;
+  }
+  std::vector<_Float16> stored(entries);
+  queue_.enqueueReadBuffer(weights_, CL_TRUE, 0, entries * sizeof(cl_half), stored.data());
+  for (std::size_t i = 0; i < entries; ++i) widened[i] = float(stored[i]);
+  return widened;
 }
 
 std::vector<std::int64_t> FieldBackend::field() {
@@ -166,6 +167,41 @@ double FieldBackend::total_energy() {
   double sum = 0;
   for (const std::int64_t units : energies) sum += double(units);
   return sum / (2.0 * double(kFieldUnitsPerWeight));  // every pair was counted from both ends
+}
+
+const BackendDescriptor& field_backend() {
+  static const BackendDescriptor descriptor = [] {
+    BackendDescriptor d;
+    d.name = "field";
+    d.summary = "candidate energies from an accumulated field: the same choices, two reads per candidate (OpenCL)";
+    d.field_method = true;
+    d.default_scheme = Scheme::colored;
+    d.paper_row = PaperRow::gpu2_tiled;  // beside the paper's fastest
+    DeviceKernelSpec& spec = d.device.emplace();
+    spec.update_function = "field_update";
+    spec.program_files = {"field_weights.cl", "field_accumulate.cl", "field_update.cl", "apply_moves.cl"};
+    spec.takes_weight_format = true;
+    // wg 8 - 32 were best or near best in three sweeps on PoCL at
+    // sphere/1024, larger groups leave the cores idle (V / 8 work-items);
+    // 32 is also one NVIDIA warp (docs/PERFORMANCE.md).
+    spec.default_sizes = [](UpdateKernel& kernel) { kernel.work_group_size = 32; };
+    spec.particles_per_group = [](const UpdateKernel& kernel) { return kernel.work_group_size; };
+    // Each work-item's candidate energies and occupancy: a float and a byte per slot.
+    spec.local_memory_bytes = [](const UpdateKernel& kernel) {
+      return 5 * kernel.work_group_size * kernel.candidate_slots;
+    };
+    // float32 W takes over the distances' buffer; half W coexists with it
+    // until it is computed.
+    spec.table_bytes_per_entry = [](const UpdateKernel& kernel) {
+      return kernel.weights == WeightFormat::half ? sizeof(float) + sizeof(cl_half) : sizeof(float);
+    };
+    spec.make = [](const DeviceDescription& device, const UpdateKernel& kernel,
+                   const BackendInputs& inputs) -> std::unique_ptr<DeviceBackend> {
+      return std::make_unique<FieldBackend>(device, kernel, inputs);
+    };
+    return d;
+  }();
+  return descriptor;
 }
 
 }  // namespace meshparticles

@@ -11,17 +11,18 @@ namespace meshparticles {
 
 class FieldBackend : public DeviceBackend {
  public:
-  // Computes W on the device from `distances` (float32 in the distances' own
-  // buffer, or half). rebuild_every: rebuild F from scratch every that many
-  // iterations (0: never; the fixed-point field does not drift).
-  FieldBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const DistanceTable& distances,
-               const EnergyParams& energy, const UpdateKernel& kernel, std::size_t rebuild_every);
+  // Computes W on the device from the dense distance table (float32 in the
+  // distances' own buffer, or half, as kernel.weights says).
+  // inputs.rebuild_every: rebuild F from scratch every that many iterations
+  // (0: never; the fixed-point field does not drift).
+  FieldBackend(const DeviceDescription& device, const UpdateKernel& kernel, const BackendInputs& inputs);
 
   double total_energy() override;
 
-  // For tests: F(v) of every vertex in field units (2^-40), and a rebuild
-  // from the current positions.
+  // For tests: F(v) of every vertex in field units (2^-40), the stored
+  // weights (half values widened), and a rebuild from the current positions.
   std::vector<std::int64_t> field();
+  std::vector<float> weights();
   void rebuild_field();
 
  private:
@@ -32,6 +33,7 @@ class FieldBackend : public DeviceBackend {
   void enqueue_measured_extras(std::vector<cl::Event>& events) override;
   cl::Event enqueue_rebuild();
   cl::NDRange vertex_range() const;
+  void compute_weight_table(const cl::Program& program, const DistanceTable& distances, const EnergyParams& energy);
 
   std::size_t rebuild_every_;
   std::size_t iterations_ = 0;
@@ -44,5 +46,8 @@ class FieldBackend : public DeviceBackend {
   cl::Buffer occupancy_;  // particles on each vertex
   cl::Buffer energies_;   // per particle, fixed point
 };
+
+// The field method's descriptor (backend_table.hpp).
+const BackendDescriptor& field_backend();
 
 }  // namespace meshparticles

@@ -5,7 +5,7 @@
 
 namespace meshparticles {
 
-SerialBackend::SerialBackend(const SurfaceMesh& mesh, const DistanceTable& distances, const EnergyParams& energy)
+SerialBackend::SerialBackend(const SurfaceMesh& mesh, const DistanceStore& distances, const EnergyParams& energy)
     : mesh_(mesh), distances_(distances), energy_(energy) {}
 
 void SerialBackend::set_positions(std::span<const VertexId> positions) {
@@ -21,14 +21,15 @@ std::vector<double> SerialBackend::candidate_energies(std::size_t c, std::span<c
   const VertexId here = positions[c];
   std::vector<double> energies(mesh_.valence(here) + 1, 0.0);
   std::vector<bool> occupied(energies.size(), false);
+  to_particles_.resize(positions.size());
   for (std::size_t j = 0; j < energies.size(); ++j) {
     const VertexId v = candidate_vertex(here, j);
-    const auto row = distances_.row(v);
+    distances_.distances_from(v, positions, to_particles_);
     double energy = 0;
     bool taken = false;
     for (std::size_t i = 0; i < positions.size(); ++i) {
       if (i == c) continue;
-      energy += pair_weight(energy_.potential, row[positions[i]], inv_two_sigma_sq);
+      energy += pair_weight(energy_.potential, to_particles_[i], inv_two_sigma_sq);
       taken |= positions[i] == v;
     }
     energies[j] = energy;
@@ -93,13 +94,29 @@ IterationStats SerialBackend::iterate(Scheme scheme, unsigned colors) {
 double SerialBackend::total_energy() {
   const double inv_two_sigma_sq = energy_.inv_two_sigma_sq();
   double total = 0;
+  to_particles_.resize(positions_.size());
   for (std::size_t i = 0; i < positions_.size(); ++i) {
-    const auto row = distances_.row(positions_[i]);
+    distances_.distances_from(positions_[i], positions_, to_particles_);
     for (std::size_t j = i + 1; j < positions_.size(); ++j) {
-      total += pair_weight(energy_.potential, row[positions_[j]], inv_two_sigma_sq);
+      total += pair_weight(energy_.potential, to_particles_[j], inv_two_sigma_sq);
     }
   }
   return total;
+}
+
+const BackendDescriptor& serial_backend() {
+  static const BackendDescriptor descriptor = [] {
+    BackendDescriptor d;
+    d.name = "serial";
+    d.summary = "the reference: plain single-threaded C++ in double, every scheme; the oracle";
+    d.default_scheme = Scheme::sequential;
+    d.paper_row = PaperRow::cpu;
+    d.make_host = [](const BackendInputs& inputs) -> std::unique_ptr<ParticleBackend> {
+      return std::make_unique<SerialBackend>(inputs.mesh, inputs.distances, inputs.energy);
+    };
+    return d;
+  }();
+  return descriptor;
 }
 
 }  // namespace meshparticles

@@ -1,14 +1,15 @@
 #pragma once
 // The reference: single-threaded plain C++, energies accumulated in double,
 // every scheme. It is the oracle every kernel is tested against.
-#include "geodesics/distance_table.hpp"
+#include "backends/backend_descriptor.hpp"
+#include "geodesics/distance_store.hpp"
 #include "particles/particle_backend.hpp"
 
 namespace meshparticles {
 
 class SerialBackend : public ParticleBackend {
  public:
-  SerialBackend(const SurfaceMesh& mesh, const DistanceTable& distances, const EnergyParams& energy);
+  SerialBackend(const SurfaceMesh& mesh, const DistanceStore& distances, const EnergyParams& energy);
 
   std::string device_name() const override { return "serial"; }
   void set_positions(std::span<const VertexId> positions) override;
@@ -27,9 +28,13 @@ class SerialBackend : public ParticleBackend {
   VertexId candidate_vertex(VertexId here, std::size_t candidate) const;
 
   const SurfaceMesh& mesh_;
-  const DistanceTable& distances_;
+  const DistanceStore& distances_;
   EnergyParams energy_;
   std::vector<VertexId> positions_;
+  mutable std::vector<float> to_particles_;  // scratch: one candidate's distances to every particle
 };
+
+// The reference's descriptor (backend_table.hpp).
+const BackendDescriptor& serial_backend();
 
 }  // namespace meshparticles

@@ -11,7 +11,7 @@ namespace meshparticles {
 SerialFieldBackend::SerialFieldBackend(const SurfaceMesh& mesh, const DistanceTable& distances,
                                        const EnergyParams& energy, WeightFormat weights, std::size_t rebuild_every)
     : mesh_(mesh), vertex_count_(mesh.vertex_count()), rebuild_every_(rebuild_every) {
-  check_distance_table_fits(vertex_count_, available_host_memory_bytes(), "host memory (the weight table)");
+  check_table_fits(vertex_count_, sizeof(float), usable_host_memory_bytes(), "weight table", "host memory");
   // In float, as the device computes it (particle_energy.h).
   const float inv_two_sigma_sq = float(energy.inv_two_sigma_sq());
   const auto& d = distances.values();
@@ -121,6 +121,24 @@ double SerialFieldBackend::total_energy() {
   double sum = 0;
   for (const VertexId p : positions_) sum += double(field_[p] - field_units(weight_row(p)[p]));
   return sum / (2.0 * double(kFieldUnitsPerWeight));
+}
+
+const BackendDescriptor& serial_field_backend() {
+  static const BackendDescriptor descriptor = [] {
+    BackendDescriptor d;
+    d.name = "serial-field";
+    d.summary = "the field method in plain single-threaded C++, every scheme; the twin of field";
+    d.field_method = true;
+    d.default_scheme = Scheme::sequential;
+    d.paper_row = PaperRow::cpu;
+    d.extra_host_bytes_per_entry = sizeof(float);  // W beside the distance table
+    d.make_host = [](const BackendInputs& inputs) -> std::unique_ptr<ParticleBackend> {
+      return std::make_unique<SerialFieldBackend>(inputs.mesh, dense_table_for(inputs.distances, "serial-field"),
+                                                  inputs.energy, inputs.weights, inputs.rebuild_every);
+    };
+    return d;
+  }();
+  return descriptor;
 }
 
 }  // namespace meshparticles

@@ -3,6 +3,7 @@
 // the twin of FieldBackend: the same stored weights, the same fixed-point
 // field and the same float energies, bit for bit, given the same W. Every
 // scheme; a sequential move updates F at once, so later particles see it.
+#include "backends/backend_descriptor.hpp"
 #include "geodesics/distance_table.hpp"
 #include "particles/particle_backend.hpp"
 
@@ -40,5 +41,8 @@ class SerialFieldBackend : public ParticleBackend {
   std::vector<std::uint32_t> occupancy_;
   std::vector<VertexId> positions_;
 };
+
+// The field method's serial twin's descriptor (backend_table.hpp).
+const BackendDescriptor& serial_field_backend();
 
 }  // namespace meshparticles

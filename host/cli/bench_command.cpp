@@ -1,22 +1,17 @@
 // `meshparticles bench`: the paper's Tables 1 and 2 on the committed meshes,
-// our serial, naive, tiled and field rows beside the paper's figures.
-#include <algorithm>
-#include <filesystem>
+// our rows beside the paper's figures (measurement/bench.hpp); with
+// --quality, how even each placement is (measurement/quality_bench.hpp).
 #include <iostream>
-#include <map>
 
-#include "backends/backend_factory.hpp"
+#include "backends/backend_table.hpp"
 #include "cli/commands.hpp"
-#include "cli/mesh_loading.hpp"
 #include "common/atomic_file.hpp"
-#include "common/progress.hpp"
 #include "common/user_error.hpp"
-#include "geodesics/distance_cache.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "measurement/bench.hpp"
+#include "measurement/quality_bench.hpp"
 #include "particles/particle_run.hpp"
-#include "quality/quality_bench.hpp"
 #include "reports/bench_report.hpp"
-#include "tuning/paper_figures.hpp"
+#include "reports/quality_bench_report.hpp"
 #include "tuning/tuning_store.hpp"
 
 namespace meshparticles {
@@ -25,10 +20,9 @@ namespace {
 
 struct BenchOptions {
   std::vector<std::string> cases;  // "mesh:n"; default: the paper's
-  std::vector<std::string> backends = BenchSettings().backends;
-  std::size_t iterations = 20;
+  std::vector<std::string> backends = {"serial", "naive", "tiled", "field"};
+  BenchSettings settings;
   std::string scheme = "colored";
-  unsigned colors = kDefaultColors;
   std::string device;
   std::string meshes_dir = "meshes";
   std::string csv;
@@ -38,20 +32,9 @@ struct BenchOptions {
   DistanceTableOptions table;
 };
 
-struct CaseRequest {
-  std::string mesh;
-  std::size_t particles;
-};
-
 std::vector<CaseRequest> requested_cases(const BenchOptions& options) {
+  if (options.cases.empty()) return options.quality ? quality_cases() : paper_cases();
   std::vector<CaseRequest> cases;
-  if (options.cases.empty() && options.quality) {  // each committed mesh at its largest paper case
-    return {{"sphere", 1024}, {"torus", 512}, {"atrium", 1024}, {"patch", 100}};
-  }
-  if (options.cases.empty()) {
-    for (const auto& figures : paper_figures()) cases.push_back({figures.mesh, figures.particles});
-    return cases;
-  }
   for (const std::string& text : options.cases) {
     const auto colon = text.find(':');
     std::size_t particles = 0;
@@ -68,100 +51,41 @@ std::vector<CaseRequest> requested_cases(const BenchOptions& options) {
   return cases;
 }
 
-// The committed mesh of that name; the built-in generator's when the
-// directory does not have it (outside the repository).
-SurfaceMesh bench_mesh(const BenchOptions& options, const std::string& name) {
-  const std::filesystem::path file = std::filesystem::path(options.meshes_dir) / (name + ".off");
-  if (std::filesystem::exists(file)) return load_mesh(file, options.table.quiet);
-  const auto& names = generated_mesh_names();
-  if (std::find(names.begin(), names.end(), name) == names.end()) {
-    throw UserError("--case: no mesh " + file.string() + " and no built-in mesh named '" + name + "'");
-  }
-  return generate_mesh(name);
+void write_json(const std::string& file, const nlohmann::json& document) {
+  if (!file.empty()) write_file_atomically(file, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
 }
 
-void run_bench(const BenchOptions& options, bool colors_given) {
-  if (colors_given && options.scheme != "colored") {
+void run_bench_command(BenchOptions options, bool colors_given) {
+  BenchSettings& settings = options.settings;
+  settings.device_scheme = parse_scheme(options.scheme);
+  if (colors_given && settings.device_scheme != Scheme::colored) {
     throw UserError("--colors applies to --scheme colored, not " + options.scheme);
   }
-  BenchSettings settings;
-  settings.backends = options.backends;
-  settings.device_scheme = parse_scheme(options.scheme);
-  settings.colors = options.colors;
-  settings.iterations = options.iterations;
   if (settings.iterations == 0) throw UserError("--iterations must be at least 1");
   if (options.quality && !options.csv.empty()) throw UserError("--csv applies to the timing tables (with --quality, use --json)");
   for (const auto& file : {options.csv, options.json}) {
     if (!file.empty()) check_writable(file);
   }
-  const std::vector<CaseRequest> requests = requested_cases(options);
+  BenchRequest request;
+  request.cases = requested_cases(options);
+  request.backends = options.backends;
+  request.device = options.device;
+  request.meshes_dir = options.meshes_dir;
+  request.tuning_file = tuning_file_or_default(options.tuning_file);
+  request.geodesics = options.table.request(GeodesicMethod::fast_marching);
+  request.quiet = options.table.quiet;
+  const BenchPlan plan = plan_bench(request);
 
-  // Meshes loaded and backends checked (sizes from the tuning file) before
-  // any timing: refused sizes fail now, not after minutes.
-  BackendRequest backend_request;
-  backend_request.device = options.device;
-  backend_request.tuning_file = tuning_file_or_default(options.tuning_file);
-  std::map<std::string, SurfaceMesh> meshes;
-  std::vector<std::vector<CheckedBackend>> checked(requests.size());
-  std::string device_name = "serial";
-  for (std::size_t r = 0; r < requests.size(); ++r) {
-    const CaseRequest& request = requests[r];
-    if (!meshes.contains(request.mesh)) meshes.emplace(request.mesh, bench_mesh(options, request.mesh));
-    const SurfaceMesh& mesh = meshes.at(request.mesh);
-    if (request.particles > mesh.vertex_count()) {
-      throw UserError("--case " + request.mesh + ":" + std::to_string(request.particles) +
-                      " is more particles than its " + std::to_string(mesh.vertex_count()) + " vertices");
-    }
-    for (const auto& backend : settings.backends) {
-      backend_request.name = backend;
-      checked[r].push_back(check_backend(backend_request, mesh, request.particles));
-      if (checked[r].back().device) device_name = checked[r].back().device->name;
-    }
-  }
-
-  const std::size_t rows_per_case = settings.backends.size() + (options.quality ? 3 : 0);
-  ProgressLine progress("bench", requests.size() * rows_per_case, options.table.quiet);
-  std::vector<BenchCase> results;
-  std::vector<QualityCase> quality_results;
-  std::size_t done = 0;
-  std::string current_mesh;
-  std::optional<DistanceTable> distances;
-  for (std::size_t r = 0; r < requests.size(); ++r) {
-    const CaseRequest& request = requests[r];
-    const SurfaceMesh& mesh = meshes.at(request.mesh);
-    if (request.mesh != current_mesh) {  // one table in memory at a time
-      distances.reset();
-      TableSource source;
-      DistanceTableOptions table = options.table;
-      table.quiet = true;  // the bench's own progress line is enough
-      progress.update(done, request.mesh + " distances");
-      distances.emplace(load_or_compute_distances(mesh, table.request(GeodesicMethod::fast_marching), source));
-      current_mesh = request.mesh;
-    }
-    const auto on_row = [&](const std::string& what) { progress.update(done++, what); };
-    if (options.quality) {
-      quality_results.push_back(
-          quality_case(request.mesh, mesh, *distances, request.particles, checked[r], kDefaultMaxIterations, on_row));
-    } else {
-      results.push_back(bench_case(request.mesh, mesh, *distances, request.particles, checked[r], settings, on_row));
-    }
-  }
-  progress.update(done);
-  progress.finish();
   if (options.quality) {
-    std::cout << quality_tables(quality_results);
-    if (!options.json.empty()) {
-      write_file_atomically(options.json, [&](std::ostream& out) { out << quality_bench_json(quality_results).dump(2) << "\n"; });
-    }
+    const std::vector<QualityCase> cases = run_quality_bench(plan, kDefaultMaxIterations);
+    std::cout << quality_tables(cases);
+    write_json(options.json, quality_bench_json(cases));
     return;
   }
-
-  std::cout << bench_tables(device_name, settings, results);
-  if (!options.csv.empty()) write_bench_csv(options.csv, device_name, settings, results);
-  if (!options.json.empty()) {
-    const nlohmann::json document = bench_json(device_name, settings, results);
-    write_file_atomically(options.json, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
-  }
+  const std::vector<BenchCase> cases = run_bench(plan, settings);
+  std::cout << bench_tables(plan.device_name, settings, cases);
+  if (!options.csv.empty()) write_bench_csv(options.csv, plan.device_name, settings, cases);
+  write_json(options.json, bench_json(plan.device_name, settings, cases));
 }
 
 }  // namespace
@@ -180,12 +104,12 @@ void add_bench_command(CLI::App& app) {
       ->allow_extra_args(false)
       ->check(CLI::IsMember(backend_names()))
       ->capture_default_str();
-  bench->add_option("--iterations", options->iterations, "Timed iterations per row (the paper: 1000)")
+  bench->add_option("--iterations", options->settings.iterations, "Timed iterations per row (the paper: 1000)")
       ->capture_default_str();
   bench->add_option("--scheme", options->scheme, "Scheme of the device rows: colored or synchronous")
       ->check(CLI::IsMember({"synchronous", "colored"}))
       ->capture_default_str();
-  bench->add_option("--colors", options->colors, "Groups of the colored scheme")
+  bench->add_option("--colors", options->settings.colors, "Groups of the colored scheme")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   add_device_option(*bench, options->device);
@@ -199,7 +123,7 @@ void add_bench_command(CLI::App& app) {
   bench->add_option("--tuning-file", options->tuning_file,
                     "Sizes saved by `sweep --save` (default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
   add_distance_table_options(*bench, options->table);
-  bench->callback([options, bench] { run_bench(*options, bench->count("--colors") > 0); });
+  bench->callback([options, bench] { run_bench_command(*options, bench->count("--colors") > 0); });
 }
 
 }  // namespace meshparticles

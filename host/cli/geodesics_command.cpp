@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/mesh_loading.hpp"
+#include "pipeline/mesh_input.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/distance_cache.hpp"
@@ -46,7 +46,7 @@ void run_geodesics(const GeodesicsOptions& options) {
     const VertexId source = surface_vertex_for_option(mesh, *options.source, "--source");
     std::vector<double> distances(mesh.vertex_count());
     SolverScratch scratch;
-    make_geodesics(mesh, method)->solve(source, distances, scratch);
+    make_geodesic_solver(mesh, method)->solve(source, distances, scratch);
     if (options.out.empty()) {
       write_single_source(mesh, distances, std::cout);
     } else {

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/mesh_loading.hpp"
+#include "pipeline/mesh_input.hpp"
 
 namespace meshparticles {
 

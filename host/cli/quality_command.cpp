@@ -5,9 +5,11 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/mesh_loading.hpp"
+#include "pipeline/mesh_input.hpp"
 #include "common/user_error.hpp"
-#include "quality/particle_set_report.hpp"
+#include "pipeline/distances.hpp"
+#include "quality/particle_sets.hpp"
+#include "reports/quality_report.hpp"
 
 namespace meshparticles {
 
@@ -28,9 +30,8 @@ void run_quality(const QualityOptions& options) {
   // Read before the distance table, so a bad file fails in a second.
   std::vector<std::vector<Vec3>> points;
   for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
-  TableSource source;
-  const DistanceTable distances =
-      load_or_compute_distances(mesh, options.table.request(parse_method(options.geodesic)), source);
+  const ObtainedDistances obtained = obtain_distances(mesh, options.table.request(parse_method(options.geodesic)));
+  const DistanceStore& distances = *obtained.store;
   const Potential potential = parse_potential(options.potential);
   std::vector<MeasuredSet> sets;
   for (std::size_t k = 0; k < points.size(); ++k) {

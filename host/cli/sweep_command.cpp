@@ -1,17 +1,15 @@
 // `meshparticles sweep`: time every kernel configuration on one problem,
-// each verified against the serial reference first; optionally save the best
-// sizes for `run` and `bench` (--save).
+// each verified against the serial reference first (measurement/sweep.hpp);
+// optionally save the best sizes for `run` and `bench` (--save).
 #include <algorithm>
 #include <iostream>
-#include <set>
 
-#include "backends/device_backend.hpp"
+#include "backends/backend_table.hpp"
 #include "cli/commands.hpp"
-#include "cli/mesh_loading.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
-#include "geodesics/distance_cache.hpp"
-#include "particles/initial_placement.hpp"
+#include "measurement/sweep.hpp"
+#include "pipeline/mesh_input.hpp"
 #include "reports/sweep_report.hpp"
 #include "tuning/tuning_store.hpp"
 
@@ -21,21 +19,13 @@ namespace {
 
 struct SweepOptions {
   std::string mesh;
-  std::size_t particles = 1024;
-  std::vector<std::string> kernels = {"naive", "tiled", "field"};
-  std::vector<std::size_t> work_group_sizes = {8, 16, 32, 64, 128, 256};
-  std::vector<std::size_t> tile_sizes = {16, 32, 64, 128, 256, 512, 1024};
-  bool tiles_given = false;
+  SweepRequest request;
+  std::vector<std::size_t> tile_sizes = kSweepTileSizes;
   std::string weights = "float";
-  bool weights_given = false;
-  std::size_t iterations = 20;
   std::string scheme = "colored";
-  unsigned colors = kDefaultColors;
   std::string init = "farthest";
-  std::uint64_t seed = 1;
   std::string potential = "exp";
   std::string geodesic = "fmm";
-  std::string device;
   std::string csv;
   std::string json;
   bool save = false;
@@ -43,25 +33,15 @@ struct SweepOptions {
   DistanceTableOptions table;
 };
 
-template <typename T>
-std::vector<T> unique_in_order(const std::vector<T>& values) {
-  std::vector<T> unique;
-  std::set<T> seen;
-  for (const T& value : values) {
-    if (seen.insert(value).second) unique.push_back(value);
-  }
-  return unique;
-}
-
-void save_best(const SweepOptions& options, const std::filesystem::path& file, TuningStore store,
-               const DeviceDescription& device, const std::vector<SweepResult>& results) {
+void save_best(const SweepOutcome& sweep, const std::filesystem::path& file, TuningStore store) {
+  const SweepRequest& request = sweep.plan.request;
   bool saved = false;
-  for (const KernelKind kind : {KernelKind::naive, KernelKind::tiled, KernelKind::field}) {
-    const SweepResult* best = best_result(results, kind);
+  for (const std::string& kernel : request.kernels) {
+    const SweepResult* best = best_result(sweep.results, kernel);
     if (!best) continue;
-    store.put({device.name, kind, size_class(options.particles), best->kernel.work_group_size,
-               best->kernel.tile_size, best->timing.median_ms,
-               options.mesh + " n=" + std::to_string(options.particles)});
+    store.put({sweep.plan.device.name, kernel, size_class(request.particles), best->kernel.work_group_size,
+               best->kernel.spec().takes_tile ? best->kernel.tile_size : 0, best->timing.median_ms,
+               request.mesh_label + " n=" + std::to_string(request.particles)});
     saved = true;
   }
   if (!saved) {
@@ -69,60 +49,43 @@ void save_best(const SweepOptions& options, const std::filesystem::path& file, T
     return;
   }
   store.save(file);
-  std::cout << "saved the best sizes for " << device.name << ", " << size_class(options.particles) << " to "
-            << file.string() << "\n";
+  std::cout << "saved the best sizes for " << sweep.plan.device.name << ", " << size_class(request.particles)
+            << " to " << file.string() << "\n";
 }
 
-void run_sweep_command(SweepOptions options, bool colors_given) {
-  const Potential potential = parse_potential(options.potential);
-  const Scheme scheme = parse_scheme(options.scheme);
-  if (colors_given && scheme != Scheme::colored) throw UserError("--colors applies to --scheme colored, not " + options.scheme);
-  std::vector<KernelKind> kinds;
-  for (const auto& name : unique_in_order(options.kernels)) kinds.push_back(parse_kernel_kind(name));
-  const bool any_tiled = std::find(kinds.begin(), kinds.end(), KernelKind::tiled) != kinds.end();
-  if (options.tiles_given && !any_tiled) throw UserError("--tile applies to the tiled kernel, which is not swept");
-  const bool any_field = std::find(kinds.begin(), kinds.end(), KernelKind::field) != kinds.end();
-  if (options.weights_given && !any_field) throw UserError("--weights applies to the field kernel, which is not swept");
-  if (options.iterations == 0) throw UserError("--iterations must be at least 1 (timed iterations per configuration)");
-  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, options.table.quiet);
-  if (options.particles > mesh.vertex_count()) {
-    throw UserError("-n " + std::to_string(options.particles) + " is more particles than the " +
-                    std::to_string(mesh.vertex_count()) + " vertices of " + options.mesh);
+void run_sweep_command(SweepOptions options, bool tiles_given, bool weights_given, bool colors_given) {
+  SweepRequest& request = options.request;
+  request.settings.scheme = parse_scheme(options.scheme);
+  if (colors_given && request.settings.scheme != Scheme::colored) {
+    throw UserError("--colors applies to --scheme colored, not " + options.scheme);
   }
-  // Everything that can fail fast does so before the distance table.
+  if (tiles_given) request.tile_sizes = options.tile_sizes;
+  if (weights_given) request.weights = parse_weight_format(options.weights);
+  request.init = parse_init(options.init);
+  request.potential = parse_potential(options.potential);
+  request.geodesics = options.table.request(parse_method(options.geodesic));
+  request.settings.quiet = options.table.quiet;
+
+  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, options.table.quiet);
+  request.mesh_label = options.mesh;
+  const SweepPlan plan = plan_sweep(mesh, request);
+  // Everything that can fail fast does so before the distances.
   for (const auto& file : {options.csv, options.json}) {
     if (!file.empty()) check_writable(file);
   }
   const std::filesystem::path tuning_file = tuning_file_or_default(options.tuning_file);
-  const TuningStore store = options.save ? TuningStore::load(tuning_file) : TuningStore();
-  const DeviceDescription device = select_device(options.device);
+  const TuningStore store = options.save ? TuningStore::load(tuning_file, device_backend_names()) : TuningStore();
 
-  const EnergyParams energy{potential, default_sigma(potential, mesh.area(), options.particles)};
-  TableSource table_source;
-  const DistanceTable distances =
-      load_or_compute_distances(mesh, options.table.request(parse_method(options.geodesic)), table_source);
-  const std::vector<VertexId> positions =
-      place_particles(distances, {parse_init(options.init), options.particles, options.seed, std::nullopt});
-
-  const SweepSettings settings{scheme, options.colors, options.iterations, 2, options.table.quiet};
-  auto configurations = sweep_configurations(kinds, unique_in_order(options.work_group_sizes),
-                                             unique_in_order(options.tile_sizes), mesh.max_valence() + 1);
-  for (UpdateKernel& kernel : configurations) {
-    if (kernel.kind == KernelKind::field) kernel.weights = parse_weight_format(options.weights);
-  }
-  const std::vector<SweepResult> results =
-      run_sweep(device, mesh, distances, energy, positions, configurations, settings);
-
-  const SweepContext context{options.mesh, mesh.vertex_count(), options.particles, settings};
-  std::cout << sweep_table(device, context, results);
-  if (!options.csv.empty()) write_sweep_csv(options.csv, device, context, results);
+  const SweepOutcome sweep = run_sweep(mesh, plan);
+  std::cout << sweep_table(sweep);
+  if (!options.csv.empty()) write_sweep_csv(options.csv, sweep);
   if (!options.json.empty()) {
-    const nlohmann::json document = sweep_json(device, context, results);
+    const nlohmann::json document = sweep_json(sweep);
     write_file_atomically(options.json, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
   }
-  if (options.save) save_best(options, tuning_file, store, device, results);
+  if (options.save) save_best(sweep, tuning_file, store);
 
-  const auto failed = std::count_if(results.begin(), results.end(),
+  const auto failed = std::count_if(sweep.results.begin(), sweep.results.end(),
                                     [](const SweepResult& r) { return r.status == SweepStatus::failed; });
   if (failed > 0) {
     throw UserError(std::to_string(failed) + " configuration(s) FAILED: the kernel built wrongly or disagrees with "
@@ -134,18 +97,20 @@ void run_sweep_command(SweepOptions options, bool colors_given) {
 
 void add_sweep_command(CLI::App& app) {
   auto options = std::make_shared<SweepOptions>();
+  SweepRequest& request = options->request;
+  request.kernels = device_backend_names();
   CLI::App* sweep = app.add_subcommand(
       "sweep", "Time the update kernels over work-group and tile sizes, each verified against the serial reference");
   sweep->add_option("mesh", options->mesh, "Mesh file (default: meshes/sphere.off, else the built-in sphere)");
-  sweep->add_option("-n,--particles", options->particles, "Number of particles, 1..V")
+  sweep->add_option("-n,--particles", request.particles, "Number of particles, 1..V")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  sweep->add_option("--kernel", options->kernels, "Kernels to sweep, comma-separated")
+  sweep->add_option("--kernel", request.kernels, "Kernels to sweep, comma-separated")
       ->delimiter(',')
       ->allow_extra_args(false)
-      ->check(CLI::IsMember({"naive", "tiled", "field"}))
+      ->check(CLI::IsMember(device_backend_names()))
       ->capture_default_str();
-  sweep->add_option("--wg", options->work_group_sizes, "Work-group sizes, comma-separated")
+  sweep->add_option("--wg", request.work_group_sizes, "Work-group sizes, comma-separated")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20))
@@ -154,40 +119,43 @@ void add_sweep_command(CLI::App& app) {
       ->delimiter(',')
       ->allow_extra_args(false)
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
-      ->capture_default_str()
-      ->each([options](const std::string&) { options->tiles_given = true; });
+      ->capture_default_str();
   sweep->add_option("--weights", options->weights,
                     "Weight table of the field kernel: float or half (half is held to 1e-3 of the reference, "
                     "not 1e-5)")
       ->check(CLI::IsMember({"float", "half"}))
-      ->capture_default_str()
-      ->each([options](const std::string&) { options->weights_given = true; });
-  sweep->add_option("--iterations", options->iterations, "Timed iterations per configuration (after 2 warm-ups)")
+      ->capture_default_str();
+  sweep->add_option("--iterations", request.settings.repetitions,
+                    "Timed iterations per configuration (after 2 warm-ups)")
       ->capture_default_str();
   sweep->add_option("--scheme", options->scheme, "synchronous or colored: the launches one iteration makes")
       ->check(CLI::IsMember({"synchronous", "colored"}))
       ->capture_default_str();
-  sweep->add_option("--colors", options->colors, "Groups of the colored scheme")
+  request.settings.colors = kDefaultColors;
+  sweep->add_option("--colors", request.settings.colors, "Groups of the colored scheme")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   sweep->add_option("--init", options->init, "Positions the kernels are timed and verified on")
       ->check(CLI::IsMember({"v0", "random", "farthest"}))
       ->capture_default_str();
-  sweep->add_option("--seed", options->seed, "Seed of random and farthest starts")->capture_default_str();
+  sweep->add_option("--seed", request.seed, "Seed of random and farthest starts")->capture_default_str();
   sweep->add_option("--potential", options->potential, "exp or gauss")
       ->check(CLI::IsMember({"exp", "gauss"}))
       ->capture_default_str();
   sweep->add_option("--geodesic", options->geodesic, "Distance solver: fmm or dijkstra")
       ->check(CLI::IsMember({"fmm", "dijkstra"}))
       ->capture_default_str();
-  add_device_option(*sweep, options->device);
+  add_device_option(*sweep, request.device);
   sweep->add_option("--csv", options->csv, "Also write the rows as CSV to this file");
   sweep->add_option("--json", options->json, "Also write the rows and the device's limits as JSON to this file");
   sweep->add_flag("--save", options->save, "Store the best sizes per kernel for this device and size class");
   sweep->add_option("--tuning-file", options->tuning_file,
                     "Where --save stores them (default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
   add_distance_table_options(*sweep, options->table);
-  sweep->callback([options, sweep] { run_sweep_command(*options, sweep->count("--colors") > 0); });
+  sweep->callback([options, sweep] {
+    run_sweep_command(*options, sweep->count("--tile") > 0, sweep->count("--weights") > 0,
+                      sweep->count("--colors") > 0);
+  });
 }
 
 }  // namespace meshparticles

@@ -6,8 +6,9 @@ namespace meshparticles {
 
 EdgeDijkstra::EdgeDijkstra(const SurfaceMesh& mesh) : mesh_(mesh), edge_lengths_(ring_edge_lengths(mesh)) {}
 
-void EdgeDijkstra::solve(VertexId source, std::span<double> distances, SolverScratch& scratch) const {
-  ShortestFirstQueue queue(source, distances, scratch);
+void EdgeDijkstra::solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+                         double max_distance) const {
+  ShortestFirstQueue queue(sources, distances, scratch, max_distance);
   const auto& offsets = mesh_.ring_offsets();
   const auto& neighbors = mesh_.ring_neighbors();
   while (auto x = queue.pop_next()) {

@@ -1,14 +1,16 @@
 #pragma once
 // Dijkstra on the edge graph: the baseline. Paths are confined to mesh edges,
 // so distances are overestimated (several percent on irregular meshes).
-#include "geodesics/single_source.hpp"
+#include "geodesics/geodesic_solver.hpp"
 
 namespace meshparticles {
 
-class EdgeDijkstra : public SingleSourceGeodesics {
+class EdgeDijkstra : public GeodesicSolver {
  public:
   explicit EdgeDijkstra(const SurfaceMesh& mesh);
-  void solve(VertexId source, std::span<double> distances, SolverScratch& scratch) const override;
+  using GeodesicSolver::solve;
+  void solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+             double max_distance) const override;
 
  private:
   const SurfaceMesh& mesh_;

@@ -90,7 +90,7 @@ std::optional<DistanceTable> load_cached_table(const std::filesystem::path& file
     problem = "truncated or overlong";
     return std::nullopt;
   }
-  check_distance_table_fits(key.vertex_count, available_host_memory_bytes(), "host memory");
+  check_table_fits(key.vertex_count, sizeof(float), usable_host_memory_bytes(), "distance table", "host memory");
   DistanceTable table(key.vertex_count);
   if (!in.read(reinterpret_cast<char*>(table.values().data()), std::streamsize(table.byte_size()))) {
     problem = "unreadable";

@@ -12,6 +12,19 @@
 
 namespace meshparticles {
 
+void DistanceTable::distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const {
+  const auto from_u = row(u);
+  for (std::size_t k = 0; k < targets.size(); ++k) out[k] = from_u[targets[k]];
+}
+
+void DistanceTable::for_each_within(VertexId u, float radius,
+                                    const std::function<void(VertexId, float)>& visit) const {
+  const auto from_u = row(u);
+  for (std::size_t v = 0; v < vertex_count_; ++v) {
+    if (from_u[v] <= radius) visit(VertexId(v), from_u[v]);
+  }
+}
+
 void symmetrize_by_averaging(DistanceTable& table) {
   constexpr std::size_t kBlock = 64;
   const std::size_t n = table.vertex_count();
@@ -31,9 +44,9 @@ void symmetrize_by_averaging(DistanceTable& table) {
 
 DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, unsigned threads, bool quiet) {
   const std::size_t n = mesh.vertex_count();
-  check_distance_table_fits(n, available_host_memory_bytes(), "host memory");
+  check_table_fits(n, sizeof(float), usable_host_memory_bytes(), "distance table", "host memory");
   DistanceTable table(n);
-  const auto solver = make_geodesics(mesh, method);
+  const auto solver = make_geodesic_solver(mesh, method);
 
   std::atomic<std::size_t> next_source{0}, done{0};
   // A worker that fails (out of memory) hands its exception to this thread,

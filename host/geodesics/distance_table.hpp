@@ -1,21 +1,27 @@
 #pragma once
-// The V x V table of geodesic distances the particle system reads: float32,
+// The dense store: the V x V table of geodesic distances, float32,
 // row-major, symmetric, zero diagonal, +inf between different components.
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include "geodesics/single_source.hpp"
+#include "geodesics/distance_store.hpp"
+#include "geodesics/geodesic_solver.hpp"
 
 namespace meshparticles {
 
-class DistanceTable {
+class DistanceTable final : public DistanceStore {
  public:
   explicit DistanceTable(std::size_t vertex_count)
       : vertex_count_(vertex_count), values_(vertex_count * vertex_count) {}
 
-  std::size_t vertex_count() const { return vertex_count_; }
-  float operator()(VertexId a, VertexId b) const { return values_[std::size_t(a) * vertex_count_ + b]; }
+  std::size_t vertex_count() const override { return vertex_count_; }
+  float distance(VertexId a, VertexId b) const override { return values_[std::size_t(a) * vertex_count_ + b]; }
+  void distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const override;
+  void for_each_within(VertexId u, float radius, const std::function<void(VertexId, float)>& visit) const override;
+  const DistanceTable* dense_table() const override { return this; }
+
+  float operator()(VertexId a, VertexId b) const { return distance(a, b); }
   std::span<const float> row(VertexId v) const { return {values_.data() + std::size_t(v) * vertex_count_, vertex_count_}; }
   std::span<float> row(VertexId v) { return {values_.data() + std::size_t(v) * vertex_count_, vertex_count_}; }
   std::span<const float> values() const { return values_; }

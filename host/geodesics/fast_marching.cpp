@@ -31,8 +31,9 @@ double point_source_update(const PlanarFrame& s, double dx, double dy) {
 FastMarching::FastMarching(const SurfaceMesh& mesh)
     : mesh_(mesh), edge_lengths_(ring_edge_lengths(mesh)), stencils_(build_triangle_stencils(mesh)) {}
 
-void FastMarching::solve(VertexId source, std::span<double> distances, SolverScratch& scratch) const {
-  ShortestFirstQueue queue(source, distances, scratch);
+void FastMarching::solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+                         double max_distance) const {
+  ShortestFirstQueue queue(sources, distances, scratch, max_distance);
   const auto& offsets = mesh_.ring_offsets();
   const auto& neighbors = mesh_.ring_neighbors();
   // Vertices lowered while processing one accepted vertex, queued once each

@@ -6,15 +6,17 @@
 // is exact for a flat mesh and far more accurate than the planar-wavefront
 // update near the source, where wavefronts are most curved. Obtuse corners
 // use unfolded virtual triangles (see triangle_stencils.hpp).
-#include "geodesics/single_source.hpp"
+#include "geodesics/geodesic_solver.hpp"
 #include "geodesics/triangle_stencils.hpp"
 
 namespace meshparticles {
 
-class FastMarching : public SingleSourceGeodesics {
+class FastMarching : public GeodesicSolver {
  public:
   explicit FastMarching(const SurfaceMesh& mesh);
-  void solve(VertexId source, std::span<double> distances, SolverScratch& scratch) const override;
+  using GeodesicSolver::solve;
+  void solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+             double max_distance) const override;
 
  private:
   const SurfaceMesh& mesh_;

@@ -14,13 +14,13 @@ namespace {
 // Leave room for everything else the process and the machine need.
 constexpr double kUsableFraction = 0.85;
 
+}  // namespace
+
 std::string gibibytes(double bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f GiB", bytes / double(1ull << 30));
   return text;
 }
-
-}  // namespace
 
 std::uint64_t available_host_memory_bytes() {
   std::ifstream meminfo("/proc/meminfo");
@@ -33,17 +33,21 @@ std::uint64_t available_host_memory_bytes() {
   return std::numeric_limits<std::uint64_t>::max();
 }
 
-std::uint64_t max_vertices_for(std::uint64_t bytes) {
-  return std::uint64_t(std::sqrt(double(bytes) / sizeof(float)));
+std::uint64_t usable_host_memory_bytes() {
+  return std::uint64_t(kUsableFraction * double(available_host_memory_bytes()));
 }
 
-void check_distance_table_fits(std::uint64_t vertex_count, std::uint64_t available_bytes, const std::string& where) {
-  const double needed = double(vertex_count) * double(vertex_count) * sizeof(float);
-  const double usable = kUsableFraction * double(available_bytes);
-  if (needed <= usable) return;
-  throw UserError("the " + std::to_string(vertex_count) + " x " + std::to_string(vertex_count) +
-                  " distance table needs " + gibibytes(needed) + " but " + where + " allows " + gibibytes(usable) +
-                  ": at most " + std::to_string(max_vertices_for(std::uint64_t(usable))) + " vertices fit");
+std::uint64_t max_vertices_for(std::uint64_t bytes, std::uint64_t bytes_per_entry) {
+  return std::uint64_t(std::sqrt(double(bytes) / double(bytes_per_entry)));
+}
+
+void check_table_fits(std::uint64_t vertex_count, std::uint64_t bytes_per_entry, std::uint64_t usable_bytes,
+                      const std::string& what, const std::string& where) {
+  const double needed = double(vertex_count) * double(vertex_count) * double(bytes_per_entry);
+  if (needed <= double(usable_bytes)) return;
+  throw UserError("the " + std::to_string(vertex_count) + " x " + std::to_string(vertex_count) + " " + what +
+                  " needs " + gibibytes(needed) + " but " + where + " holds " + gibibytes(double(usable_bytes)) +
+                  ": at most " + std::to_string(max_vertices_for(usable_bytes, bytes_per_entry)) + " vertices fit");
 }
 
 }  // namespace meshparticles

@@ -12,23 +12,28 @@
 #include <optional>
 #include <span>
 
-#include "geodesics/single_source.hpp"
+#include "geodesics/geodesic_solver.hpp"
 
 namespace meshparticles {
 
 class ShortestFirstQueue {
  public:
-  // Sets every distance to +inf but the source's (0) and queues the source.
-  ShortestFirstQueue(VertexId source, std::span<double> distances, SolverScratch& scratch)
-      : distances_(distances), heap_(scratch.heap), accepted_(scratch.accepted) {
+  // Sets every distance to +inf but the sources' (0) and queues the sources.
+  // Vertices farther than `max_distance` are never accepted.
+  ShortestFirstQueue(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+                     double max_distance)
+      : distances_(distances), heap_(scratch.heap), accepted_(scratch.accepted), max_distance_(max_distance) {
     std::fill(distances_.begin(), distances_.end(), std::numeric_limits<double>::infinity());
     accepted_.assign(distances_.size(), 0);
     heap_.clear();
-    distances_[source] = 0.0;
-    requeue(source);
+    for (const VertexId source : sources) {
+      distances_[source] = 0.0;
+      requeue(source);
+    }
   }
 
-  // The closest vertex not yet accepted, now accepted; none when all are done.
+  // The closest vertex not yet accepted, now accepted; none when all are
+  // done or the next one lies beyond the stopping distance.
   std::optional<VertexId> pop_next() {
     while (!heap_.empty()) {
       std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
@@ -36,6 +41,10 @@ class ShortestFirstQueue {
       heap_.pop_back();
       // A vertex's latest (smallest) entry comes out first; later ones are stale.
       if (accepted_[vertex]) continue;
+      if (distances_[vertex] > max_distance_) {
+        forget_tentative(vertex);
+        return std::nullopt;
+      }
       accepted_[vertex] = 1;
       return vertex;
     }
@@ -65,9 +74,22 @@ class ShortestFirstQueue {
   }
 
  private:
+  // A stopped solve leaves tentative upper bounds on the vertices around the
+  // last accepted ones; they are all in the heap (each lowered vertex was
+  // queued), so this clears them without a pass over every vertex.
+  void forget_tentative(VertexId stopped_at) {
+    distances_[stopped_at] = std::numeric_limits<double>::infinity();
+    for (const std::uint64_t entry : heap_) {
+      const auto vertex = VertexId(entry & 0xFFFFFFFFu);
+      if (!accepted_[vertex]) distances_[vertex] = std::numeric_limits<double>::infinity();
+    }
+    heap_.clear();
+  }
+
   std::span<double> distances_;
   std::vector<std::uint64_t>& heap_;
   std::vector<unsigned char>& accepted_;
+  double max_distance_;
 };
 
 }  // namespace meshparticles

@@ -1,14 +1,10 @@
 #include "opencl/program_builder.hpp"
 
 #include "common/user_error.hpp"
-#include "opencl/kernel_sources.hpp"
 
 namespace meshparticles {
 
-cl::Program build_program(const cl::Context& context, const cl::Device& device,
-                          const std::vector<std::string>& kernel_files, const KernelDefines& defines) {
-  std::string source;
-  for (const auto& file : kernel_files) source += kernel_source(file);
+std::string build_options(const KernelDefines& defines) {
   // Unsafe math lets the compiler reorder float sums, so the energy loops
   // vectorize (2-3x on PoCL); infinities keep their meaning (no
   // -cl-finite-math-only), which the blocked candidates and the distances
@@ -16,7 +12,12 @@ cl::Program build_program(const cl::Context& context, const cl::Device& device,
   // the tests hold every kernel to the serial reference.
   std::string options = "-cl-std=CL1.2 -cl-unsafe-math-optimizations";
   for (const auto& [name, value] : defines) options += " -D " + name + "=" + std::to_string(value);
+  return options;
+}
 
+cl::Program build_program(const cl::Context& context, const cl::Device& device,
+                          const std::vector<std::string>& kernel_files, const std::string& source,
+                          const std::string& options) {
   cl::Program program(context, source);
   try {
     program.build({device}, options.c_str());

@@ -2,6 +2,7 @@
 // Builds OpenCL programs from kernels/ at run time. Compile-time parameters
 // (work-group size, tile size, ...) go in as -D options; a program that
 // fails to build is a UserError whose message carries the build log.
+// Backends get their programs through program_cache.hpp.
 #include <map>
 #include <string>
 #include <vector>
@@ -12,8 +13,12 @@ namespace meshparticles {
 
 using KernelDefines = std::map<std::string, long long>;
 
-// One program from several kernel files (each through kernel_source()).
+// The options every program is built with, plus `defines` as -D NAME=VALUE.
+std::string build_options(const KernelDefines& defines);
+
+// Builds `source` (the expanded text of `kernel_files`, named in errors).
 cl::Program build_program(const cl::Context& context, const cl::Device& device,
-                          const std::vector<std::string>& kernel_files, const KernelDefines& defines);
+                          const std::vector<std::string>& kernel_files, const std::string& source,
+                          const std::string& options);
 
 }  // namespace meshparticles

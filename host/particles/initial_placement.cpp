@@ -22,7 +22,7 @@ std::vector<VertexId> distinct_random_vertices(std::size_t vertex_count, std::si
 // Each new sample is the vertex farthest from all samples so far (ties: the
 // smaller id). Another component is infinitely far, so each gets a sample
 // before any gets a second.
-std::vector<VertexId> farthest_point_samples(const DistanceTable& distances, std::size_t count, VertexId first) {
+std::vector<VertexId> farthest_point_samples(const DistanceStore& distances, std::size_t count, VertexId first) {
   const std::size_t vertex_count = distances.vertex_count();
   std::vector<float> nearest(vertex_count, std::numeric_limits<float>::infinity());
   std::vector<bool> taken(vertex_count, false);
@@ -33,8 +33,8 @@ std::vector<VertexId> farthest_point_samples(const DistanceTable& distances, std
     samples.push_back(next);
     taken[next] = true;
     if (samples.size() == count) break;
-    const auto row = distances.row(next);
-    for (std::size_t v = 0; v < vertex_count; ++v) nearest[v] = std::min(nearest[v], row[v]);
+    distances.for_each_within(next, std::numeric_limits<float>::infinity(),
+                              [&](VertexId v, float d) { nearest[v] = std::min(nearest[v], d); });
     std::size_t best = vertex_count;
     for (std::size_t v = 0; v < vertex_count; ++v) {
       if (!taken[v] && (best == vertex_count || nearest[v] > nearest[best])) best = v;
@@ -46,7 +46,7 @@ std::vector<VertexId> farthest_point_samples(const DistanceTable& distances, std
 
 }  // namespace
 
-std::vector<VertexId> place_particles(const DistanceTable& distances, const PlacementRequest& request) {
+std::vector<VertexId> place_particles(const DistanceStore& distances, const PlacementRequest& request) {
   const std::size_t vertex_count = distances.vertex_count();
   switch (request.init) {
     case Init::v0:

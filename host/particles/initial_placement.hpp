@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "geodesics/distance_table.hpp"
+#include "geodesics/distance_store.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "particles/particle_params.hpp"
 
@@ -19,6 +19,6 @@ struct PlacementRequest {
   std::optional<VertexId> start_vertex;
 };
 
-std::vector<VertexId> place_particles(const DistanceTable& distances, const PlacementRequest& request);
+std::vector<VertexId> place_particles(const DistanceStore& distances, const PlacementRequest& request);
 
 }  // namespace meshparticles

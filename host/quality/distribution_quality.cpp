@@ -6,7 +6,6 @@
 #include <unordered_set>
 
 #include "particles/energy.hpp"
-#include "reports/text_format.hpp"
 
 namespace meshparticles {
 
@@ -14,27 +13,23 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-nlohmann::json optional_json(const std::optional<double>& value) {
-  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
-}
-
 }  // namespace
 
-std::vector<float> distance_to_nearest_particle(const DistanceTable& distances, std::span<const VertexId> positions) {
+std::vector<float> distance_to_nearest_particle(const DistanceStore& distances, std::span<const VertexId> positions) {
   std::vector<float> nearest(distances.vertex_count(), std::numeric_limits<float>::infinity());
   for (const VertexId p : positions) {
-    const auto row = distances.row(p);
-    for (std::size_t v = 0; v < nearest.size(); ++v) nearest[v] = std::min(nearest[v], row[v]);
+    distances.for_each_within(p, std::numeric_limits<float>::infinity(),
+                              [&](VertexId v, float d) { nearest[v] = std::min(nearest[v], d); });
   }
   return nearest;
 }
 
-DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
+DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy) {
   return measure_quality(mesh, distances, positions, energy, distance_to_nearest_particle(distances, positions));
 }
 
-DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
+DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy,
                                     std::span<const float> to_nearest) {
   DistributionQuality quality;
@@ -44,10 +39,11 @@ DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable
 
   std::vector<double> nearest(n, kInfinity);
   const double inv_two_sigma_sq = energy.inv_two_sigma_sq();
+  std::vector<float> from_i(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto row = distances.row(positions[i]);
+    distances.distances_from(positions[i], positions, from_i);
     for (std::size_t j = i + 1; j < n; ++j) {
-      const double d = row[positions[j]];
+      const double d = from_i[j];
       nearest[i] = std::min(nearest[i], d);
       nearest[j] = std::min(nearest[j], d);
       quality.energy += pair_weight(energy.potential, d, inv_two_sigma_sq);
@@ -81,28 +77,6 @@ DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable
   std::unordered_set<VertexId> occupied;
   for (const VertexId p : positions) quality.stacked += occupied.insert(p).second ? 0 : 1;
   return quality;
-}
-
-nlohmann::json quality_json(const DistributionQuality& quality) {
-  return {{"nn_min", optional_json(quality.nn_min)},
-          {"nn_mean", optional_json(quality.nn_mean)},
-          {"nn_std", optional_json(quality.nn_std)},
-          {"nn_cv", optional_json(quality.nn_cv)},
-          {"rho", optional_json(quality.rho)},
-          {"cover", optional_json(quality.cover)},
-          {"energy", quality.energy},
-          {"stacked", quality.stacked},
-          {"d_hex", quality.d_hex}};
-}
-
-std::string quality_line(const DistributionQuality& quality) {
-  auto text = [](const std::optional<double>& value, const char* pattern) {
-    return value ? format_number(pattern, *value) : std::string("-");
-  };
-  return "nn min " + text(quality.nn_min, "%.4g") + " mean " + text(quality.nn_mean, "%.4g") + " cv " +
-         text(quality.nn_cv, "%.3f") + ", rho " + text(quality.rho, "%.3f") + ", cover " +
-         text(quality.cover, "%.3f") + ", energy " + format_number("%.6g", quality.energy) + ", " +
-         std::to_string(quality.stacked) + " stacked";
 }
 
 }  // namespace meshparticles

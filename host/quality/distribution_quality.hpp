@@ -1,13 +1,13 @@
 #pragma once
-// How evenly a particle set covers a surface, measured geodesically from the
-// distance table (docs/QUALITY.md): nearest-neighbour distances, normalized
-// packing and covering radii, energy, stacked particles.
-#include <nlohmann/json.hpp>
+// How evenly a particle set covers a surface, measured geodesically through
+// the distance store (docs/QUALITY.md): nearest-neighbour distances,
+// normalized packing and covering radii, energy, stacked particles. Their
+// JSON and text forms are in reports/quality_report.hpp.
 #include <optional>
 #include <span>
-#include <string>
+#include <vector>
 
-#include "geodesics/distance_table.hpp"
+#include "geodesics/distance_store.hpp"
 #include "particles/particle_params.hpp"
 
 namespace meshparticles {
@@ -27,21 +27,14 @@ struct DistributionQuality {
 
 // The geodesic distance from every vertex to its nearest particle (+inf in a
 // component without particles): the covering radius is its maximum.
-std::vector<float> distance_to_nearest_particle(const DistanceTable& distances, std::span<const VertexId> positions);
+std::vector<float> distance_to_nearest_particle(const DistanceStore& distances, std::span<const VertexId> positions);
 
 // `to_nearest`: distance_to_nearest_particle of these positions, for a
 // caller that also writes it out; the shorter form computes it.
-DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
+DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy,
                                     std::span<const float> to_nearest);
-DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceTable& distances,
+DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy);
-
-// The report.json form: keys nn_min, nn_mean, nn_std, nn_cv, rho, cover,
-// energy, stacked (null where a value is absent), plus d_hex.
-nlohmann::json quality_json(const DistributionQuality& quality);
-
-// One line for a run's summary: "nn 0.0723 / 0.0981 (cv 0.071), rho 0.74, cover 0.93, 0 stacked".
-std::string quality_line(const DistributionQuality& quality);
 
 }  // namespace meshparticles

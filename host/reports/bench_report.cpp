@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "backends/backend_table.hpp"
 #include "common/atomic_file.hpp"
-#include "reports/text_format.hpp"
-#include "tuning/paper_figures.hpp"
+#include "common/text_format.hpp"
+#include "measurement/paper_figures.hpp"
 
 namespace meshparticles {
 
@@ -14,9 +15,12 @@ namespace {
 std::optional<double> paper_ms(const BenchCase& bench, const std::string& backend) {
   const PaperFigures* figures = paper_figures_for(bench.mesh, bench.particles);
   if (!figures) return std::nullopt;
-  if (backend == "serial" || backend == "serial-field") return figures->cpu_ms;
-  if (backend == "naive") return figures->naive_ms;
-  return figures->tiled_ms;  // tiled, and field beside the paper's fastest
+  switch (find_backend(backend).paper_row) {
+    case PaperRow::cpu: return figures->cpu_ms;
+    case PaperRow::gpu1_naive: return figures->naive_ms;
+    case PaperRow::gpu2_tiled: return figures->tiled_ms;
+  }
+  return std::nullopt;
 }
 
 const BenchRow* row_of(const BenchCase& bench, const std::string& backend) {
@@ -43,8 +47,12 @@ std::string speedup_text(std::optional<double> speedup) {
 }
 
 std::string paper_label(const std::string& backend) {
-  if (backend == "serial" || backend == "serial-field") return "CPU";
-  return backend == "naive" ? "GPU1" : "GPU2";
+  switch (find_backend(backend).paper_row) {
+    case PaperRow::cpu: return "CPU";
+    case PaperRow::gpu1_naive: return "GPU1";
+    case PaperRow::gpu2_tiled: return "GPU2";
+  }
+  return "?";
 }
 
 // How many times faster than the paper's GPU2 (tiled, GTX 260) a row is.
@@ -59,7 +67,7 @@ std::optional<double> versus_paper_gpu2(const BenchCase& bench, const BenchRow& 
 std::string field_lines(const std::vector<const BenchCase*>& columns, const std::vector<std::string>& backends) {
   std::string text;
   for (const std::string& backend : backends) {
-    if (backend != "field" && backend != "serial-field") continue;
+    if (!find_backend(backend).field_method) continue;
     std::string versus, moved;
     for (const BenchCase* bench : columns) {
       const BenchRow* row = row_of(*bench, backend);
@@ -89,6 +97,17 @@ std::string sizes_line(const std::vector<const BenchCase*>& columns) {
   std::string line;
   for (const auto& text : seen) line += (line.empty() ? "sizes: " : "; ") + text;
   return line.empty() ? "" : line + "\n";
+}
+
+// The rows' backends in the order they were measured.
+std::vector<std::string> backends_of(const std::vector<BenchCase>& cases) {
+  std::vector<std::string> backends;
+  for (const auto& bench : cases) {
+    for (const auto& row : bench.rows) {
+      if (std::find(backends.begin(), backends.end(), row.backend) == backends.end()) backends.push_back(row.backend);
+    }
+  }
+  return backends;
 }
 
 }  // namespace
@@ -121,7 +140,7 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
       text += cell;
     }
     text += "\n";
-    for (const std::string& backend : settings.backends) {
+    for (const std::string& backend : backends_of(cases)) {
       std::snprintf(cell, sizeof cell, "%-12s (%s)%*s", backend.c_str(), paper_label(backend).c_str(),
                     int(4 - paper_label(backend).size()), "");
       text += cell;
@@ -137,7 +156,7 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
       text += "\n";
     }
     text += sizes_line(columns);
-    text += field_lines(columns, settings.backends);
+    text += field_lines(columns, backends_of(cases));
   }
   return text;
 }

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "opencl/device_discovery.hpp"
-#include "tuning/bench.hpp"
+#include "measurement/bench.hpp"
 
 namespace meshparticles {
 

@@ -12,12 +12,6 @@ namespace meshparticles {
 
 namespace {
 
-double mean(const std::vector<IterationRecord>& trace, double IterationRecord::*field) {
-  double sum = 0;
-  for (const auto& record : trace) sum += record.*field;
-  return trace.empty() ? 0.0 : sum / double(trace.size());
-}
-
 void write_points(std::ostream& out, const SurfaceMesh& mesh, const std::vector<VertexId>& positions) {
   char line[96];
   for (const VertexId v : positions) {
@@ -40,36 +34,6 @@ void write_csv(std::ostream& out, const SurfaceMesh& mesh, const std::vector<Ver
 
 }  // namespace
 
-nlohmann::json run_report(const SurfaceMesh& mesh, const RunContext& context, const RunOutcome& outcome) {
-  nlohmann::json trace = nlohmann::json::array();
-  bool has_kernel_times = false;
-  double kernel_ms_sum = 0;
-  for (const auto& record : outcome.trace) {
-    nlohmann::json entry = {{"energy", record.energy}, {"moved", record.moved}, {"ms", record.ms}};
-    if (record.kernel_ms) {
-      entry["kernel_ms"] = *record.kernel_ms;
-      kernel_ms_sum += *record.kernel_ms;
-      has_kernel_times = true;
-    }
-    trace.push_back(entry);
-  }
-  nlohmann::json report = {
-      {"mesh", {{"path", context.mesh_path},
-                {"vertices", mesh.vertex_count()},
-                {"faces", mesh.triangle_count()},
-                {"area", mesh.area()}}},
-      {"params", context.params},
-      {"device", context.device},
-      {"iterations_run", outcome.trace.size()},
-      {"stopped", outcome.converged ? "converged" : "max_iterations"},
-      {"initial_energy", outcome.initial_energy},
-      {"final_energy", outcome.trace.empty() ? outcome.initial_energy : outcome.trace.back().energy},
-      {"avg_iteration_ms", mean(outcome.trace, &IterationRecord::ms)},
-      {"trace", trace}};
-  if (has_kernel_times) report["avg_kernel_ms"] = kernel_ms_sum / double(outcome.trace.size());
-  return report;
-}
-
 void prepare_output_directory(const std::filesystem::path& directory) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
@@ -82,13 +46,13 @@ void prepare_output_directory(const std::filesystem::path& directory) {
   }
 }
 
-void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh,
-                       const std::vector<VertexId>& positions, const nlohmann::json& report,
-                       std::span<const float> distance_to_nearest_particle) {
+void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh, const RunResult& result,
+                       const nlohmann::json& report) {
+  const std::vector<VertexId>& positions = result.outcome.positions;
   write_file_atomically(directory / "particles.particles", [&](std::ostream& out) { write_points(out, mesh, positions); });
   write_file_atomically(directory / "particles.csv", [&](std::ostream& out) { write_csv(out, mesh, positions); });
   write_particles_ply(directory / "particles.ply", mesh, positions);
-  write_mesh_field_vtk(directory / "mesh_distance.vtk", mesh, distance_to_nearest_particle,
+  write_mesh_field_vtk(directory / "mesh_distance.vtk", mesh, result.distance_to_nearest,
                        "distance_to_nearest_particle");
   write_file_atomically(directory / "report.json", [&](std::ostream& out) { out << report.dump(2) << "\n"; });
 }

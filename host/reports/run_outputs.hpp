@@ -10,23 +10,15 @@
 #include <string>
 
 #include "mesh/surface_mesh.hpp"
-#include "particles/particle_run.hpp"
+#include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles {
-
-struct RunContext {
-  std::string mesh_path;
-  nlohmann::json params;  // every option in effect
-  std::string device;     // "serial" or the OpenCL device name
-};
-
-nlohmann::json run_report(const SurfaceMesh& mesh, const RunContext& context, const RunOutcome& outcome);
 
 // Creates `directory` if needed; throws UserError when it cannot be written.
 void prepare_output_directory(const std::filesystem::path& directory);
 
-void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh,
-                       const std::vector<VertexId>& positions, const nlohmann::json& report,
-                       std::span<const float> distance_to_nearest_particle);
+// Every file of the result, report.json last.
+void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh, const RunResult& result,
+                       const nlohmann::json& report);
 
 }  // namespace meshparticles

@@ -7,23 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "opencl/device_discovery.hpp"
-#include "tuning/sweep.hpp"
+#include "measurement/sweep.hpp"
 
 namespace meshparticles {
 
-struct SweepContext {
-  std::string mesh_path;
-  std::size_t vertices = 0;
-  std::size_t particles = 0;
-  SweepSettings settings;
-};
-
-std::string sweep_table(const DeviceDescription& device, const SweepContext& context,
-                        const std::vector<SweepResult>& results);
-nlohmann::json sweep_json(const DeviceDescription& device, const SweepContext& context,
-                          const std::vector<SweepResult>& results);
-void write_sweep_csv(const std::filesystem::path& file, const DeviceDescription& device, const SweepContext& context,
-                     const std::vector<SweepResult>& results);
+std::string sweep_table(const SweepOutcome& sweep);
+nlohmann::json sweep_json(const SweepOutcome& sweep);
+void write_sweep_csv(const std::filesystem::path& file, const SweepOutcome& sweep);
 
 }  // namespace meshparticles

@@ -1,5 +1,6 @@
 #include "tuning/tuning_store.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstdlib>
 #include <fstream>
@@ -22,26 +23,27 @@ int class_exponent(const std::string& size_class) {
 
 nlohmann::json to_json(const TunedSizes& sizes) {
   nlohmann::json entry = {{"device", sizes.device},
-                          {"kernel", kernel_kind_name(sizes.kind)},
+                          {"kernel", sizes.kernel},
                           {"size_class", sizes.size_class},
                           {"wg", sizes.work_group_size},
                           {"median_ms", sizes.median_ms},
                           {"measured_on", sizes.measured_on}};
-  if (sizes.kind == KernelKind::tiled) entry["tile"] = sizes.tile_size;
+  if (sizes.tile_size > 0) entry["tile"] = sizes.tile_size;
   return entry;
 }
 
 TunedSizes from_json(const nlohmann::json& entry) {
   TunedSizes sizes;
   sizes.device = entry.at("device").get<std::string>();
-  sizes.kind = parse_kernel_kind(entry.at("kernel").get<std::string>());
+  sizes.kernel = entry.at("kernel").get<std::string>();
   sizes.size_class = entry.at("size_class").get<std::string>();
   class_exponent(sizes.size_class);  // throws when malformed
   sizes.work_group_size = entry.at("wg").get<std::size_t>();
-  if (sizes.kind == KernelKind::tiled) sizes.tile_size = entry.at("tile").get<std::size_t>();
-  if (sizes.work_group_size == 0 || (sizes.kind == KernelKind::tiled && sizes.tile_size == 0)) {
-    throw UserError("a size of 0");
+  if (entry.contains("tile")) {
+    sizes.tile_size = entry.at("tile").get<std::size_t>();
+    if (sizes.tile_size == 0) throw UserError("a tile of 0");
   }
+  if (sizes.work_group_size == 0) throw UserError("a work-group size of 0");
   sizes.median_ms = entry.value("median_ms", 0.0);
   sizes.measured_on = entry.value("measured_on", "");
   return sizes;
@@ -67,7 +69,7 @@ std::filesystem::path tuning_file_or_default(const std::string& option) {
 
 std::string size_class(std::size_t particles) { return "n<=" + std::to_string(std::bit_ceil(particles)); }
 
-TuningStore TuningStore::load(const std::filesystem::path& file) {
+TuningStore TuningStore::load(const std::filesystem::path& file, const std::vector<std::string>& kernels) {
   TuningStore store;
   std::error_code error;
   if (!std::filesystem::exists(file, error)) return store;
@@ -75,7 +77,13 @@ TuningStore TuningStore::load(const std::filesystem::path& file) {
   try {
     const nlohmann::json document = nlohmann::json::parse(in);
     if (document.at("version").get<int>() != kFormatVersion) throw UserError("unknown version");
-    for (const auto& entry : document.at("entries")) store.put(from_json(entry));
+    for (const auto& entry : document.at("entries")) {
+      TunedSizes sizes = from_json(entry);
+      if (std::find(kernels.begin(), kernels.end(), sizes.kernel) == kernels.end()) {
+        throw UserError("unknown kernel '" + sizes.kernel + "'");
+      }
+      store.put(sizes);
+    }
   } catch (const std::exception& problem) {
     throw UserError("tuning file " + file.string() + " is not readable (" + problem.what() +
                     "); move it away or fix it");
@@ -83,11 +91,12 @@ TuningStore TuningStore::load(const std::filesystem::path& file) {
   return store;
 }
 
-std::optional<TunedSizes> TuningStore::find(const std::string& device, KernelKind kind, std::size_t particles) const {
+std::optional<TunedSizes> TuningStore::find(const std::string& device, const std::string& kernel,
+                                            std::size_t particles) const {
   const int wanted = class_exponent(size_class(particles));
   std::optional<TunedSizes> nearest;
   for (const TunedSizes& entry : entries_) {
-    if (entry.device != device || entry.kind != kind) continue;
+    if (entry.device != device || entry.kernel != kernel) continue;
     const int distance = std::abs(class_exponent(entry.size_class) - wanted);
     if (!nearest || distance < std::abs(class_exponent(nearest->size_class) - wanted)) nearest = entry;
   }
@@ -96,7 +105,7 @@ std::optional<TunedSizes> TuningStore::find(const std::string& device, KernelKin
 
 void TuningStore::put(const TunedSizes& sizes) {
   for (TunedSizes& entry : entries_) {
-    if (entry.device == sizes.device && entry.kind == sizes.kind && entry.size_class == sizes.size_class) {
+    if (entry.device == sizes.device && entry.kernel == sizes.kernel && entry.size_class == sizes.size_class) {
       entry = sizes;
       return;
     }

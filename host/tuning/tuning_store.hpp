@@ -1,5 +1,6 @@
 #pragma once
-// The best sizes `sweep --save` found, per device, kernel and problem size
+// The best sizes `sweep --save` found, per device, kernel (a device
+// backend's name) and problem size
 // class, in $XDG_CONFIG_HOME/meshparticles/tuning.json (else
 // ~/.config/meshparticles/tuning.json). `run` and `bench` take their sizes
 // from it when --wg and --tile are absent.
@@ -8,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "backends/update_kernel.hpp"
 
 namespace meshparticles {
 
@@ -22,10 +22,10 @@ std::string size_class(std::size_t particles);
 
 struct TunedSizes {
   std::string device;
-  KernelKind kind = KernelKind::tiled;
+  std::string kernel;          // a device backend's name: "tiled"
   std::string size_class;
   std::size_t work_group_size = 0;
-  std::size_t tile_size = 0;  // tiled only
+  std::size_t tile_size = 0;  // 0: the kernel takes no tile
   double median_ms = 0;       // what the sweep measured
   std::string measured_on;    // mesh and n of that sweep
 };
@@ -33,12 +33,13 @@ struct TunedSizes {
 class TuningStore {
  public:
   // An empty store when the file does not exist; UserError naming the file
-  // when it exists but cannot be read as a tuning file.
-  static TuningStore load(const std::filesystem::path& file);
+  // when it exists but cannot be read as a tuning file, or names a kernel
+  // not among `kernels` (the device backends' names).
+  static TuningStore load(const std::filesystem::path& file, const std::vector<std::string>& kernels);
 
   // The entry of this device and kernel for this size class, else the one of
   // the nearest size class measured for them; nothing when there is none.
-  std::optional<TunedSizes> find(const std::string& device, KernelKind kind, std::size_t particles) const;
+  std::optional<TunedSizes> find(const std::string& device, const std::string& kernel, std::size_t particles) const;
   // Adds `sizes`, replacing any entry with the same device, kernel and class.
   void put(const TunedSizes& sizes);
   // Atomically; entries of other devices and classes are kept.

@@ -9,14 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "backends/backend_factory.hpp"
-#include "geodesics/distance_table.hpp"
-#include "tuning/timing_statistics.hpp"
+#include "measurement/bench_plan.hpp"
+#include "measurement/timing_statistics.hpp"
 
 namespace meshparticles {
 
 struct BenchSettings {
-  std::vector<std::string> backends = {"serial", "naive", "tiled", "field"};
   Scheme device_scheme = Scheme::colored;
   unsigned colors = kDefaultColors;
   std::size_t iterations = 20;  // timed; the paper used 1000
@@ -41,11 +39,8 @@ struct BenchCase {
   std::vector<BenchRow> rows;
 };
 
-// Times each of `backends` (checked for this mesh and n, one per name in
-// settings.backends) on `particles` farthest-point-placed particles.
-// `on_row` is called before each backend starts (progress).
-BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceTable& distances,
-                     std::size_t particles, const std::vector<CheckedBackend>& backends,
-                     const BenchSettings& settings, const std::function<void(const std::string&)>& on_row);
+// Times every backend of every case of `plan` (one row each) on
+// farthest-point-placed particles, with a progress line.
+std::vector<BenchCase> run_bench(const BenchPlan& plan, const BenchSettings& settings);
 
 }  // namespace meshparticles

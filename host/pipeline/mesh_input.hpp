@@ -1,4 +1,7 @@
 #pragma once
+// The pipeline's first step: a mesh file (or the default sphere) read and
+// checked, its warnings on stderr, and vertex ids given by the user (input
+// ids) turned into surface vertices.
 #include <filesystem>
 #include <string>
 
@@ -6,7 +9,7 @@
 
 namespace meshparticles {
 
-// Reads a mesh for a command, printing the reader's warnings on stderr.
+// Reads and checks a mesh, printing the reader's warnings on stderr unless quiet.
 SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet = false);
 
 // With `path` empty: the committed sphere when run from the repository, else

@@ -1,7 +1,6 @@
 #pragma once
 // Particle files measured on a mesh, for `quality` (one set) and `compare`
 // (two side by side, plus how far each set's particles are from the other's).
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,18 +18,13 @@ struct MeasuredSet {
 };
 
 // `points`: read_particle_points(path), read by the caller before the
-// distance table so that a bad file fails fast.
-MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceTable& distances, const std::string& path,
+// distances so that a bad file fails fast.
+MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceStore& distances, const std::string& path,
                                   const std::vector<Vec3>& points, Potential potential, std::optional<double> sigma);
 
 // The mean over the particles of `from` of the geodesic distance to the
 // nearest particle of `to` (+inf when some particle has none in its component).
-double mean_distance_to_nearest(const DistanceTable& distances, const std::vector<VertexId>& from,
+double mean_distance_to_nearest(const DistanceStore& distances, const std::vector<VertexId>& from,
                                 const std::vector<VertexId>& to);
-
-nlohmann::json measured_set_json(const MeasuredSet& set);
-
-// The metrics as a table, one column per set.
-std::string quality_table(const std::vector<const MeasuredSet*>& sets);
 
 }  // namespace meshparticles

@@ -1,4 +1,4 @@
-#include "cli/mesh_loading.hpp"
+#include "pipeline/mesh_input.hpp"
 
 #include <iostream>
 

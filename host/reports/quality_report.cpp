@@ -1,35 +1,40 @@
-#include "quality/particle_set_report.hpp"
+#include "reports/quality_report.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <functional>
-#include <limits>
 
-#include "reports/text_format.hpp"
+#include "common/text_format.hpp"
 
 namespace meshparticles {
 
-MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceTable& distances, const std::string& path,
-                                  const std::vector<Vec3>& points, Potential potential, std::optional<double> sigma) {
-  MeasuredSet set;
-  set.path = path;
-  set.snapped = snap_to_vertices(mesh, points);
-  const std::size_t n = set.snapped.positions.size();
-  set.energy = {potential, sigma.value_or(default_sigma(potential, mesh.area(), n))};
-  set.quality = measure_quality(mesh, distances, set.snapped.positions, set.energy);
-  return set;
+namespace {
+
+nlohmann::json optional_json(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
 }
 
-double mean_distance_to_nearest(const DistanceTable& distances, const std::vector<VertexId>& from,
-                                const std::vector<VertexId>& to) {
-  double sum = 0;
-  for (const VertexId a : from) {
-    const auto row = distances.row(a);
-    float nearest = std::numeric_limits<float>::infinity();
-    for (const VertexId b : to) nearest = std::min(nearest, row[b]);
-    sum += nearest;
-  }
-  return from.empty() ? 0.0 : sum / double(from.size());
+}  // namespace
+
+nlohmann::json quality_json(const DistributionQuality& quality) {
+  return {{"nn_min", optional_json(quality.nn_min)},
+          {"nn_mean", optional_json(quality.nn_mean)},
+          {"nn_std", optional_json(quality.nn_std)},
+          {"nn_cv", optional_json(quality.nn_cv)},
+          {"rho", optional_json(quality.rho)},
+          {"cover", optional_json(quality.cover)},
+          {"energy", quality.energy},
+          {"stacked", quality.stacked},
+          {"d_hex", quality.d_hex}};
+}
+
+std::string quality_line(const DistributionQuality& quality) {
+  auto text = [](const std::optional<double>& value, const char* pattern) {
+    return value ? format_number(pattern, *value) : std::string("-");
+  };
+  return "nn min " + text(quality.nn_min, "%.4g") + " mean " + text(quality.nn_mean, "%.4g") + " cv " +
+         text(quality.nn_cv, "%.3f") + ", rho " + text(quality.rho, "%.3f") + ", cover " +
+         text(quality.cover, "%.3f") + ", energy " + format_number("%.6g", quality.energy) + ", " +
+         std::to_string(quality.stacked) + " stacked";
 }
 
 nlohmann::json measured_set_json(const MeasuredSet& set) {

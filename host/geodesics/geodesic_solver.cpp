@@ -1,4 +1,4 @@
-#include "geodesics/single_source.hpp"
+#include "geodesics/geodesic_solver.hpp"
 
 #include "common/user_error.hpp"
 #include "geodesics/dijkstra.hpp"
@@ -26,7 +26,7 @@ std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh) {
   return lengths;
 }
 
-std::unique_ptr<SingleSourceGeodesics> make_geodesics(const SurfaceMesh& mesh, GeodesicMethod method) {
+std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {
   if (method == GeodesicMethod::dijkstra) return std::make_unique<EdgeDijkstra>(mesh);
   return std::make_unique<FastMarching>(mesh);
 }

@@ -1,4 +1,4 @@
-#include "tuning/bench.hpp"
+#include "measurement/bench.hpp"
 
 #include <chrono>
 
@@ -20,33 +20,35 @@ void time_iterations(ParticleBackend& backend, const std::vector<VertexId>& star
   backend.set_positions(start);
   std::vector<double> samples;
   double kernel_sum = 0, sum = 0, moved_sum = 0;
+  bool kernels_timed = false;  // device backends time their kernels
   for (std::size_t r = 0; r < settings.iterations; ++r) {
     const auto begin = std::chrono::steady_clock::now();
     const IterationStats stats = backend.iterate(row.scheme, settings.colors);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
     samples.push_back(ms);
     sum += ms;
-    if (stats.kernel_ms) kernel_sum += *stats.kernel_ms;
+    if (stats.kernel_ms) {
+      kernel_sum += *stats.kernel_ms;
+      kernels_timed = true;
+    }
     moved_sum += double(stats.moved);
   }
   row.mean_ms = sum / double(settings.iterations);
   row.moved_mean = moved_sum / double(settings.iterations);
   row.timing = summarize_timings(samples);
-  if (is_device_backend(row.backend)) row.kernel_ms = kernel_sum / double(settings.iterations);
+  if (kernels_timed) row.kernel_ms = kernel_sum / double(settings.iterations);
 }
 
-}  // namespace
-
-BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceTable& distances,
+BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceStore& distances,
                      std::size_t particles, const std::vector<CheckedBackend>& backends,
                      const BenchSettings& settings, const std::function<void(const std::string&)>& on_row) {
   BenchCase result{mesh_name, mesh.vertex_count(), particles, {}};
   const EnergyParams energy{Potential::exp, default_sigma(Potential::exp, mesh.area(), particles)};
   const std::vector<VertexId> start = place_particles(distances, {Init::farthest, particles, 1, std::nullopt});
   for (const CheckedBackend& checked : backends) {
-    on_row(mesh_name + " n=" + std::to_string(particles) + " " + checked.name);
+    on_row(mesh_name + " n=" + std::to_string(particles) + " " + checked.name());
     BenchRow row;
-    row.backend = checked.name;
+    row.backend = checked.name();
     row.scheme = checked.device ? settings.device_scheme : Scheme::sequential;  // serial rows: the CPU loop
     if (checked.kernel) {
       row.sizes = checked.kernel->sizes_text();
@@ -57,6 +59,18 @@ BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, cons
     result.rows.push_back(row);
   }
   return result;
+}
+
+}  // namespace
+
+std::vector<BenchCase> run_bench(const BenchPlan& plan, const BenchSettings& settings) {
+  std::vector<BenchCase> results;
+  for_each_case(plan, plan.request.backends.size(),
+                [&](const PlannedCase& planned, const DistanceStore& distances, const auto& on_row) {
+                  results.push_back(bench_case(planned.request.mesh, *planned.mesh, distances,
+                                               planned.request.particles, planned.backends, settings, on_row));
+                });
+  return results;
 }
 
 }  // namespace meshparticles

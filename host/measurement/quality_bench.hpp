@@ -2,14 +2,13 @@
 // `meshparticles bench --quality`: how even each way of placing n particles
 // is, on one problem, in one table - the baselines (random vertices,
 // farthest-point sampling alone, the paper's start with its sequential
-// loop) and our default pipeline on each backend (docs/QUALITY.md).
-#include <functional>
+// loop) and our default pipeline on each backend (docs/QUALITY.md). Every
+// run goes through the pipeline (pipeline/run_pipeline.hpp).
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "backends/backend_factory.hpp"
-#include "geodesics/distance_table.hpp"
+#include "measurement/bench_plan.hpp"
 #include "quality/distribution_quality.hpp"
 
 namespace meshparticles {
@@ -32,15 +31,13 @@ struct QualityCase {
   std::vector<QualityRow> rows;
 };
 
-// The start rows, the paper's start iterated by the serial backend
-// (sequential), and one default-pipeline row per backend in `backends`
-// (farthest start, colored K = 16 on devices and on serial alike, at most
-// `max_iterations`). `on_row` is called before each row (progress).
-QualityCase quality_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceTable& distances,
-                         std::size_t particles, const std::vector<CheckedBackend>& backends,
-                         std::size_t max_iterations, const std::function<void(const std::string&)>& on_row);
+// Rows added to each case beside one per backend: random, farthest, the paper's.
+inline constexpr std::size_t kQualityBaselineRows = 3;
 
-std::string quality_tables(const std::vector<QualityCase>& cases);
-nlohmann::json quality_bench_json(const std::vector<QualityCase>& cases);
+// Per case: the start rows, the paper's start iterated by the serial backend
+// (sequential), and one default-pipeline row per backend of the plan
+// (farthest start, colored K = 16 on devices and on serial alike, at most
+// `max_iterations`).
+std::vector<QualityCase> run_quality_bench(const BenchPlan& plan, std::size_t max_iterations);
 
 }  // namespace meshparticles

@@ -1,50 +1,11 @@
-#include "quality/quality_bench.hpp"
+#include "reports/quality_bench_report.hpp"
 
 #include <cstdio>
 
-#include "particles/initial_placement.hpp"
-#include "particles/particle_run.hpp"
-#include "reports/text_format.hpp"
+#include "common/text_format.hpp"
+#include "reports/quality_report.hpp"
 
 namespace meshparticles {
-
-QualityCase quality_case(const std::string& mesh_name, const SurfaceMesh& mesh, const DistanceTable& distances,
-                         std::size_t particles, const std::vector<CheckedBackend>& backends,
-                         std::size_t max_iterations, const std::function<void(const std::string&)>& on_row) {
-  const EnergyParams energy{Potential::exp, default_sigma(Potential::exp, mesh.area(), particles)};
-  QualityCase result{mesh_name, mesh.vertex_count(), particles, energy.sigma, {}};
-  auto add_start = [&](const std::string& method, Init init) {
-    on_row(mesh_name + " n=" + std::to_string(particles) + " " + method);
-    const auto start = place_particles(distances, {init, particles, 1, std::nullopt});
-    result.rows.push_back({method, "", 0, false, measure_quality(mesh, distances, start, energy), std::nullopt});
-  };
-  auto add_run = [&](const std::string& method, const CheckedBackend& checked, Init init, Scheme scheme) {
-    on_row(mesh_name + " n=" + std::to_string(particles) + " " + method + " on " + checked.name);
-    const auto start = place_particles(distances, {init, particles, 1, init == Init::v0 ? std::optional<VertexId>(0)
-                                                                                       : std::nullopt});
-    const auto backend = make_backend(checked, mesh, distances, energy);
-    const RunOutcome outcome = run_particles(*backend, start, {scheme, kDefaultColors, max_iterations, true});
-    result.rows.push_back({method, checked.name, outcome.trace.size(), outcome.converged,
-                           measure_quality(mesh, distances, outcome.positions, energy), std::nullopt});
-  };
-  add_start("random", Init::random);
-  add_start("farthest", Init::farthest);
-  BackendRequest serial;
-  serial.name = "serial";
-  add_run("paper: v0 + sequential", check_backend(serial, mesh, particles), Init::v0, Scheme::sequential);
-  const QualityRow* serial_default = nullptr;
-  for (const CheckedBackend& checked : backends) {
-    add_run("default", checked, Init::farthest, Scheme::colored);
-    if (checked.name == "serial") serial_default = &result.rows.back();
-  }
-  if (serial_default) {
-    const double reference = serial_default->quality.energy;
-    for (QualityRow& row : result.rows) {
-      if (row.method == "default") row.energy_vs_serial = (row.quality.energy - reference) / reference;
-    }
-  }
-  return result;
-}
 
 namespace {
 

@@ -1,0 +1,42 @@
+#pragma once
+// The one way the particle system, its starts and its metrics read geodesic
+// distances: point queries, batched queries from one source, and the
+// vertices within a radius. The dense V x V table (distance_table.hpp) is
+// the first store; a store of local balls computed on demand can stand
+// behind the same interface for meshes whose table would not fit.
+#include <functional>
+#include <limits>
+#include <span>
+
+#include "mesh/surface_mesh.hpp"
+
+namespace meshparticles {
+
+class DistanceTable;
+
+class DistanceStore {
+ public:
+  virtual ~DistanceStore() = default;
+
+  virtual std::size_t vertex_count() const = 0;
+
+  // d(u, v), symmetric; +inf between components and beyond reach().
+  virtual float distance(VertexId u, VertexId v) const = 0;
+
+  // out[k] = d(u, targets[k]) for every k: one call per source in the hot
+  // loops (a candidate's energy reads its distance to every particle).
+  virtual void distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const = 0;
+
+  // visit(v, d(u, v)) for every vertex v with d(u, v) <= radius, u itself
+  // (at 0) included, in increasing v.
+  virtual void for_each_within(VertexId u, float radius, const std::function<void(VertexId, float)>& visit) const = 0;
+
+  // How far the store knows distances: +inf for a complete table.
+  virtual float reach() const { return std::numeric_limits<float>::infinity(); }
+
+  // The complete table, for the consumers that stream whole rows (the
+  // device kernels, the field's weight table); nullptr when there is none.
+  virtual const DistanceTable* dense_table() const { return nullptr; }
+};
+
+}  // namespace meshparticles

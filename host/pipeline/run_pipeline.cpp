@@ -1,0 +1,85 @@
+#include "pipeline/run_pipeline.hpp"
+
+#include <chrono>
+#include <iostream>
+
+#include "backends/backend_table.hpp"
+#include "common/user_error.hpp"
+#include "pipeline/distances.hpp"
+#include "pipeline/mesh_input.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
+  RunPlan plan;
+  plan.request = request;
+  plan.request.geodesics.quiet = request.quiet;
+  if (request.particles == 0) throw UserError("-n must be at least 1");
+  if (request.particles > mesh.vertex_count()) {
+    throw UserError("-n " + std::to_string(request.particles) + " is more particles than the " +
+                    std::to_string(mesh.vertex_count()) + " vertices of " + request.mesh_label);
+  }
+  plan.scheme = request.scheme.value_or(find_backend(request.backend.name).default_scheme);
+  if (request.colors && plan.scheme != Scheme::colored) {
+    throw UserError("--colors applies to --scheme colored, not " + scheme_name(plan.scheme));
+  }
+  plan.colors = request.colors.value_or(kDefaultColors);
+  if (request.start_vertex && request.init == Init::random) {
+    throw UserError("--start-vertex applies to --init v0 and farthest, not random");
+  }
+  plan.placement = {request.init, request.particles, request.seed, std::nullopt};
+  if (request.start_vertex) {
+    plan.placement.start_vertex = surface_vertex_for_option(mesh, *request.start_vertex, "--start-vertex");
+  }
+  plan.backend = check_backend(request.backend, mesh, request.particles);
+  plan.energy = {request.potential,
+                 request.sigma.value_or(default_sigma(request.potential, mesh.area(), request.particles))};
+  if (plan.backend.tuning_refused && !request.quiet) {
+    std::cerr << "meshparticles: warning: " << plan.backend.sizes_note << "; using the built-in sizes\n";
+  }
+  return plan;
+}
+
+RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const DistanceStore& distances) {
+  RunResult result;
+  result.plan = plan;
+  const auto particles_started = std::chrono::steady_clock::now();
+  const std::unique_ptr<ParticleBackend> backend = make_backend(plan.backend, mesh, distances, plan.energy);
+  result.device = backend->device_name();
+  result.start = place_particles(distances, plan.placement);
+  result.outcome = run_particles(
+      *backend, result.start, {plan.scheme, plan.colors, plan.request.max_iterations, plan.request.quiet});
+  result.seconds.particles = seconds_since(particles_started);
+
+  const auto quality_started = std::chrono::steady_clock::now();
+  result.distance_to_nearest = distance_to_nearest_particle(distances, result.outcome.positions);
+  result.quality =
+      measure_quality(mesh, distances, result.outcome.positions, plan.energy, result.distance_to_nearest);
+  result.seconds.quality = seconds_since(quality_started);
+  result.seconds.total = result.seconds.particles + result.seconds.quality;
+  return result;
+}
+
+RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan) {
+  const ObtainedDistances distances = obtain_distances(mesh, plan.request.geodesics);
+  RunResult result = execute_run(mesh, plan, *distances.store);
+  result.distances = distances.kind;
+  result.distances_source = distances.source;
+  result.seconds.geodesics = distances.seconds;
+  result.seconds.total += distances.seconds;
+  return result;
+}
+
+RunResult run_pipeline(const SurfaceMesh& mesh, const RunRequest& request) {
+  return execute_run(mesh, plan_run(mesh, request));
+}
+
+}  // namespace meshparticles

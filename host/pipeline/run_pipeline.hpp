@@ -1,0 +1,77 @@
+#pragma once
+// The whole pipeline as a library call: a mesh and a request in, a result
+// out - distances, start, iterations on a backend, quality. Commands (`run`,
+// a batch over many meshes, a binding for another language) are thin layers
+// on it; reports/run_report.hpp turns a result into report.json.
+//
+// Two steps, so that everything that can be refused is refused in a second,
+// before the distances (minutes on a big mesh) are computed: plan_run checks
+// the request against the mesh, the device and the memory; execute_run does
+// the work.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "backends/backend_factory.hpp"
+#include "geodesics/distance_cache.hpp"
+#include "particles/initial_placement.hpp"
+#include "particles/particle_run.hpp"
+#include "quality/distribution_quality.hpp"
+
+namespace meshparticles {
+
+struct RunRequest {
+  std::string mesh_label;  // names the mesh in messages and reports: its path
+  std::size_t particles = 1024;
+  std::size_t max_iterations = kDefaultMaxIterations;  // 0: the start alone, measured
+  BackendRequest backend;
+  std::optional<Scheme> scheme;    // default: the backend's
+  std::optional<unsigned> colors;  // colored only; default kDefaultColors
+  Init init = Init::farthest;
+  std::optional<std::size_t> start_vertex;  // an input vertex id: v0's vertex, or the first farthest sample
+  std::uint64_t seed = 1;
+  Potential potential = Potential::exp;
+  std::optional<double> sigma;  // default: the rule of default_sigma
+  GeodesicsRequest geodesics;   // solver, cache, threads
+  bool quiet = false;           // no progress lines or warnings on stderr
+};
+
+// A request checked against one mesh, with every default resolved.
+struct RunPlan {
+  RunRequest request;
+  Scheme scheme = Scheme::colored;
+  unsigned colors = kDefaultColors;
+  EnergyParams energy;
+  CheckedBackend backend;
+  PlacementRequest placement;  // start_vertex as a surface vertex
+};
+
+struct RunTimes {
+  double geodesics = 0, particles = 0, quality = 0, total = 0;  // seconds
+};
+
+struct RunResult {
+  RunPlan plan;
+  std::string device;      // "serial" or the OpenCL device's name
+  std::string distances;   // the store's kind: "dense"
+  TableSource distances_source;
+  std::vector<VertexId> start;
+  RunOutcome outcome;      // the trace and the final positions
+  std::vector<float> distance_to_nearest;  // per vertex, to the nearest final particle
+  DistributionQuality quality;
+  RunTimes seconds;
+};
+
+// Throws UserError for anything the run could not do: n out of range,
+// options that do not apply, a start vertex not on the surface, sizes the
+// device refuses, tables the host or the device cannot hold.
+RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request);
+
+// Runs a plan: obtains the distances (cache or solver), or uses `distances`.
+RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan);
+RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const DistanceStore& distances);
+
+// plan_run, then execute_run.
+RunResult run_pipeline(const SurfaceMesh& mesh, const RunRequest& request);
+
+}  // namespace meshparticles

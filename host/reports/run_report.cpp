@@ -1,0 +1,83 @@
+#include "reports/run_report.hpp"
+
+#include "reports/quality_report.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+double mean(const std::vector<IterationRecord>& trace, double IterationRecord::*field) {
+  double sum = 0;
+  for (const auto& record : trace) sum += record.*field;
+  return trace.empty() ? 0.0 : sum / double(trace.size());
+}
+
+// Every option in effect, defaults resolved.
+nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& out) {
+  const RunRequest& request = plan.request;
+  nlohmann::json params = {{"n", request.particles},
+                           {"iterations", request.max_iterations},
+                           {"backend", plan.backend.name()},
+                           {"scheme", scheme_name(plan.scheme)},
+                           {"init", init_name(request.init)},
+                           {"seed", request.seed},
+                           {"sigma", plan.energy.sigma},
+                           {"sigma_from", request.sigma ? "--sigma" : "default rule"},
+                           {"potential", potential_name(plan.energy.potential)},
+                           {"geodesic", method_name(request.geodesics.method)},
+                           {"out", out.string()}};
+  if (plan.scheme == Scheme::colored) params["colors"] = plan.colors;
+  if (plan.backend.descriptor->field_method) {
+    params["weights"] = weight_format_name(plan.backend.weights);
+    params["rebuild_every"] = plan.backend.rebuild_every;
+  }
+  if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
+  if (const auto& kernel = plan.backend.kernel) {
+    params["wg"] = kernel->work_group_size;
+    if (kernel->spec().takes_tile) params["tile"] = kernel->tile_size;
+    params["sizes_from"] = plan.backend.sizes_from;
+    if (!plan.backend.sizes_note.empty()) params["sizes_note"] = plan.backend.sizes_note;
+  }
+  return params;
+}
+
+}  // namespace
+
+nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out) {
+  const RunOutcome& outcome = result.outcome;
+  nlohmann::json trace = nlohmann::json::array();
+  bool has_kernel_times = false;
+  double kernel_ms_sum = 0;
+  for (const auto& record : outcome.trace) {
+    nlohmann::json entry = {{"energy", record.energy}, {"moved", record.moved}, {"ms", record.ms}};
+    if (record.kernel_ms) {
+      entry["kernel_ms"] = *record.kernel_ms;
+      kernel_ms_sum += *record.kernel_ms;
+      has_kernel_times = true;
+    }
+    trace.push_back(entry);
+  }
+  nlohmann::json report = {
+      {"mesh", {{"path", result.plan.request.mesh_label},
+                {"vertices", mesh.vertex_count()},
+                {"faces", mesh.triangle_count()},
+                {"area", mesh.area()}}},
+      {"params", run_parameters(result.plan, out)},
+      {"device", result.device},
+      {"distances", {{"store", result.distances}, {"from_cache", result.distances_source.from_cache}}},
+      {"iterations_run", outcome.trace.size()},
+      {"stopped", outcome.converged ? "converged" : "max_iterations"},
+      {"initial_energy", outcome.initial_energy},
+      {"final_energy", outcome.trace.empty() ? outcome.initial_energy : outcome.trace.back().energy},
+      {"avg_iteration_ms", mean(outcome.trace, &IterationRecord::ms)},
+      {"trace", trace}};
+  if (has_kernel_times) report["avg_kernel_ms"] = kernel_ms_sum / double(outcome.trace.size());
+  report["quality"] = quality_json(result.quality);
+  report["seconds"] = {{"geodesics", result.seconds.geodesics},
+                       {"particles", result.seconds.particles},
+                       {"quality", result.seconds.quality},
+                       {"total", result.seconds.total}};
+  return report;
+}
+
+}  // namespace meshparticles
