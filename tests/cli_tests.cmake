@@ -1,8 +1,15 @@
 # Each broken input: `meshparticles info FILE` exits 2 with one line naming the
 # file and the problem.
 set(DATA ${CMAKE_CURRENT_SOURCE_DIR}/data)
+# Labelled `fast`, and `device` where the command may open an OpenCL device;
+# the end-to-end scripts below are `slow`.
 function(expect_exit_of name code pattern)
   add_test(NAME cli.${name} COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.sh ${code} ${pattern} ${ARGN})
+  if(ARGN MATCHES "(^|;)(run|sweep|bench|devices)(;|$)")
+    set_tests_properties(cli.${name} PROPERTIES LABELS "fast;device")
+  else()
+    set_tests_properties(cli.${name} PROPERTIES LABELS fast)
+  endif()
 endfunction()
 function(expect_exit name code pattern)
   expect_exit_of(${name} ${code} ${pattern} $<TARGET_FILE:meshparticles> ${ARGN})
@@ -99,6 +106,7 @@ expect_exit(bench_zero_iterations 2 "--iterations must be at least 1" bench --ca
 add_test(NAME cli.performance_commands
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/performance_commands.sh $<TARGET_FILE:meshparticles> ${TORUS}
                  ${CMAKE_CURRENT_BINARY_DIR}/performance_commands ${PROJECT_SOURCE_DIR}/scripts/plot_sweep.py)
+set_tests_properties(cli.performance_commands PROPERTIES LABELS "slow;device")
 # Quality of particle files.
 set(PARTICLES_DATA ${DATA}/particles)
 expect_exit(quality_missing_file 2 "missing\\.particles: no such file" quality ${TORUS} ${PARTICLES_DATA}/missing.particles)
@@ -110,4 +118,13 @@ expect_exit(compare_bad_second 2 "header\\.particles: line 1 is not three number
 add_test(NAME cli.quality_commands
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/quality_commands.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes/patch.off
                  ${CMAKE_CURRENT_BINARY_DIR}/quality_commands ${PROJECT_SOURCE_DIR}/scripts)
+set_tests_properties(cli.quality_commands PROPERTIES LABELS "slow;device")
 expect_exit(bench_quality_csv 2 "--csv applies to the timing tables \\(with --quality, use --json\\)" bench --quality --csv ${CMAKE_CURRENT_BINARY_DIR}/q.csv)
+# generate, info --json, devices and a failed sweep, checked in full.
+add_test(NAME cli.command_outputs
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/command_outputs.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes
+                 ${PROJECT_SOURCE_DIR}/kernels ${CMAKE_CURRENT_BINARY_DIR}/command_outputs)
+set_tests_properties(cli.command_outputs PROPERTIES LABELS "fast;device")
+# host/ depends one way: no folder includes a folder above it.
+add_test(NAME layers COMMAND ${PROJECT_SOURCE_DIR}/scripts/check_layers.py)
+set_tests_properties(layers PROPERTIES LABELS fast)

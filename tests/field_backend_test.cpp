@@ -166,6 +166,39 @@ TEST(Field, AFloat32FieldWouldDrift) {
   EXPECT_LT(fixed_error, 1e-8);
 }
 
+// The units F counts, bit for bit on both sides: F on the device is the sum,
+// in the host's field_units (truncation to 2^-40), of the device's own
+// stored weights. Rounding instead of truncating, on either side, fails
+// here: float32 weights below 2^-17 are not whole units, and the test checks
+// the patch has thousands of them. (Every half value is a whole number of
+// units, down to its smallest subnormal 2^-24: the half table checks the sum.)
+TEST(Field, DeviceAndTwinCountWeightsInTheSameUnits) {
+  const MeshWithDistances m("patch.off");
+  const std::size_t particles = 60, vertices = m.mesh.vertex_count();
+  const EnergyParams energy = m.default_energy(particles);
+  const auto start = place_particles(m.distances, {Init::random, particles, 9, std::nullopt});
+  for (const WeightFormat format : {WeightFormat::float32, WeightFormat::half}) {
+    SCOPED_TRACE(weight_format_name(format));
+    auto backend = device_backend(m, energy, "field", 32, 0, format);
+    backend->set_positions(start);
+    FieldBackend& device = as_field(*backend);
+    const std::vector<float> weights = device.weights();
+    std::vector<std::int64_t> expected(vertices, 0);
+    std::size_t fractional = 0;  // weights whose units truncate and round differently
+    for (const VertexId p : start) {
+      for (std::size_t v = 0; v < vertices; ++v) {
+        const float w = weights[std::size_t(p) * vertices + v];
+        expected[v] += field_units(w);
+        fractional += std::llround(double(w) * double(kFieldUnitsPerWeight)) != field_units(w);
+      }
+    }
+    if (format == WeightFormat::float32) {
+      EXPECT_GT(fractional, 1000u) << "the test needs weights that are not whole units";
+    }
+    EXPECT_EQ(device.field(), expected);
+  }
+}
+
 // The half table: both twins store the same half values, so they make the
 // same moves; and the table really is half (weights differ from float32).
 TEST(Field, HalfWeightsGiveTheSameRunOnBothTwins) {

@@ -3,7 +3,7 @@
 // candidate whose energy (recomputed in double) is within 1e-5 relative of
 // the reference's, and exactly the reference's choice where that is unique by
 // more than the tolerance. Meshes: irregular valence (torus), a boundary
-// (patch), two components, valence 24.
+// (patch), two components, valence 24; both potentials.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,13 +26,18 @@ std::vector<VertexId> random_configuration(std::size_t vertex_count, std::size_t
   return positions;
 }
 
-class KernelAgreement : public ::testing::TestWithParam<const char*> {};
+struct AgreementCase {
+  const char* mesh;
+  Potential potential;
+};
+
+class KernelAgreement : public ::testing::TestWithParam<AgreementCase> {};
 
 TEST_P(KernelAgreement, EveryKernelSizeChoosesTheReferenceMinimum) {
-  const MeshWithDistances m(GetParam());
+  const MeshWithDistances m(GetParam().mesh);
   const std::size_t vertex_count = m.mesh.vertex_count();
   const std::size_t particles = std::min<std::size_t>(150, std::max<std::size_t>(2, vertex_count / 2));
-  const EnergyParams energy = m.default_energy(particles);
+  const EnergyParams energy = m.default_energy(particles, GetParam().potential);
   SerialBackend reference(m.mesh, m.distances, energy);
 
   for (const auto& size : kernel_sizes()) {
@@ -44,16 +49,23 @@ TEST_P(KernelAgreement, EveryKernelSizeChoosesTheReferenceMinimum) {
       const ChoiceVerdict verdict = ReferenceChoices(m.mesh, reference, start).check(kernel->synchronous_choices());
       EXPECT_EQ(verdict.wrong, 0u) << "seed " << seed << ": " << verdict.first_wrong;
       // The tiny meshes are symmetric: there, ties are the point.
-      if (vertex_count >= 100) EXPECT_GT(2 * verdict.exact_checks, verdict.ranked_choices) << "too many near-ties to mean much";
+      if (vertex_count >= 100) {
+        EXPECT_GT(2 * verdict.exact_checks, verdict.ranked_choices) << "too many near-ties to mean much";
+      }
     }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, KernelAgreement,
-                         ::testing::Values("torus.off", "patch.off", "two_pieces.off", "high_valence.off"),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           return name.substr(0, name.find('.'));
+                         ::testing::Values(AgreementCase{"torus.off", Potential::exp},
+                                           AgreementCase{"patch.off", Potential::exp},
+                                           AgreementCase{"two_pieces.off", Potential::exp},
+                                           AgreementCase{"high_valence.off", Potential::exp},
+                                           AgreementCase{"torus.off", Potential::gauss},
+                                           AgreementCase{"high_valence.off", Potential::gauss}),
+                         [](const auto& param_info) {
+                           const std::string name = param_info.param.mesh;
+                           return name.substr(0, name.find('.')) + "_" + potential_name(param_info.param.potential);
                          });
 
 // What the sweep relies on: measuring moves nothing, and the choices it

@@ -54,6 +54,32 @@ TEST(WholeRuns, SynchronousAndColoredAgreeOnEveryBackend) {
   }
 }
 
+// The same whole-run agreement under the Gaussian potential (colored, one
+// size per kernel and the twin).
+TEST(WholeRuns, GaussianPotentialAgreesOnEveryBackend) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 200;
+  const EnergyParams energy = m.default_energy(particles, Potential::gauss);
+  const auto start = place_particles(m.distances, {Init::farthest, particles, 1, std::nullopt});
+  SerialBackend reference(m.mesh, m.distances, energy);
+  const RunOutcome expected = run(reference, start, Scheme::colored, 8, 30);
+  ASSERT_GT(expected.trace.front().moved, 0u);
+  std::vector<std::unique_ptr<ParticleBackend>> backends;
+  backends.push_back(std::make_unique<SerialFieldBackend>(m.mesh, m.distances, energy, WeightFormat::float32, 0));
+  backends.push_back(device_backend(m, energy, "naive", 16));
+  backends.push_back(device_backend(m, energy, "tiled", 32, 64));
+  backends.push_back(device_backend(m, energy, "field", 32));
+  for (const auto& backend : backends) {
+    const RunOutcome got = run(*backend, start, Scheme::colored, 8, 30);
+    EXPECT_EQ(got.positions, expected.positions);
+    ASSERT_EQ(got.trace.size(), expected.trace.size());
+    for (std::size_t i = 0; i < got.trace.size(); ++i) {
+      EXPECT_EQ(got.trace[i].moved, expected.trace[i].moved) << "iteration " << i;
+      EXPECT_NEAR(got.trace[i].energy, expected.trace[i].energy, 1e-5 * expected.trace[i].energy);
+    }
+  }
+}
+
 // Every backend runs the paper's sequential loop (on a device: one sub-step
 // per particle, each taking its best candidate), from a spread start and from
 // the stacked one.

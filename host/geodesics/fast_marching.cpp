@@ -36,6 +36,14 @@ void FastMarching::solve(std::span<const VertexId> sources, std::span<double> di
   ShortestFirstQueue queue(sources, distances, scratch, max_distance);
   const auto& offsets = mesh_.ring_offsets();
   const auto& neighbors = mesh_.ring_neighbors();
+  // Which source each vertex's distance comes from. A point-source update
+  // places one virtual source from d(X) and d(Y); where two sources' fronts
+  // meet, X and Y measure from different sources and that point would be
+  // nowhere real (measured: a quarter of an edge too short). So triangles
+  // update only from corners of the same source; edges always may.
+  std::vector<std::uint32_t>& origin = scratch.origin;
+  origin.assign(distances.size(), 0);
+  for (std::uint32_t k = 0; k < sources.size(); ++k) origin[sources[k]] = k;
   // Vertices lowered while processing one accepted vertex, queued once each
   // afterwards (an edge update is often bettered by a triangle update).
   std::vector<VertexId> lowered;
@@ -45,18 +53,22 @@ void FastMarching::solve(std::span<const VertexId> sources, std::span<double> di
     lowered.clear();
     // Along edges: exact next to the source, an upper bound elsewhere.
     for (std::uint32_t k = offsets[x]; k < offsets[x + 1]; ++k) {
-      if (queue.lower(neighbors[k], dx + edge_lengths_[k])) lowered.push_back(neighbors[k]);  // distinct: a ring
+      if (queue.lower(neighbors[k], dx + edge_lengths_[k])) {
+        lowered.push_back(neighbors[k]);  // distinct: a ring
+        origin[neighbors[k]] = origin[x];
+      }
     }
     const auto lower_and_note = [&](VertexId v, double candidate) {
-      if (queue.lower(v, candidate) && std::find(lowered.begin(), lowered.end(), v) == lowered.end()) {
-        lowered.push_back(v);
-      }
+      if (!queue.lower(v, candidate)) return;
+      origin[v] = origin[x];
+      if (std::find(lowered.begin(), lowered.end(), v) == lowered.end()) lowered.push_back(v);
     };
     // Across each triangle with exactly one other corner accepted.
     for (std::uint32_t k = stencils_.triangle_offsets[x]; k < stencils_.triangle_offsets[x + 1]; ++k) {
       const TriangleAtVertex& t = stencils_.triangles[k];
       const bool a_accepted = queue.is_accepted(t.a), b_accepted = queue.is_accepted(t.b);
       if (a_accepted == b_accepted) continue;
+      if (origin[a_accepted ? t.a : t.b] != origin[x]) continue;
       if (a_accepted) {
         lower_and_note(t.b, point_source_update(t.b_from_a, dx, distances[t.a]));
       } else {
@@ -66,7 +78,7 @@ void FastMarching::solve(std::span<const VertexId> sources, std::span<double> di
     // Across unfolded virtual triangles at obtuse corners.
     for (std::uint32_t k = stencils_.virtual_offsets[x]; k < stencils_.virtual_offsets[x + 1]; ++k) {
       const VirtualUpdate& u = stencils_.virtual_updates[k];
-      if (queue.is_accepted(u.target) || !queue.is_accepted(u.other)) continue;
+      if (queue.is_accepted(u.target) || !queue.is_accepted(u.other) || origin[u.other] != origin[x]) continue;
       lower_and_note(u.target, point_source_update(u.frame, dx, distances[u.other]));
     }
     for (VertexId v : lowered) queue.requeue(v);

@@ -21,10 +21,12 @@ enum class GeodesicMethod { fast_marching, dijkstra };
 std::string method_name(GeodesicMethod method);
 GeodesicMethod parse_method(const std::string& name);
 
-// Per-thread working memory of a solve: the priority queue and accepted flags.
+// Per-thread working memory of a solve: the priority queue, accepted flags,
+// and each vertex's nearest source (fast marching).
 struct SolverScratch {
   std::vector<std::uint64_t> heap;  // see shortest_first_queue.hpp
   std::vector<unsigned char> accepted;
+  std::vector<std::uint32_t> origin;
 };
 
 inline constexpr double kNoDistanceLimit = std::numeric_limits<double>::infinity();
