@@ -111,3 +111,14 @@ add_test(NAME cli.quality_commands
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/quality_commands.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes/patch.off
                  ${CMAKE_CURRENT_BINARY_DIR}/quality_commands ${PROJECT_SOURCE_DIR}/scripts)
 expect_exit(bench_quality_csv 2 "--csv applies to the timing tables \\(with --quality, use --json\\)" bench --quality --csv ${CMAKE_CURRENT_BINARY_DIR}/q.csv)
+# --- Kernel portability (issue 15): build logs name the real file and line ---
+# kernel_source() pastes headers into one string with #line markers; PoCL's
+# compiler must report each error at its own file and line: in a pasted
+# header, in the includer after its headers, and in the second file of a
+# program (naive_update.cl, apply_moves.cl, particle_energies.cl).
+expect_kernel_build_failure(kernel_error_names_header field field.h
+  "// line 1\n// line 2\nthis is not OpenCL C;\n" "field\\.h:3:[0-9]+: ")
+expect_kernel_build_failure(kernel_error_names_includer naive naive_update.cl
+  "#include \"claims.h\"\n#include \"particle_energy.h\"\nthis is not OpenCL C;\n" "naive_update\\.cl:3:[0-9]+: ")
+expect_kernel_build_failure(kernel_error_names_second_file naive apply_moves.cl
+  "// line 1\nthis is not OpenCL C;\n" "apply_moves\\.cl:2:[0-9]+: ")
