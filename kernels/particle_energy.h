@@ -47,6 +47,11 @@ static inline uint stacked_before(uint i, uint position_i, uint c, uint here) {
   return (uint)(position_i == here) & (uint)(i < c);
 }
 
+// The candidate rule below works on one particle's candidates in private
+// arrays (float energies[CANDIDATE_SLOTS], uchar occupied[CANDIDATE_SLOTS]):
+// OpenCL 1.2 has no generic address space, so one definition serves one
+// address space, and private scratch takes none of a GPU's shared memory.
+//
 // A particle alone on its vertex never moves onto a vertex another particle
 // occupies: such a candidate is blocked, its energy recorded as +inf. A
 // particle that shares its vertex may (it is stacked already), so a stack
@@ -54,7 +59,7 @@ static inline uint stacked_before(uint i, uint position_i, uint c, uint here) {
 // occupied[j]: another particle sits on candidate j (j = 0: shares the vertex).
 #define BLOCKED INFINITY
 
-static inline void block_occupied(__local float* energies, __local const uchar* occupied, uint count) {
+static inline void block_occupied(__private float* energies, __private const uchar* occupied, uint count) {
   if (occupied[0]) return;
   for (uint j = 1; j < count; ++j) {
     if (occupied[j]) energies[j] = BLOCKED;
@@ -72,7 +77,7 @@ static inline bool ranks_before(float energy_a, uint a, float energy_b, uint b) 
 // there are not that many candidates or that one is blocked. Stacked
 // particles pass their rank in the stack, so they fan out instead of moving
 // together forever.
-static inline uint candidate_of_rank(__local const float* energies, uint count, uint rank) {
+static inline uint candidate_of_rank(__private const float* energies, uint count, uint rank) {
   if (rank >= count) return 0;
   for (uint j = 0; j < count; ++j) {
     uint before = 0;
@@ -80,6 +85,27 @@ static inline uint candidate_of_rank(__local const float* energies, uint count, 
     if (before == rank) return isinf(energies[j]) ? 0 : j;
   }
   return 0;
+}
+
+// The candidate a particle with stack rank `rank` takes (blocking in place).
+static inline uint chosen_candidate(__private float* energies, __private const uchar* occupied, uint count,
+                                    uint rank) {
+  block_occupied(energies, occupied, count);
+  return candidate_of_rank(energies, count, rank);
+}
+
+// naive and tiled compute one particle's candidates on several work-items,
+// so they meet in __local memory; the work-item that decides copies them
+// into private arrays and applies the same rule.
+static inline uint chosen_candidate_from_local(__local const float* energies, __local const uchar* occupied,
+                                               uint count, uint rank) {
+  float private_energies[CANDIDATE_SLOTS];
+  uchar private_occupied[CANDIDATE_SLOTS];
+  for (uint j = 0; j < count; ++j) {
+    private_energies[j] = energies[j];
+    private_occupied[j] = occupied[j];
+  }
+  return chosen_candidate(private_energies, private_occupied, count, rank);
 }
 
 #endif

@@ -38,12 +38,12 @@ std::size_t UpdateKernel::work_groups_for(std::size_t particles) const {
   return (particles + per_group - 1) / per_group;
 }
 
-// The __local arrays of each kernel, in bytes: per candidate slot a float
-// energy and a byte of occupancy; per particle a stack rank (not field); the
-// tile.
+// The __local arrays of each kernel, in bytes: naive and tiled, per
+// candidate slot a float energy and a byte of occupancy, per particle a stack
+// rank, and the tile. field keeps its scratch in private memory: none.
 std::size_t UpdateKernel::local_memory_bytes() const {
+  if (kind == KernelKind::field) return 0;
   const std::size_t particles = particles_per_group();
-  if (kind == KernelKind::field) return 5 * particles * candidate_slots;
   const std::size_t slots = 5 * particles * candidate_slots + 4 * particles;
   return kind == KernelKind::naive ? slots : slots + 4 * tile_size;
 }
