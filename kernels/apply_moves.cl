@@ -10,7 +10,7 @@
 #include "claims.h"
 
 // A colour holds at most ceil(n / colors) particles.
-inline uint moves_capacity(uint particle_count, uint colors) { return (particle_count + colors - 1) / colors; }
+static inline uint moves_capacity(uint particle_count, uint colors) { return (particle_count + colors - 1) / colors; }
 
 __kernel void apply_moves(__global uint* positions, __global const uint* chosen, uint particle_count, uint color,
                           uint colors, __global uint* claims, __global uint* move_counts, __global uint2* moves) {

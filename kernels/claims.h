@@ -7,7 +7,7 @@
 #ifndef CLAIMS_H
 #define CLAIMS_H
 
-inline void claim_target(__global uint* claims, uint c, uint here, uint target) {
+static inline void claim_target(__global uint* claims, uint c, uint here, uint target) {
   if (target != here) atomic_min(&claims[target], c);
 }
 

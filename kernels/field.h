@@ -15,12 +15,14 @@
 
 #if WEIGHTS_HALF
 typedef half weight_t;
-inline float stored_weight(__global const half* weights, ulong index) { return vload_half(index, weights); }
-inline float8 stored_weights8(__global const half* weights, ulong index) { return vload_half8(0, weights + index); }
+static inline float stored_weight(__global const half* weights, ulong index) { return vload_half(index, weights); }
+static inline float8 stored_weights8(__global const half* weights, ulong index) {
+  return vload_half8(0, weights + index);
+}
 #else
 typedef float weight_t;
-inline float stored_weight(__global const float* weights, ulong index) { return weights[index]; }
-inline float8 stored_weights8(__global const float* weights, ulong index) { return vload8(0, weights + index); }
+static inline float stored_weight(__global const float* weights, ulong index) { return weights[index]; }
+static inline float8 stored_weights8(__global const float* weights, ulong index) { return vload8(0, weights + index); }
 #endif
 
 // F(v) = sum_i W[p_i][v] is kept in 64-bit integers counting units of 2^-40.
@@ -33,11 +35,11 @@ inline float8 stored_weights8(__global const float* weights, ulong index) { retu
 // holds for n < 2^23 (the host checks).
 #define FIELD_UNITS_PER_WEIGHT 0x1p40f
 
-inline long field_units(float weight) { return convert_long(weight * FIELD_UNITS_PER_WEIGHT); }
-inline long8 field_units8(float8 weights) { return convert_long8(weights * FIELD_UNITS_PER_WEIGHT); }
+static inline long field_units(float weight) { return convert_long(weight * FIELD_UNITS_PER_WEIGHT); }
+static inline long8 field_units8(float8 weights) { return convert_long8(weights * FIELD_UNITS_PER_WEIGHT); }
 
 // An energy in field units as the float the candidate rule compares: one
 // rounding, to nearest.
-inline float field_energy(long units) { return convert_float(units) * (1.0f / FIELD_UNITS_PER_WEIGHT); }
+static inline float field_energy(long units) { return convert_float(units) * (1.0f / FIELD_UNITS_PER_WEIGHT); }
 
 #endif

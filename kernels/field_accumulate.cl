@@ -12,8 +12,8 @@
 
 // F and the occupancy of the vertices [first, first + 8) ∩ [0, V), from
 // scratch: n rows.
-inline void sum_rows(__global const weight_t* weights, uint vertex_count, __global const uint* positions,
-                     uint particle_count, uint first, __global long* field, __global uint* occupancy) {
+static inline void sum_rows(__global const weight_t* weights, uint vertex_count, __global const uint* positions,
+                            uint particle_count, uint first, __global long* field, __global uint* occupancy) {
   const uint end = min(first + VERTICES_PER_ITEM, vertex_count);
   for (uint v = first; v < end; ++v) occupancy[v] = 0;
   if (end - first == VERTICES_PER_ITEM) {

@@ -17,30 +17,28 @@ void field_update(__global const long* field, __global const weight_t* weights, 
                   __global const uint* ring_offsets, __global const uint* ring_neighbors,
                   __global const uint* occupancy, __global const uint* positions, uint particle_count,
                   uint color, uint colors, uint rank_stacks, __global uint* chosen, __global uint* claims) {
-  // Each work-item's own row: the shared candidate rule works on __local arrays.
-  __local float energies[WORK_GROUP_SIZE * CANDIDATE_SLOTS];
-  __local uchar occupied[WORK_GROUP_SIZE * CANDIDATE_SLOTS];
   const uint c = color + (uint)get_global_id(0) * colors;
   if (c >= particle_count) return;  // no barriers below
-  __local float* my_energies = energies + get_local_id(0) * CANDIDATE_SLOTS;
-  __local uchar* my_occupied = occupied + get_local_id(0) * CANDIDATE_SLOTS;
 
+  // One work-item decides for one particle, so its scratch is private: no
+  // __local memory, which would limit how many work-groups a GPU runs at once.
+  float energies[CANDIDATE_SLOTS];
+  uchar occupied[CANDIDATE_SLOTS];
   const uint here = positions[c];
   const uint count = candidate_count(ring_offsets, here);
   __global const weight_t* own_row = weights + (ulong)here * vertex_count;
   for (uint j = 0; j < count; ++j) {
     const uint v = candidate_vertex(ring_offsets, ring_neighbors, here, j);
-    my_energies[j] = field_energy(field[v] - field_units(stored_weight(own_row, v)));
-    my_occupied[j] = occupancy[v] > (j == 0 ? 1u : 0u);  // c itself sits on candidate 0
+    energies[j] = field_energy(field[v] - field_units(stored_weight(own_row, v)));
+    occupied[j] = occupancy[v] > (j == 0 ? 1u : 0u);  // c itself sits on candidate 0
   }
-  block_occupied(my_energies, my_occupied, count);
 
   uint stack_rank = 0;
   if (rank_stacks && occupancy[here] > 1) {
     for (uint i = 0; i < c; ++i) stack_rank += stacked_before(i, positions[i], c, here);
   }
   const uint target =
-      candidate_vertex(ring_offsets, ring_neighbors, here, candidate_of_rank(my_energies, count, stack_rank));
+      candidate_vertex(ring_offsets, ring_neighbors, here, chosen_candidate(energies, occupied, count, stack_rank));
   chosen[c] = target;
   claim_target(claims, c, here, target);
 }

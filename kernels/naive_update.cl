@@ -46,9 +46,8 @@ void naive_update(__global const float* distances, uint vertex_count,
   }
   barrier(CLK_LOCAL_MEM_FENCE);
   if (lid == 0) {
-    block_occupied(energies, occupied, count);
-    const uint target =
-        candidate_vertex(ring_offsets, ring_neighbors, here, candidate_of_rank(energies, count, stack_rank));
+    const uint target = candidate_vertex(ring_offsets, ring_neighbors, here,
+                                         chosen_candidate_from_local(energies, occupied, count, stack_rank));
     chosen[c] = target;
     claim_target(claims, c, here, target);
   }

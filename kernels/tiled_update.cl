@@ -93,9 +93,10 @@ void tiled_update(__global const float* distances, uint vertex_count,
     const uint c = color + (first + q) * colors;
     const uint at = positions[c];
     const uint count = candidate_count(ring_offsets, at);
-    block_occupied(energies + q * CANDIDATE_SLOTS, occupied_slots + q * CANDIDATE_SLOTS, count);
+    __local const float* its_energies = energies + q * CANDIDATE_SLOTS;  // particle q's slots
+    __local const uchar* its_occupied = occupied_slots + q * CANDIDATE_SLOTS;
     const uint target = candidate_vertex(ring_offsets, ring_neighbors, at,
-                                         candidate_of_rank(energies + q * CANDIDATE_SLOTS, count, stack_rank[q]));
+                                         chosen_candidate_from_local(its_energies, its_occupied, count, stack_rank[q]));
     chosen[c] = target;
     claim_target(claims, c, at, target);
   }

@@ -128,3 +128,14 @@ set_tests_properties(cli.command_outputs PROPERTIES LABELS "fast;device")
 # host/ depends one way: no folder includes a folder above it.
 add_test(NAME layers COMMAND ${PROJECT_SOURCE_DIR}/scripts/check_layers.py)
 set_tests_properties(layers PROPERTIES LABELS fast)
+# Build logs name the real file and line.
+# kernel_source() pastes headers into one string with #line markers; PoCL's
+# compiler must report each error at its own file and line: in a pasted
+# header, in the includer after its headers, and in the second file of a
+# program (naive_update.cl, apply_moves.cl, particle_energies.cl).
+expect_kernel_build_failure(kernel_error_names_header field field.h
+  "// line 1\n// line 2\nthis is not OpenCL C;\n" "field\\.h:3:[0-9]+: ")
+expect_kernel_build_failure(kernel_error_names_includer naive naive_update.cl
+  "#include \"claims.h\"\n#include \"particle_energy.h\"\nthis is not OpenCL C;\n" "naive_update\\.cl:3:[0-9]+: ")
+expect_kernel_build_failure(kernel_error_names_second_file naive apply_moves.cl
+  "// line 1\nthis is not OpenCL C;\n" "apply_moves\\.cl:2:[0-9]+: ")

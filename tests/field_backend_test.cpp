@@ -168,13 +168,17 @@ TEST(Field, AFloat32FieldWouldDrift) {
 
 // The units F counts, bit for bit on both sides: F on the device is the sum,
 // in the host's field_units (truncation to 2^-40), of the device's own
-// stored weights. Rounding instead of truncating, on either side, fails
-// here: float32 weights below 2^-17 are not whole units, and the test checks
-// the patch has thousands of them. (Every half value is a whole number of
-// units, down to its smallest subnormal 2^-24: the half table checks the sum.)
+// stored weights, and so is the total energy. Rounding instead of
+// truncating, on either side, fails here: float32 weights below 2^-17 are
+// not whole units, and the test checks there are thousands of them. The
+// torus's 1,500 vertices end in a partial chunk of 4, which the rebuild sums
+// one vertex at a time (field_units), the rest 8 at once (field_units8).
+// (Every half value is a whole number of units, down to its smallest
+// subnormal 2^-24: the half table checks the sums.)
 TEST(Field, DeviceAndTwinCountWeightsInTheSameUnits) {
-  const MeshWithDistances m("patch.off");
-  const std::size_t particles = 60, vertices = m.mesh.vertex_count();
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 200, vertices = m.mesh.vertex_count();
+  ASSERT_NE(vertices % 8, 0u) << "the test needs a partial chunk";
   const EnergyParams energy = m.default_energy(particles);
   const auto start = place_particles(m.distances, {Init::random, particles, 9, std::nullopt});
   for (const WeightFormat format : {WeightFormat::float32, WeightFormat::half}) {
@@ -183,19 +187,22 @@ TEST(Field, DeviceAndTwinCountWeightsInTheSameUnits) {
     backend->set_positions(start);
     FieldBackend& device = as_field(*backend);
     const std::vector<float> weights = device.weights();
+    const auto weight = [&](VertexId a, std::size_t v) { return weights[std::size_t(a) * vertices + v]; };
     std::vector<std::int64_t> expected(vertices, 0);
     std::size_t fractional = 0;  // weights whose units truncate and round differently
     for (const VertexId p : start) {
       for (std::size_t v = 0; v < vertices; ++v) {
-        const float w = weights[std::size_t(p) * vertices + v];
-        expected[v] += field_units(w);
-        fractional += std::llround(double(w) * double(kFieldUnitsPerWeight)) != field_units(w);
+        expected[v] += field_units(weight(p, v));
+        fractional += std::llround(double(weight(p, v)) * double(kFieldUnitsPerWeight)) != field_units(weight(p, v));
       }
     }
     if (format == WeightFormat::float32) {
       EXPECT_GT(fractional, 1000u) << "the test needs weights that are not whole units";
     }
     EXPECT_EQ(device.field(), expected);
+    double pair_units = 0;
+    for (const VertexId p : start) pair_units += double(expected[p] - field_units(weight(p, p)));
+    EXPECT_EQ(device.total_energy(), pair_units / (2.0 * double(kFieldUnitsPerWeight)));
   }
 }
 

@@ -186,10 +186,8 @@ const BackendDescriptor& field_backend() {
     // 32 is also one NVIDIA warp (docs/PERFORMANCE.md).
     spec.default_sizes = [](UpdateKernel& kernel) { kernel.work_group_size = 32; };
     spec.particles_per_group = [](const UpdateKernel& kernel) { return kernel.work_group_size; };
-    // Each work-item's candidate energies and occupancy: a float and a byte per slot.
-    spec.local_memory_bytes = [](const UpdateKernel& kernel) {
-      return 5 * kernel.work_group_size * kernel.candidate_slots;
-    };
+    // Each work-item keeps its candidates in private memory: no __local.
+    spec.local_memory_bytes = [](const UpdateKernel&) { return std::size_t{0}; };
     // float32 W takes over the distances' buffer; half W coexists with it
     // until it is computed.
     spec.table_bytes_per_entry = [](const UpdateKernel& kernel) {
