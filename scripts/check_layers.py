@@ -1,11 +1,11 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Checks that host/ depends one way: each folder includes only itself and
 the folders below it in LAYERS (the pipeline's order), so no folder cycle can
-form. Prints the folder graph; with --dot FILE also writes it as Graphviz.
+form. Prints the folder graph; with --png FILE also draws it (matplotlib).
 Exit 1 and one line per offending include when a folder reaches up or
 sideways.
 
-    scripts/check_layers.py [--dot out/layers.dot]
+    scripts/check_layers.py [--png docs/images/layers.png]
 """
 import argparse
 import pathlib
@@ -29,9 +29,35 @@ LAYERS = [
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/[^"]+"')
 
 
+def draw(edges, file):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    place = {}
+    for r, folders in enumerate(LAYERS):
+        for k, folder in enumerate(folders):
+            place[folder] = ((k + 1) / (len(folders) + 1), r)
+    figure, axes = plt.subplots(figsize=(7, 8))
+    for source, targets in edges.items():
+        for target in targets:
+            (x0, y0), (x1, y1) = place[source], place[target]
+            axes.annotate("", xy=(x1, y1 + 0.18), xytext=(x0, y0 - 0.18),
+                          arrowprops=dict(arrowstyle="->", color="0.6", lw=0.8, shrinkA=0, shrinkB=0))
+    for folder, (x, y) in place.items():
+        axes.text(x, y, folder + "/", ha="center", va="center", fontsize=11,
+                  bbox=dict(boxstyle="round", facecolor="#dbe8f6", edgecolor="#3a6ea5"))
+    axes.set_xlim(0, 1)
+    axes.set_ylim(-0.6, len(LAYERS) - 0.4)
+    axes.axis("off")
+    axes.set_title("host/: who includes whom (arrows point down only)")
+    figure.tight_layout()
+    figure.savefig(file, dpi=110)
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--dot", help="also write the folder graph to this Graphviz file")
+    parser.add_argument("--png", help="also draw the folder graph, layer by layer, into this PNG")
     args = parser.parse_args()
     host = pathlib.Path(__file__).resolve().parent.parent / "host"
     rank = {folder: r for r, folders in enumerate(LAYERS) for folder in folders}
@@ -53,10 +79,8 @@ def main() -> int:
     for r, folders in reversed(list(enumerate(LAYERS))):
         for folder in folders:
             print(f"{folder:12} -> {', '.join(sorted(edges.get(folder, []))) or '-'}")
-    if args.dot:
-        lines = ["digraph layers {", "  rankdir=TB; node [shape=box];"]
-        lines += [f"  {a} -> {b};" for a in sorted(edges) for b in sorted(edges[a])]
-        pathlib.Path(args.dot).write_text("\n".join(lines + ["}"]) + "\n")
+    if args.png:
+        draw(edges, args.png)
     for problem in problems:
         print(problem, file=sys.stderr)
     return 1 if problems else 0

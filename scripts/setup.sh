@@ -30,5 +30,7 @@ if ((${#missing[@]})); then
 fi
 
 BUILD_TYPE="${BUILD_TYPE:-Release}"
-cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
+# Extra -D options from the caller (scripts/test.sh builds with warnings as errors).
+read -r -a cmake_options <<< "${CMAKE_OPTIONS:-}"
+cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" "${cmake_options[@]}" >/dev/null
 cmake --build "$ROOT/build" --parallel "$(nproc)" -- --no-print-directory >/dev/null

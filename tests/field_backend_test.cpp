@@ -120,7 +120,7 @@ TEST(Field, RebuildingChangesNothing) {
 // drift from the sum of the same weights in double past the 1e-5 the choices
 // are held to, while the fixed-point field stays at its truncation error
 // (at most 2^-40 per particle). Prints the figures docs/ALGORITHM.md quotes:
-//   build/unit_tests --gtest_filter=Field.AFloat32FieldWouldDrift
+//   build/device_tests --gtest_filter=Field.AFloat32FieldWouldDrift
 TEST(Field, AFloat32FieldWouldDrift) {
   const MeshWithDistances m("torus.off");
   const EnergyParams energy = m.default_energy(kParticles);

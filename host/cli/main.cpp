@@ -43,9 +43,15 @@ int main(int argc, char** argv) {
     std::cerr << "meshparticles: error: " << error.what() << "\n";
     return error.exit_code();
   } catch (const cl::Error& error) {
+    // Devices allocate lazily: a buffer they cannot hold may be refused at
+    // the first launch that uses it. That is the input's size, not a bug.
+    const bool out_of_memory = error.err() == CL_MEM_OBJECT_ALLOCATION_FAILURE ||
+                               error.err() == CL_OUT_OF_RESOURCES || error.err() == CL_OUT_OF_HOST_MEMORY;
     std::cerr << "meshparticles: error: OpenCL call " << error.what() << " failed: "
-              << opencl_error_text(error.err()) << "\n";
-    return 1;
+              << opencl_error_text(error.err())
+              << (out_of_memory ? " (the device ran out of memory or resources: try fewer vertices or particles)" : "")
+              << "\n";
+    return out_of_memory ? 2 : 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "meshparticles: error: out of memory\n";
     return 2;
