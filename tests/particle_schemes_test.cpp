@@ -9,6 +9,7 @@
 #include "particle_test_support.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
+#include "particles/scheme_step.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -123,6 +124,104 @@ TEST(Sequential, EnergyNeverIncreasesAndTheRunStops) {
         previous = record.energy;
       }
       EXPECT_LT(outcome.trace.back().energy, outcome.initial_energy);
+    }
+  }
+}
+
+// The monotone scheme's promise, on every backend: each iteration that moves
+// particles lowers the energy the backend reports, so the run stops with no
+// particle moving - here from a configuration where colored never settles
+// (torus, n = 200, K = 2: particles of one colour keep swapping back and
+// forth; Field tests rely on it running 1,000 iterations).
+TEST(Monotone, SettlesWhereColoredOscillatesAndNeverRaisesTheEnergy) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 200;
+  const EnergyParams energy = m.default_energy(particles);
+  const auto start = place_particles(m.distances, {Init::random, particles, 3, std::nullopt});
+  SerialFieldBackend colored(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+  ASSERT_FALSE(run(colored, start, Scheme::colored, 2, 300).converged) << "the test needs a case colored cannot settle";
+
+  std::vector<std::unique_ptr<ParticleBackend>> backends;
+  backends.push_back(std::make_unique<SerialBackend>(m.mesh, m.distances, energy));
+  backends.push_back(std::make_unique<SerialFieldBackend>(m.mesh, m.distances, energy, WeightFormat::float32, 0));
+  backends.push_back(device_backend(m, energy, "naive", 16));
+  backends.push_back(device_backend(m, energy, "tiled", 32, 64));
+  backends.push_back(device_backend(m, energy, "field", 32));
+  std::vector<RunOutcome> outcomes;
+  for (const auto& backend : backends) {
+    SCOPED_TRACE(backend->device_name());
+    const RunOutcome outcome = run(*backend, start, Scheme::monotone, 2, 300);
+    EXPECT_TRUE(outcome.converged);
+    double previous = outcome.initial_energy;
+    std::size_t redone = 0;
+    for (const auto& record : outcome.trace) {
+      if (record.moved > 0) {
+        EXPECT_LT(record.energy, previous);
+      } else {
+        EXPECT_EQ(record.energy, previous);
+      }
+      previous = record.energy;
+      redone += !record.redone_as.empty();
+    }
+    EXPECT_GT(redone, 0u) << "some iteration should have needed more colours";
+    outcomes.push_back(outcome);
+  }
+  // The field device and its serial twin count the same units: the same run.
+  const RunOutcome& twin = outcomes[1];
+  const RunOutcome& field = outcomes[4];
+  EXPECT_EQ(field.positions, twin.positions);
+  ASSERT_EQ(field.trace.size(), twin.trace.size());
+  for (std::size_t i = 0; i < field.trace.size(); ++i) {
+    EXPECT_EQ(field.trace[i].moved, twin.trace[i].moved) << "iteration " << i;
+    EXPECT_EQ(field.trace[i].redone_as, twin.trace[i].redone_as) << "iteration " << i;
+  }
+}
+
+// An undone attempt leaves no trace: a redone iteration's result is what the
+// kept attempt gives from the iteration's own start.
+TEST(Monotone, ARedoneIterationStartsAgainFromItsStart) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 200;
+  const EnergyParams energy = m.default_energy(particles);
+  SerialFieldBackend monotone(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+  SerialFieldBackend replay(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+  monotone.set_positions(place_particles(m.distances, {Init::random, particles, 3, std::nullopt}));
+  double current = monotone.total_energy();
+  std::size_t replayed = 0;
+  for (std::size_t iteration = 0; iteration < 300; ++iteration) {
+    const std::vector<VertexId> before = monotone.positions();
+    const IterationStats stats = iterate_scheme(monotone, Scheme::monotone, 2, current);
+    if (stats.attempts > 1 && stats.kept.rfind("colored K=", 0) == 0) {
+      replay.set_positions(before);
+      const IterationStats again = replay.iterate(Scheme::colored, unsigned(std::stoul(stats.kept.substr(10))));
+      EXPECT_EQ(monotone.positions(), replay.positions()) << "iteration " << iteration << ", " << stats.kept;
+      EXPECT_EQ(stats.moved, again.moved);
+      EXPECT_EQ(stats.energy, again.energy);
+      ++replayed;
+    }
+    EXPECT_EQ(stats.energy, monotone.total_energy()) << "the reported energy is the positions'";
+    current = stats.energy;
+    if (stats.moved == 0) break;
+  }
+  EXPECT_GT(replayed, 0u);
+}
+
+// From the paper's stacked start too, and with the default colours.
+TEST(Monotone, DrainsThePapersStackWithoutRaisingTheEnergy) {
+  const MeshWithDistances m("patch.off");
+  const std::size_t particles = 100;
+  const EnergyParams energy = m.default_energy(particles);
+  const auto start = place_particles(m.distances, {Init::v0, particles, 0, VertexId{0}});
+  for (const auto& backend : std::vector<std::shared_ptr<ParticleBackend>>{
+           std::make_shared<SerialBackend>(m.mesh, m.distances, energy), device_backend(m, energy, "field", 32)}) {
+    SCOPED_TRACE(backend->device_name());
+    const RunOutcome outcome = run(*backend, start, Scheme::monotone, kDefaultColors, 1000);
+    EXPECT_TRUE(outcome.converged);
+    EXPECT_EQ(std::set<VertexId>(outcome.positions.begin(), outcome.positions.end()).size(), particles);
+    double previous = outcome.initial_energy;
+    for (const auto& record : outcome.trace) {
+      EXPECT_LE(record.energy, previous);
+      previous = record.energy;
     }
   }
 }

@@ -22,7 +22,7 @@ struct BenchOptions {
   std::vector<std::string> cases;  // "mesh:n"; default: the paper's
   std::vector<std::string> backends = {"serial", "naive", "tiled", "field"};
   BenchSettings settings;
-  std::string scheme = "colored";
+  std::string scheme = "monotone";
   std::string device;
   std::string meshes_dir = "meshes";
   std::string csv;
@@ -58,8 +58,8 @@ void write_json(const std::string& file, const nlohmann::json& document) {
 void run_bench_command(BenchOptions options, bool colors_given) {
   BenchSettings& settings = options.settings;
   settings.device_scheme = parse_scheme(options.scheme);
-  if (colors_given && settings.device_scheme != Scheme::colored) {
-    throw UserError("--colors applies to --scheme colored, not " + options.scheme);
+  if (colors_given && !uses_colors(settings.device_scheme)) {
+    throw UserError("--colors applies to --scheme colored and monotone, not " + options.scheme);
   }
   if (settings.iterations == 0) throw UserError("--iterations must be at least 1");
   if (options.quality && !options.csv.empty()) throw UserError("--csv applies to the timing tables (with --quality, use --json)");
@@ -106,8 +106,8 @@ void add_bench_command(CLI::App& app) {
       ->capture_default_str();
   bench->add_option("--iterations", options->settings.iterations, "Timed iterations per row (the paper: 1000)")
       ->capture_default_str();
-  bench->add_option("--scheme", options->scheme, "Scheme of the device rows: colored or synchronous")
-      ->check(CLI::IsMember({"synchronous", "colored"}))
+  bench->add_option("--scheme", options->scheme, "Scheme of the device rows: monotone, colored or synchronous")
+      ->check(CLI::IsMember({"synchronous", "colored", "monotone"}))
       ->capture_default_str();
   bench->add_option("--colors", options->settings.colors, "Groups of the colored scheme")
       ->check(CLI::PositiveNumber)

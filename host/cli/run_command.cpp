@@ -89,11 +89,11 @@ void add_run_command(CLI::App& app) {
       ->check(CLI::IsMember(backend_names()))
       ->capture_default_str();
   run->add_option("--scheme", options->scheme,
-                  "sequential, synchronous or colored (default: sequential on serial and serial-field, colored on "
-                  "the OpenCL backends)")
-      ->check(CLI::IsMember({"sequential", "synchronous", "colored"}));
+                  "sequential, synchronous, colored or monotone (colored, with every iteration lowering the energy; "
+                  "default: sequential on serial and serial-field, monotone on the OpenCL backends)")
+      ->check(CLI::IsMember({"sequential", "synchronous", "colored", "monotone"}));
   run->add_option("--colors", request.colors,
-                  "Groups of the colored scheme (default " + std::to_string(kDefaultColors) + ")")
+                  "Groups of the colored and monotone schemes (default " + std::to_string(kDefaultColors) + ")")
       ->check(CLI::PositiveNumber);
   run->add_option("--init", options->init, "Start: v0 (all on one vertex), random, farthest (farthest-point sampling)")
       ->check(CLI::IsMember({"v0", "random", "farthest"}))

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "particles/initial_placement.hpp"
+#include "particles/scheme_step.hpp"
 
 namespace meshparticles {
 
@@ -16,14 +17,19 @@ namespace {
 void time_iterations(ParticleBackend& backend, const std::vector<VertexId>& start, const BenchSettings& settings,
                      BenchRow& row) {
   backend.set_positions(start);
-  for (std::size_t w = 0; w < settings.warmups; ++w) backend.iterate(row.scheme, settings.colors);
+  double energy = backend.total_energy();
+  for (std::size_t w = 0; w < settings.warmups; ++w) {
+    energy = iterate_scheme(backend, row.scheme, settings.colors, energy).energy;
+  }
   backend.set_positions(start);
+  energy = backend.total_energy();
   std::vector<double> samples;
   double kernel_sum = 0, sum = 0, moved_sum = 0;
   bool kernels_timed = false;  // device backends time their kernels
   for (std::size_t r = 0; r < settings.iterations; ++r) {
     const auto begin = std::chrono::steady_clock::now();
-    const IterationStats stats = backend.iterate(row.scheme, settings.colors);
+    const IterationStats stats = iterate_scheme(backend, row.scheme, settings.colors, energy);
+    energy = stats.energy;
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
     samples.push_back(ms);
     sum += ms;

@@ -15,7 +15,7 @@
 namespace meshparticles {
 
 struct BenchSettings {
-  Scheme device_scheme = Scheme::colored;
+  Scheme device_scheme = Scheme::monotone;
   unsigned colors = kDefaultColors;
   std::size_t iterations = 20;  // timed; the paper used 1000
   std::size_t warmups = 1;      // untimed first (PoCL compiles at the first launch)

@@ -42,7 +42,7 @@ QualityCase quality_case(const BenchRequest& bench, const PlannedCase& planned, 
   add_run("paper: v0 + sequential", "serial", Init::v0, Scheme::sequential);
   std::optional<std::size_t> serial_default;  // an index: later rows may reallocate
   for (const CheckedBackend& checked : planned.backends) {
-    add_run("default", checked.name(), Init::farthest, Scheme::colored);
+    add_run("default", checked.name(), Init::farthest, Scheme::monotone);
     if (checked.name() == "serial") serial_default = result.rows.size() - 1;
   }
   if (serial_default) {

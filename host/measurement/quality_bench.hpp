@@ -36,7 +36,7 @@ inline constexpr std::size_t kQualityBaselineRows = 3;
 
 // Per case: the start rows, the paper's start iterated by the serial backend
 // (sequential), and one default-pipeline row per backend of the plan
-// (farthest start, colored K = 16 on devices and on serial alike, at most
+// (farthest start, monotone K = 16 on devices and on serial alike, at most
 // `max_iterations`).
 std::vector<QualityCase> run_quality_bench(const BenchPlan& plan, std::size_t max_iterations);
 

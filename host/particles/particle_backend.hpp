@@ -17,6 +17,10 @@ struct IterationStats {
   std::size_t moved = 0;
   double energy = 0;                 // total pair energy after the iteration
   std::optional<double> kernel_ms;  // update kernels (field: and its field updates), from profiling events (device backends)
+  // monotone: the attempts this iteration took, and what the kept one was
+  // ("colored K=32", "sequential", or "none" when no attempt lowered the energy).
+  unsigned attempts = 1;
+  std::string kept;
 };
 
 class ParticleBackend {
@@ -28,7 +32,7 @@ class ParticleBackend {
   virtual std::vector<VertexId> positions() = 0;
   // sequential: every particle in index order; synchronous: one sub-step of
   // all particles from one snapshot; colored: `colors` sub-steps, group
-  // index % colors after group.
+  // index % colors after group. (monotone is iterate_scheme's, on top.)
   virtual IterationStats iterate(Scheme scheme, unsigned colors) = 0;
   // Total pair energy sum_{i<j} w(d(p_i, p_j)) of the current positions.
   virtual double total_energy() = 0;

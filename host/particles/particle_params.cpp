@@ -16,7 +16,8 @@ Scheme parse_scheme(const std::string& name) {
   if (name == "sequential") return Scheme::sequential;
   if (name == "synchronous") return Scheme::synchronous;
   if (name == "colored") return Scheme::colored;
-  throw UserError("unknown scheme '" + name + "' (choose sequential, synchronous or colored)");
+  if (name == "monotone") return Scheme::monotone;
+  throw UserError("unknown scheme '" + name + "' (choose sequential, synchronous, colored or monotone)");
 }
 
 Init parse_init(const std::string& name) {
@@ -41,6 +42,7 @@ std::string scheme_name(Scheme scheme) {
     case Scheme::sequential: return "sequential";
     case Scheme::synchronous: return "synchronous";
     case Scheme::colored: return "colored";
+    case Scheme::monotone: return "monotone";
   }
   return "?";
 }

@@ -7,7 +7,10 @@
 namespace meshparticles {
 
 enum class Potential { exp, gauss };
-enum class Scheme { sequential, synchronous, colored };
+// sequential, synchronous and colored are the paper's and its variants, run
+// by the backends themselves; monotone is colored with a guarantee, built on
+// them in particles/scheme_step.hpp.
+enum class Scheme { sequential, synchronous, colored, monotone };
 enum class Init { v0, random, farthest };
 // How the field backends store the weight table W = w(d).
 enum class WeightFormat { float32, half };
@@ -21,9 +24,13 @@ std::string init_name(Init init);
 WeightFormat parse_weight_format(const std::string& name);  // "float" | "half"
 std::string weight_format_name(WeightFormat format);
 
-// Groups of the colored scheme when --colors is absent: the smallest K that
-// converged like the sequential loop on sphere/1024 (docs/ALGORITHM.md).
+// Groups of the colored and monotone schemes when --colors is absent: the
+// smallest K that converged like the sequential loop on sphere/1024
+// (docs/ALGORITHM.md).
 constexpr unsigned kDefaultColors = 16;
+
+// Whether the scheme splits particles into --colors groups.
+inline bool uses_colors(Scheme scheme) { return scheme == Scheme::colored || scheme == Scheme::monotone; }
 
 // The energy's parameters, shared by every backend.
 struct EnergyParams {

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "common/progress.hpp"
+#include "particles/scheme_step.hpp"
 
 namespace meshparticles {
 
@@ -14,9 +15,10 @@ RunOutcome run_particles(ParticleBackend& backend, std::span<const VertexId> sta
   ProgressLine progress("particles", settings.max_iterations, settings.quiet);
   for (std::size_t iteration = 0; iteration < settings.max_iterations; ++iteration) {
     const auto started = std::chrono::steady_clock::now();
-    const IterationStats stats = backend.iterate(settings.scheme, settings.colors);
+    const double energy_before = outcome.trace.empty() ? outcome.initial_energy : outcome.trace.back().energy;
+    const IterationStats stats = iterate_scheme(backend, settings.scheme, settings.colors, energy_before);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    outcome.trace.push_back({stats.energy, stats.moved, ms, stats.kernel_ms});
+    outcome.trace.push_back({stats.energy, stats.moved, ms, stats.kernel_ms, stats.attempts > 1 ? stats.kept : ""});
     char detail[96];
     std::snprintf(detail, sizeof detail, "moved %zu  energy %.6g  %.2f ms/iteration", stats.moved, stats.energy, ms);
     progress.update(iteration + 1, detail);

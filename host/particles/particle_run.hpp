@@ -2,6 +2,7 @@
 // The iteration loop every backend shares: iterate until the iteration limit
 // or until an iteration moves no particle, recording a trace.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "particles/particle_backend.hpp"
@@ -23,6 +24,7 @@ struct IterationRecord {
   std::size_t moved = 0;
   double ms = 0;  // wall time of the iteration
   std::optional<double> kernel_ms;
+  std::string redone_as;  // monotone: what was kept when the first attempt was undone; else empty
 };
 
 struct RunOutcome {

@@ -28,8 +28,8 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
                     std::to_string(mesh.vertex_count()) + " vertices of " + request.mesh_label);
   }
   plan.scheme = request.scheme.value_or(find_backend(request.backend.name).default_scheme);
-  if (request.colors && plan.scheme != Scheme::colored) {
-    throw UserError("--colors applies to --scheme colored, not " + scheme_name(plan.scheme));
+  if (request.colors && !uses_colors(plan.scheme)) {
+    throw UserError("--colors applies to --scheme colored and monotone, not " + scheme_name(plan.scheme));
   }
   plan.colors = request.colors.value_or(kDefaultColors);
   if (request.start_vertex && request.init == Init::random) {

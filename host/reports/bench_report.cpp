@@ -118,7 +118,7 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
                      " iterations (the paper: 1000), [speed-up over the serial row of the same table]\n";
   text += "ours: serial = the paper's CPU loop (sequential, 1 thread, double); device rows on " + device_name +
           ", scheme " + scheme_name(settings.device_scheme) +
-          (settings.device_scheme == Scheme::colored ? " K=" + std::to_string(settings.colors) : "") +
+          (uses_colors(settings.device_scheme) ? " K=" + std::to_string(settings.colors) : "") +
           "; the first iterations from a farthest-point start\n"
           "paper: Xeon CPU and GTX 260 (Tables 1 and 2); field rows stand beside its fastest, GPU2\n";
   std::vector<std::string> meshes;
@@ -192,7 +192,7 @@ nlohmann::json bench_json(const std::string& device_name, const BenchSettings& s
   return {{"device", device_name},
           {"iterations", settings.iterations},
           {"device_scheme", scheme_name(settings.device_scheme)},
-          {"colors", settings.device_scheme == Scheme::colored ? nlohmann::json(settings.colors) : nullptr},
+          {"colors", uses_colors(settings.device_scheme) ? nlohmann::json(settings.colors) : nullptr},
           {"time", "wall ms per iteration (mean over the timed iterations), after warm-up"},
           {"cases", out_cases}};
 }

@@ -17,7 +17,7 @@ std::string cell(const std::optional<double>& value, const char* pattern) {
 
 std::string quality_tables(const std::vector<QualityCase>& cases) {
   std::string text =
-      "bench --quality: geodesic metrics of each placement; default = farthest start, colored K=" +
+      "bench --quality: geodesic metrics of each placement; default = farthest start, monotone K=" +
       std::to_string(kDefaultColors) + " on every backend (serial too), as `run` does; paper = every particle on "
       "vertex 0, then the sequential loop (serial)\n";
   char line[256];

@@ -26,7 +26,7 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                            {"potential", potential_name(plan.energy.potential)},
                            {"geodesic", method_name(request.geodesics.method)},
                            {"out", out.string()}};
-  if (plan.scheme == Scheme::colored) params["colors"] = plan.colors;
+  if (uses_colors(plan.scheme)) params["colors"] = plan.colors;
   if (plan.backend.descriptor->field_method) {
     params["weights"] = weight_format_name(plan.backend.weights);
     params["rebuild_every"] = plan.backend.rebuild_every;
@@ -50,6 +50,7 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
   double kernel_ms_sum = 0;
   for (const auto& record : outcome.trace) {
     nlohmann::json entry = {{"energy", record.energy}, {"moved", record.moved}, {"ms", record.ms}};
+    if (!record.redone_as.empty()) entry["redone_as"] = record.redone_as;
     if (record.kernel_ms) {
       entry["kernel_ms"] = *record.kernel_ms;
       kernel_ms_sum += *record.kernel_ms;
