@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
-# Every test from a fresh Debian 12 machine: installs what is missing, builds,
-# and runs the whole suite with ctest on PoCL (the CPU OpenCL device).
+# Every test from a fresh Debian 12 machine: installs what is missing, builds
+# (warnings are errors), runs the whole suite with ctest on PoCL (the CPU
+# OpenCL device), then the fast tests again under AddressSanitizer and
+# UndefinedBehaviorSanitizer (scripts/sanitize.sh).
+#   scripts/test.sh            everything (what CI runs)
+#   scripts/test.sh ARGS       ctest ARGS only, e.g. -L fast or -R Monotone
 set -euo pipefail
 # Warnings are errors here, so a change that adds one does not land.
 CMAKE_OPTIONS="-DMESHPARTICLES_STRICT=ON ${CMAKE_OPTIONS:-}"
@@ -8,4 +12,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 cd "$ROOT/build"
 # Tests run on PoCL whatever else the machine has, unless the caller chose.
 export MESHPARTICLES_DEVICE="${MESHPARTICLES_DEVICE:-Portable Computing Language}"
-ctest --output-on-failure --parallel "$(nproc)" "$@"
+if (($#)); then
+  exec ctest --output-on-failure --parallel "$(nproc)" "$@"
+fi
+ctest --output-on-failure --parallel "$(nproc)"
+"$ROOT/scripts/sanitize.sh" fast

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The suite under AddressSanitizer and UndefinedBehaviorSanitizer: builds
+# build-sanitize/ (-DMESHPARTICLES_SANITIZE=ON) and runs the tests labelled
+# LABEL (default: fast; `all` for every test but the offline kernel check).
+# Any report from project code fails the run. PoCL and the OpenCL loader are
+# not built with the sanitizers; their allocations are left to them
+# (detect_leaks=0: the ICD loader and PoCL keep allocations until exit).
+#   scripts/sanitize.sh [LABEL]      after scripts/setup.sh has installed the packages
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+label=${1:-fast}
+build="$ROOT/build-sanitize"
+echo "sanitize: building $build (about 10 minutes on 2 cores the first time)" >&2
+cmake -S "$ROOT" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMESHPARTICLES_SANITIZE=ON >/dev/null
+cmake --build "$build" --parallel "$(nproc)" -- --no-print-directory >/dev/null
+export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export MESHPARTICLES_DEVICE="${MESHPARTICLES_DEVICE:-Portable Computing Language}"
+cd "$build"
+if [ "$label" = all ]; then
+  ctest --output-on-failure --parallel "$(nproc)" -LE kernels
+else
+  ctest --output-on-failure --parallel "$(nproc)" -L "$label" -LE kernels
+fi
