@@ -173,6 +173,37 @@ TEST(GeodesicSolver, AStoppedSolveEqualsTheFullOneInsideTheRadius) {
   }
 }
 
+// A ball solve touches only its ball, gives exactly the full solve's values
+// inside the radius, and leaves the scratch clean: interleaved with full
+// solves on the same scratch, every answer is as if computed alone.
+TEST(GeodesicSolver, BallsAreTheFullSolveInsideTheRadius) {
+  const SurfaceMesh sphere = committed("sphere.off");
+  for (const GeodesicMethod method : {GeodesicMethod::fast_marching, GeodesicMethod::dijkstra}) {
+    SCOPED_TRACE(method_name(method));
+    const auto solver = make_geodesic_solver(sphere, method);
+    SolverScratch scratch;
+    std::vector<double> full(sphere.vertex_count());
+    for (const VertexId source : {VertexId(0), VertexId(1234), VertexId(3999), VertexId(1234)}) {
+      const double radius = 0.3;
+      const Ball ball = solver->solve_ball(source, radius, scratch);
+      solver->solve(source, full, scratch);
+      ASSERT_TRUE(std::is_sorted(ball.vertices.begin(), ball.vertices.end()));
+      std::size_t k = 0;
+      for (std::size_t v = 0; v < full.size(); ++v) {
+        if (full[v] > radius) continue;
+        ASSERT_LT(k, ball.vertices.size());
+        ASSERT_EQ(ball.vertices[k], v);
+        ASSERT_EQ(ball.distances[k], float(full[v])) << "vertex " << v;
+        ++k;
+      }
+      EXPECT_EQ(k, ball.vertices.size()) << "the ball has vertices beyond its radius";
+      EXPECT_GT(k, 50u);
+      EXPECT_TRUE(std::all_of(scratch.accepted.begin(), scratch.accepted.end(), [](auto a) { return a == 0; }));
+      EXPECT_TRUE(std::all_of(scratch.distances.begin(), scratch.distances.end(), [](double d) { return std::isinf(d); }));
+    }
+  }
+}
+
 // Several sources: each vertex gets the distance to its nearest source. On
 // the edge graph that is exactly the smallest single-source distance. Fast
 // marching's fronts meet between the sources, where a vertex may be reached

@@ -4,9 +4,10 @@
 
 namespace meshparticles {
 
-EdgeDijkstra::EdgeDijkstra(const SurfaceMesh& mesh) : mesh_(mesh), edge_lengths_(ring_edge_lengths(mesh)) {}
+EdgeDijkstra::EdgeDijkstra(const SurfaceMesh& mesh)
+    : GeodesicSolver(mesh.vertex_count()), mesh_(mesh), edge_lengths_(ring_edge_lengths(mesh)) {}
 
-void EdgeDijkstra::solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+void EdgeDijkstra::march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
                          double max_distance) const {
   ShortestFirstQueue queue(sources, distances, scratch, max_distance);
   const auto& offsets = mesh_.ring_offsets();

@@ -29,9 +29,12 @@ double point_source_update(const PlanarFrame& s, double dx, double dy) {
 }  // namespace
 
 FastMarching::FastMarching(const SurfaceMesh& mesh)
-    : mesh_(mesh), edge_lengths_(ring_edge_lengths(mesh)), stencils_(build_triangle_stencils(mesh)) {}
+    : GeodesicSolver(mesh.vertex_count()),
+      mesh_(mesh),
+      edge_lengths_(ring_edge_lengths(mesh)),
+      stencils_(build_triangle_stencils(mesh)) {}
 
-void FastMarching::solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+void FastMarching::march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
                          double max_distance) const {
   ShortestFirstQueue queue(sources, distances, scratch, max_distance);
   const auto& offsets = mesh_.ring_offsets();
@@ -41,8 +44,8 @@ void FastMarching::solve(std::span<const VertexId> sources, std::span<double> di
   // meet, X and Y measure from different sources and that point would be
   // nowhere real (measured: a quarter of an edge too short). So triangles
   // update only from corners of the same source; edges always may.
+  // (Read only for accepted vertices, each of which was set when lowered.)
   std::vector<std::uint32_t>& origin = scratch.origin;
-  origin.assign(distances.size(), 0);
   for (std::uint32_t k = 0; k < sources.size(); ++k) origin[sources[k]] = k;
   // Vertices lowered while processing one accepted vertex, queued once each
   // afterwards (an edge update is often bettered by a triangle update).

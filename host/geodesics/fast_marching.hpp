@@ -14,8 +14,9 @@ namespace meshparticles {
 class FastMarching : public GeodesicSolver {
  public:
   explicit FastMarching(const SurfaceMesh& mesh);
-  using GeodesicSolver::solve;
-  void solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+
+ protected:
+  void march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
              double max_distance) const override;
 
  private:

@@ -1,5 +1,8 @@
 #include "geodesics/geodesic_solver.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include "common/user_error.hpp"
 #include "geodesics/dijkstra.hpp"
 #include "geodesics/fast_marching.hpp"
@@ -24,6 +27,48 @@ std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh) {
     }
   }
   return lengths;
+}
+
+void SolverScratch::fit(std::size_t vertex_count) {
+  if (accepted.size() == vertex_count) return;
+  accepted.assign(vertex_count, 0);
+  origin.assign(vertex_count, 0);
+  distances.assign(vertex_count, std::numeric_limits<double>::infinity());
+  touched.clear();
+}
+
+void GeodesicSolver::solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+                           double max_distance) const {
+  scratch.fit(vertex_count_);
+  std::fill(distances.begin(), distances.end(), std::numeric_limits<double>::infinity());
+  march(sources, distances, scratch, max_distance);
+  // A stopped march leaves upper bounds on the vertices just beyond the
+  // accepted ones: beyond the radius means +inf.
+  for (const VertexId v : scratch.touched) {
+    if (!scratch.accepted[v]) distances[v] = std::numeric_limits<double>::infinity();
+    scratch.accepted[v] = 0;
+  }
+  scratch.touched.clear();
+}
+
+Ball GeodesicSolver::solve_ball(VertexId source, double radius, SolverScratch& scratch) const {
+  scratch.fit(vertex_count_);
+  march(std::span<const VertexId>(&source, 1), scratch.distances, scratch, radius);
+  std::vector<VertexId> inside;
+  for (const VertexId v : scratch.touched) {
+    if (scratch.accepted[v]) inside.push_back(v);
+  }
+  std::sort(inside.begin(), inside.end());
+  Ball ball;
+  ball.vertices = inside;
+  ball.distances.reserve(inside.size());
+  for (const VertexId v : inside) ball.distances.push_back(float(scratch.distances[v]));
+  for (const VertexId v : scratch.touched) {  // clean again for the next solve
+    scratch.distances[v] = std::numeric_limits<double>::infinity();
+    scratch.accepted[v] = 0;
+  }
+  scratch.touched.clear();
+  return ball;
 }
 
 std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {

@@ -21,12 +21,26 @@ enum class GeodesicMethod { fast_marching, dijkstra };
 std::string method_name(GeodesicMethod method);
 GeodesicMethod parse_method(const std::string& name);
 
-// Per-thread working memory of a solve: the priority queue, accepted flags,
-// and each vertex's nearest source (fast marching).
+// Per-thread working memory of solves. Between solves it is clean: every
+// accepted flag 0 and every scratch distance +inf, so a solve that reaches
+// few vertices costs in proportion to them, not to the mesh.
 struct SolverScratch {
-  std::vector<std::uint64_t> heap;  // see shortest_first_queue.hpp
-  std::vector<unsigned char> accepted;
-  std::vector<std::uint32_t> origin;
+  std::vector<std::uint64_t> heap;      // see shortest_first_queue.hpp
+  std::vector<unsigned char> accepted;  // per vertex
+  std::vector<std::uint32_t> origin;    // per vertex: the source its distance comes from (fast marching)
+  std::vector<VertexId> touched;        // the vertices the solve in progress gave a distance
+  std::vector<double> distances;        // per vertex: the buffer of ball solves
+
+  // Sizes the per-vertex arrays (clean) for a mesh of `vertex_count`.
+  void fit(std::size_t vertex_count);
+};
+
+// The vertices within a radius of one source, in increasing id, with their
+// distances from it: what a ball solve returns.
+struct Ball {
+  std::vector<VertexId> vertices;
+  std::vector<float> distances;
+  std::size_t bytes() const { return vertices.size() * (sizeof(VertexId) + sizeof(float)); }
 };
 
 inline constexpr double kNoDistanceLimit = std::numeric_limits<double>::infinity();
@@ -34,18 +48,34 @@ inline constexpr double kNoDistanceLimit = std::numeric_limits<double>::infinity
 class GeodesicSolver {
  public:
   virtual ~GeodesicSolver() = default;
+
   // Fills `distances` (one per vertex) with the distance to the nearest of
   // `sources` (each at 0). The solve stops once every vertex within
   // `max_distance` is final: those values are exactly what an unlimited
   // solve gives, and every vertex beyond it, or in a component without a
   // source, is +inf.
-  virtual void solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                     double max_distance = kNoDistanceLimit) const = 0;
-
+  void solve(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+             double max_distance = kNoDistanceLimit) const;
   void solve(VertexId source, std::span<double> distances, SolverScratch& scratch,
              double max_distance = kNoDistanceLimit) const {
     solve(std::span<const VertexId>(&source, 1), distances, scratch, max_distance);
   }
+
+  // The vertices within `radius` of `source` and their distances, exactly
+  // the values a full solve gives them, at a cost in proportion to the ball.
+  Ball solve_ball(VertexId source, double radius, SolverScratch& scratch) const;
+
+ protected:
+  explicit GeodesicSolver(std::size_t vertex_count) : vertex_count_(vertex_count) {}
+
+  // Marches from `sources` until every vertex within `max_distance` is
+  // accepted. Expects `distances` +inf and the scratch clean wherever the
+  // march goes; appends every vertex it gives a distance to scratch.touched.
+  virtual void march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+                     double max_distance) const = 0;
+
+ private:
+  std::size_t vertex_count_;
 };
 
 // |v - w| for every one-ring entry, in the order of mesh.ring_neighbors():

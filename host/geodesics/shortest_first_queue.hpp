@@ -18,15 +18,20 @@ namespace meshparticles {
 
 class ShortestFirstQueue {
  public:
-  // Sets every distance to +inf but the sources' (0) and queues the sources.
-  // Vertices farther than `max_distance` are never accepted.
+  // Queues the sources at distance 0. Expects every distance +inf and no
+  // vertex accepted where the march goes (GeodesicSolver::march); records
+  // each vertex given a distance in scratch.touched. Vertices farther than
+  // `max_distance` are never accepted.
   ShortestFirstQueue(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
                      double max_distance)
-      : distances_(distances), heap_(scratch.heap), accepted_(scratch.accepted), max_distance_(max_distance) {
-    std::fill(distances_.begin(), distances_.end(), std::numeric_limits<double>::infinity());
-    accepted_.assign(distances_.size(), 0);
+      : distances_(distances),
+        heap_(scratch.heap),
+        accepted_(scratch.accepted),
+        touched_(scratch.touched),
+        max_distance_(max_distance) {
     heap_.clear();
     for (const VertexId source : sources) {
+      if (distances_[source] != 0.0) touched_.push_back(source);
       distances_[source] = 0.0;
       requeue(source);
     }
@@ -41,10 +46,7 @@ class ShortestFirstQueue {
       heap_.pop_back();
       // A vertex's latest (smallest) entry comes out first; later ones are stale.
       if (accepted_[vertex]) continue;
-      if (distances_[vertex] > max_distance_) {
-        forget_tentative(vertex);
-        return std::nullopt;
-      }
+      if (distances_[vertex] > max_distance_) return std::nullopt;
       accepted_[vertex] = 1;
       return vertex;
     }
@@ -62,6 +64,7 @@ class ShortestFirstQueue {
   // before queueing it once: lower() returns whether v's distance dropped.
   bool lower(VertexId v, double candidate) {
     if (accepted_[v] || candidate >= distances_[v]) return false;
+    if (distances_[v] == std::numeric_limits<double>::infinity()) touched_.push_back(v);
     distances_[v] = candidate;
     return true;
   }
@@ -74,21 +77,10 @@ class ShortestFirstQueue {
   }
 
  private:
-  // A stopped solve leaves tentative upper bounds on the vertices around the
-  // last accepted ones; they are all in the heap (each lowered vertex was
-  // queued), so this clears them without a pass over every vertex.
-  void forget_tentative(VertexId stopped_at) {
-    distances_[stopped_at] = std::numeric_limits<double>::infinity();
-    for (const std::uint64_t entry : heap_) {
-      const auto vertex = VertexId(entry & 0xFFFFFFFFu);
-      if (!accepted_[vertex]) distances_[vertex] = std::numeric_limits<double>::infinity();
-    }
-    heap_.clear();
-  }
-
   std::span<double> distances_;
   std::vector<std::uint64_t>& heap_;
   std::vector<unsigned char>& accepted_;
+  std::vector<VertexId>& touched_;
   double max_distance_;
 };
 
