@@ -131,6 +131,8 @@ TEST(OffReader, EveryKeywordGeomviewAllowsAndNone) {
   }
   EXPECT_NEAR(read_text("OFF 3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", MeshFormat::off).area(), 0.5, 1e-12)
       << "counts on the keyword line, no edge count";
+  EXPECT_NEAR(read_text("OFF\r3 1 0\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2", MeshFormat::off).area(), 0.5, 1e-12)
+      << "old Mac line ends, no final line break";
 }
 
 TEST(OffReader, ContentAfterTheDeclaredFacesIsIgnoredWithAWarning) {

@@ -1,5 +1,7 @@
 #include "mesh/mesh_reader.hpp"
 
+#include <cctype>
+
 #include "common/user_error.hpp"
 #include "mesh/format_readers.hpp"
 #include "mesh/mesh_file.hpp"
