@@ -122,7 +122,7 @@ expect_exit(run_nonmanifold_vertex 0 "particles: [0-9]+ done" run ${DATA}/nonman
 # The fuzz findings of issue 13, each now one line and exit 2.
 expect_exit(ply_header_cut 2 "header_cut_inside_element_line\\.ply: line 7: expected 'element NAME COUNT'" info ${DATA}/header_cut_inside_element_line.ply)
 expect_exit(ply_count_2_31 2 "vertex_count_2147483647\\.ply: header declares 2147483647 'vertex' elements, more than the 6 bytes after it can hold" info ${DATA}/vertex_count_2147483647.ply)
-expect_exit(ply_count_2_64 2 "vertex_count_2_64_minus_1\\.ply: line 3: expected 'element NAME COUNT'" info ${DATA}/vertex_count_2_64_minus_1.ply)
+expect_exit(ply_count_2_64 2 "vertex_count_2_64_minus_1\\.ply: line 3: the count of element 'vertex', '18446744073709551615', is not a count" info ${DATA}/vertex_count_2_64_minus_1.ply)
 expect_exit(off_more_vertices 2 "more_vertices_than_declared\\.off: line 6: face 0 declares 0 vertices, fewer than a face needs" info ${DATA}/more_vertices_than_declared.off)
 expect_exit(off_negative_face_size 2 "negative_face_size\\.off: line 6: face 0: expected its number of vertices, found '-3'" info ${DATA}/negative_face_size.off)
 expect_exit(off_repeated_keyword 2 "repeated_keyword\\.off: line 2: expected 'Nvertices Nfaces \\[Nedges\\]', found 'OFF'" info ${DATA}/repeated_keyword.off)

@@ -5,11 +5,11 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "common/user_error.hpp"
 #include "mesh/mesh_file.hpp"
@@ -20,8 +20,8 @@ namespace {
 std::string data(const std::string& name) { return std::string(TEST_DATA_DIR) + "/" + name; }
 
 SurfaceMesh read_text(const std::string& text, MeshFormat format, std::vector<std::string>& warnings) {
-  return build_checked_mesh(read_polygon_soup(std::span<const char>(text.data(), text.size()), format, "text"),
-                            "text", warnings);
+  return build_checked_mesh(read_polygon_soup(std::span<const char>(text.data(), text.size()), format, "text"), "text",
+                            warnings);
 }
 
 SurfaceMesh read_text(const std::string& text, MeshFormat format) {
@@ -44,10 +44,10 @@ std::string refusal(const std::string& text, MeshFormat format) {
   }
 }
 
-#define EXPECT_REFUSED(text, format, expected)                                           \
-  do {                                                                                   \
-    const std::string message = refusal(text, format);                                   \
-    EXPECT_NE(message.find(expected), std::string::npos) << "message: " << message;     \
+#define EXPECT_REFUSED(text, format, expected)                                      \
+  do {                                                                              \
+    const std::string message = refusal(text, format);                              \
+    EXPECT_NE(message.find(expected), std::string::npos) << "message: " << message; \
   } while (0)
 
 const std::string kTetrahedronPoints = "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n";
@@ -66,9 +66,9 @@ void expect_tetrahedron(const SurfaceMesh& mesh, const std::string& name) {
 }
 
 TEST(MeshReader, ReadsEveryFormatAndEncodingToTheSameTetrahedron) {
-  for (const char* name : {"tetrahedron.obj", "tetrahedron.ply", "tetrahedron_binary_le.ply",
-                           "tetrahedron_binary_be.ply", "tetrahedron_extra_properties.ply", "tetrahedron.stl",
-                           "tetrahedron_binary.stl", "tetrahedron_crlf.off"}) {
+  for (const char* name :
+       {"tetrahedron.obj", "tetrahedron.ply", "tetrahedron_binary_le.ply", "tetrahedron_binary_be.ply",
+        "tetrahedron_extra_properties.ply", "tetrahedron.stl", "tetrahedron_binary.stl", "tetrahedron_crlf.off"}) {
     std::vector<std::string> warnings;
     expect_tetrahedron(read_mesh(data(name), warnings), name);
     EXPECT_TRUE(warnings.empty()) << name << ": " << warnings.front();
@@ -150,21 +150,31 @@ TEST(OffReader, RefusesWhatItCannotReadWithTheLine) {
   EXPECT_REFUSED("hello world\n", off, "text: line 1: expected an OFF keyword");
   EXPECT_REFUSED("OFF BINARY\n", off, "binary OFF is not supported");
   EXPECT_REFUSED("nOFF 4\n3 1 0\n", off, "line 1: nOFF dimension '4'");
-  EXPECT_REFUSED("OFF\nOFF\n3 1 0\n" + kTetrahedronPoints, off, "line 2: expected 'Nvertices Nfaces [Nedges]', found 'OFF'");
-  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n", off, "line 6: face 0 declares 0 vertices, fewer than a face needs");
+  EXPECT_REFUSED("OFF\nOFF\n3 1 0\n" + kTetrahedronPoints, off,
+                 "line 2: expected 'Nvertices Nfaces [Nedges]', found 'OFF'");
+  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n", off,
+                 "line 6: face 0 declares 0 vertices, fewer than a face needs");
   EXPECT_REFUSED("OFF\n3 x 0\n", off, "line 2: the face count 'x' is not a count");
   EXPECT_REFUSED("OFF\n-3 1 0\n", off, "line 2: the vertex count '-3' is not a count");
-  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n", off, "line 4: vertex 1: expected a coordinate, found 'zero'");
-  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", off, "line 4: vertex 1: expected a coordinate, found the end of the line");
+  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n", off,
+                 "line 4: vertex 1: expected a coordinate, found 'zero'");
+  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", off,
+                 "line 4: vertex 1: expected a coordinate, found the end of the line");
   // The fuzz cases of issue 13: a negative face size, more vertices than declared.
-  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 2 3\n", off, "line 6: face 0: expected its number of vertices, found '-3'");
-  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n0.5 1 0\n3 0 1 2\n", off, "line 6: face 0: expected its number of vertices, found '0.5'");
-  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n", off, "line 6: face 0 lists 3 of the 4 vertices it declares");
-  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 two\n", off, "line 6: face 0: expected a vertex index, found 'two'");
+  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 2 3\n", off,
+                 "line 6: face 0: expected its number of vertices, found '-3'");
+  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n0.5 1 0\n3 0 1 2\n", off,
+                 "line 6: face 0: expected its number of vertices, found '0.5'");
+  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n", off,
+                 "line 6: face 0 lists 3 of the 4 vertices it declares");
+  EXPECT_REFUSED("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 two\n", off,
+                 "line 6: face 0: expected a vertex index, found 'two'");
   // Counts the rest of the file cannot hold are refused before anything is allocated.
-  EXPECT_REFUSED("OFF\n2147483647 1 0\n0 0 0\n", off, "header declares 2147483647 vertices and 1 face, more than the 6 bytes after it can hold");
+  EXPECT_REFUSED("OFF\n2147483647 1 0\n0 0 0\n", off,
+                 "header declares 2147483647 vertices and 1 face, more than the 6 bytes after it can hold");
   EXPECT_REFUSED("OFF\n3 18446744073709551615 0\n", off, "the face count '18446744073709551615' is not a count");
-  EXPECT_REFUSED("OFF\n4 4 6\n" + kTetrahedronPoints + "3 0 1 2\n3 0 3 1\n3 0 2 3\n", off, "file ends after 3 of the 4 faces");
+  EXPECT_REFUSED("OFF\n4 4 6\n" + kTetrahedronPoints + "3 0 1 2\n3 0 3 1\n3 0 2 3\n", off,
+                 "file ends after 3 of the 4 faces");
 }
 
 // --- PLY ---
@@ -192,7 +202,8 @@ TEST(PlyReader, AsciiVariants) {
 
 TEST(PlyReader, RefusesWhatItCannotRead) {
   const auto ply = MeshFormat::ply;
-  const std::string start = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string start =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
   const std::string faces = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
   const std::string points = "0 0 0\n1 0 0\n0 1 0\n";
   EXPECT_EQ(refusal(start + faces + points + "3 0 1 2\n", ply), "accepted");
@@ -203,24 +214,31 @@ TEST(PlyReader, RefusesWhatItCannotRead) {
   EXPECT_REFUSED("ply\nelement vertex 0\nend_header\n", ply, "the header has no 'format' line");
   EXPECT_REFUSED("ply\nformat binary_middle_endian 1.0\n", ply, "line 2: unknown format 'binary_middle_endian'");
   EXPECT_REFUSED("ply\nformat ascii 1.0\nproperty float x\n", ply, "line 3: a property before any element");
-  EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\n", ply, "line 4: expected 'property TYPE NAME'");
+  EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\n", ply,
+                 "line 4: expected 'property TYPE NAME'");
   EXPECT_REFUSED("ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\n", ply,
                  "line 4: a list's count type must be an integer type, found 'float'");
-  EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 1\nelement vertex 1\n", ply, "line 4: a second 'vertex' element");
+  EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 1\nelement vertex 1\n", ply,
+                 "line 4: a second 'vertex' element");
   EXPECT_REFUSED("ply\nformat ascii 1.0\nvertex 1\n", ply, "line 3: unknown header line 'vertex 1'");
   // Issue 13: counts no file this size can hold, refused before allocating.
-  EXPECT_REFUSED("ply\nformat binary_little_endian 1.0\nelement vertex 2147483647\nproperty float x\nproperty float y\n"
-                 "property float z\nend_header\n" + std::string(12, '\0'),
-                 ply, "header declares 2147483647 'vertex' elements, more than the 12 bytes after it can hold");
-  EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 18446744073709551615\n", ply, "line 3: expected 'element NAME COUNT'");
+  EXPECT_REFUSED(
+      "ply\nformat binary_little_endian 1.0\nelement vertex 2147483647\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n" +
+          std::string(12, '\0'),
+      ply, "header declares 2147483647 'vertex' elements, more than the 12 bytes after it can hold");
+  EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 18446744073709551615\n", ply,
+                 "line 3: the count of element 'vertex', '18446744073709551615', is not a count");
   EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 1\nproperty float y\nproperty float z\nend_header\n0 0\n", ply,
                  "the vertex element has no scalar property 'x'");
   EXPECT_REFUSED("ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int indices\nend_header\n3 0 1 2\n", ply,
                  "the face element has no list property 'vertex_indices'");
-  EXPECT_REFUSED("ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n3 0 1 2\n",
-                 ply, "the face element's vertex indices are not of an integer type");
+  EXPECT_REFUSED(
+      "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n3 0 1 2\n", ply,
+      "the face element's vertex indices are not of an integer type");
   EXPECT_REFUSED(start + faces + points + "3 0 1\n", ply, "file ends inside face 0 of 1");
-  EXPECT_REFUSED(start + faces + points + "3 0 1 2.5\n", ply, "line 13: face 0 has a vertex index that is not a whole number");
+  EXPECT_REFUSED(start + faces + points + "3 0 1 2.5\n", ply,
+                 "line 13: face 0 has a vertex index that is not a whole number");
   EXPECT_REFUSED(start + faces + points + "-3 0 1 2\n", ply, "line 13: face 0 has a list length that is not a count");
   EXPECT_REFUSED(start + faces + "0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n", ply, "line 11: expected a number, found 'zero'");
 }
@@ -248,8 +266,10 @@ TEST(ObjReader, RefusesWhatItCannotReadWithTheLine) {
   const auto obj = MeshFormat::obj;
   const std::string points = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   EXPECT_EQ(refusal(points + "f -3 -2 -1\n", obj), "accepted");
-  EXPECT_REFUSED(points + "f -4 -2 -1\n", obj, "line 4: relative index -4 reaches before the first vertex (3 read so far)");
-  EXPECT_REFUSED(points + "f -9223372036854775808 1 2\n", obj, "line 4: relative index -9223372036854775808 reaches before");
+  EXPECT_REFUSED(points + "f -4 -2 -1\n", obj,
+                 "line 4: relative index -4 reaches before the first vertex (3 read so far)");
+  EXPECT_REFUSED(points + "f -9223372036854775808 1 2\n", obj,
+                 "line 4: relative index -9223372036854775808 reaches before");
   EXPECT_REFUSED(points + "f 0 1 2\n", obj, "line 4: expected a vertex index (from 1, or negative), found '0'");
   EXPECT_REFUSED(points + "f 1/2 a/2 3\n", obj, "line 4: expected a vertex index (from 1, or negative), found 'a/2'");
   EXPECT_REFUSED("v 0 0\n", obj, "line 1: expected a coordinate, found the end of the line");
@@ -276,8 +296,8 @@ TEST(StlReader, RefusesWhatItCannotRead) {
   const auto stl = MeshFormat::stl;
   EXPECT_REFUSED("facet normal 0 0 1\n", stl, "text: not an STL file (too short for binary");
   EXPECT_REFUSED("solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 0\n", stl, "file ends inside a facet");
-  EXPECT_REFUSED("solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n endloop\n endfacet\n",
-                 stl, "line 6: a facet with 2 vertices");
+  EXPECT_REFUSED("solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n endloop\n endfacet\n", stl,
+                 "line 6: a facet with 2 vertices");
   EXPECT_REFUSED("solid x\n facet normal 0 0 one\n", stl, "line 2: expected a number, found 'one'");
   EXPECT_REFUSED("solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 0\n endfacet\n", stl,
                  "line 5: expected 'vertex' or 'endloop', found 'endfacet'");

@@ -41,7 +41,8 @@ PolygonSoup touching_cones() {
     for (int ring = 1; ring <= 2; ++ring) {
       for (int k = 0; k < kSectors; ++k) {
         const double angle = 2 * std::numbers::pi * k / kSectors;
-        soup.vertices.push_back({ring * kRadius * std::cos(angle), ring * kRadius * std::sin(angle), up * ring * kHeight});
+        soup.vertices.push_back(
+            {ring * kRadius * std::cos(angle), ring * kRadius * std::sin(angle), up * ring * kHeight});
       }
     }
     for (int k = 0; k < kSectors; ++k) {

@@ -55,7 +55,8 @@ std::vector<Triangle> triangulate_checked_faces(const PolygonSoup& soup, const s
       triangles.push_back({VertexId(face[0]), VertexId(face[k]), VertexId(face[k + 1])});
     }
   }
-  if (polygons > 0) warnings.push_back(label + ": " + plural(polygons, "polygon") + " with more than 3 vertices triangulated");
+  if (polygons > 0)
+    warnings.push_back(label + ": " + plural(polygons, "polygon") + " with more than 3 vertices triangulated");
   return triangles;
 }
 
@@ -112,7 +113,8 @@ void check_edges(const std::vector<Triangle>& triangles, const std::string& labe
   for (std::size_t begin = 0, end = 0; begin < undirected.size(); begin = end) {
     while (end < undirected.size() && undirected[end] == undirected[begin]) ++end;
     if (end - begin <= 2) continue;
-    const std::string edge = std::to_string(undirected[begin] >> 32) + "-" + std::to_string(undirected[begin] & 0xffffffffu);
+    const std::string edge =
+        std::to_string(undirected[begin] >> 32) + "-" + std::to_string(undirected[begin] & 0xffffffffu);
     if (strict) throw UserError(label + ": non-manifold edge " + edge + " is shared by more than two faces");
     if (++nonmanifold == 1) example = edge + ", in " + std::to_string(end - begin) + " triangles";
   }
@@ -184,18 +186,19 @@ void check_vertex_fans(const std::vector<Triangle>& triangles, std::size_t verte
       throw UserError(label + ": non-manifold vertex " + std::to_string(v) + " (its triangles form " +
                       std::to_string(fans) + " separate fans)");
     }
-    if (++pinched == 1) example = "vertex " + std::to_string(v) + ", where " + std::to_string(fans) + " fans of triangles meet";
+    if (++pinched == 1)
+      example = "vertex " + std::to_string(v) + ", where " + std::to_string(fans) + " fans of triangles meet";
   }
   if (pinched > 0) {
-    warnings.push_back(label + ": " + plural(pinched, "non-manifold vertex", "non-manifold vertices") +
-                       " (e.g. " + example + ") kept: a shortest path may pass through them");
+    warnings.push_back(label + ": " + plural(pinched, "non-manifold vertex", "non-manifold vertices") + " (e.g. " +
+                       example + ") kept: a shortest path may pass through them");
   }
 }
 
 }  // namespace
 
-SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label,
-                               std::vector<std::string>& warnings, const MeshReadOptions& options) {
+SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label, std::vector<std::string>& warnings,
+                               const MeshReadOptions& options) {
   warnings.insert(warnings.end(), soup.warnings.begin(), soup.warnings.end());
   check_not_empty(soup, label);
   check_coordinates(soup, label);

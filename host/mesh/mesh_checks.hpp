@@ -21,7 +21,7 @@ struct MeshReadOptions {
 };
 
 // Throws UserError("LABEL: problem") for the first fatal problem.
-SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label,
-                               std::vector<std::string>& warnings, const MeshReadOptions& options = {});
+SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label, std::vector<std::string>& warnings,
+                               const MeshReadOptions& options = {});
 
 }  // namespace meshparticles

@@ -20,10 +20,14 @@ MeshFormat mesh_format_of(const std::filesystem::path& file) {
 
 PolygonSoup read_polygon_soup(std::span<const char> bytes, MeshFormat format, const std::string& label) {
   switch (format) {
-    case MeshFormat::off: return read_off(bytes, label);
-    case MeshFormat::obj: return read_obj(bytes, label);
-    case MeshFormat::ply: return read_ply(bytes, label);
-    case MeshFormat::stl: return read_stl(bytes, label);
+    case MeshFormat::off:
+      return read_off(bytes, label);
+    case MeshFormat::obj:
+      return read_obj(bytes, label);
+    case MeshFormat::ply:
+      return read_ply(bytes, label);
+    case MeshFormat::stl:
+      return read_stl(bytes, label);
   }
   throw UserError(label + ": unknown mesh format");
 }

@@ -21,8 +21,8 @@ bool is_known_statement(std::string_view keyword) {
       // texture and normal data, points and lines
       "vt", "vn", "vp", "p", "l",
       // grouping and display
-      "o", "g", "s", "mg", "usemtl", "mtllib", "usemap", "maplib", "lod", "bevel", "c_interp", "d_interp",
-      "shadow_obj", "trace_obj", "ctech", "stech",
+      "o", "g", "s", "mg", "usemtl", "mtllib", "usemap", "maplib", "lod", "bevel", "c_interp", "d_interp", "shadow_obj",
+      "trace_obj", "ctech", "stech",
       // free-form curves and surfaces
       "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp", "end", "con",
       // other files and commands

@@ -22,7 +22,7 @@ namespace meshparticles {
 namespace {
 
 struct OffKeyword {
-  bool homogeneous = false;    // 4: a fourth coordinate w divides the others
+  bool homogeneous = false;         // 4: a fourth coordinate w divides the others
   bool declares_dimension = false;  // n: Ndim follows the keyword
 };
 
@@ -89,8 +89,9 @@ class OffReader {
     if (parse_integer(first)) return checked_counts(*line);  // the keyword is optional
     const auto keyword = parse_keyword(first);
     if (!keyword) {
-      throw_at_line(label_, cursor_.line_number(),
-                    "expected an OFF keyword ([ST][C][N][4][n]OFF) or the vertex and face counts, found " + quoted(first));
+      throw_at_line(
+          label_, cursor_.line_number(),
+          "expected an OFF keyword ([ST][C][N][4][n]OFF) or the vertex and face counts, found " + quoted(first));
     }
     homogeneous_ = keyword->homogeneous;
     std::vector<std::string_view> rest = remaining_tokens(tokens);
@@ -187,21 +188,24 @@ class OffReader {
     const std::string_view size_token = *tokens.next();
     const auto size = parse_integer(size_token);
     if (!size || *size < 0) {
-      throw_at_line(label_, cursor_.line_number(), where + ": expected its number of vertices, found " + quoted(size_token));
+      throw_at_line(label_, cursor_.line_number(),
+                    where + ": expected its number of vertices, found " + quoted(size_token));
     }
     if (*size < 3) {  // often a vertex line beyond the count the header gives
-      throw_at_line(label_, cursor_.line_number(),
-                    where + " declares " + plural(std::size_t(*size), "vertex", "vertices") + ", fewer than a face needs");
+      throw_at_line(
+          label_, cursor_.line_number(),
+          where + " declares " + plural(std::size_t(*size), "vertex", "vertices") + ", fewer than a face needs");
     }
     for (long long k = 0; k < *size; ++k) {  // ends with the line: each index is a token
       const auto token = tokens.next();
       if (!token) {
         throw_at_line(label_, cursor_.line_number(),
-                      where + " lists " + std::to_string(k) + " of the " + plural(std::size_t(*size), "vertex", "vertices") +
-                          " it declares");
+                      where + " lists " + std::to_string(k) + " of the " +
+                          plural(std::size_t(*size), "vertex", "vertices") + " it declares");
       }
       const auto index = parse_integer(*token);
-      if (!index) throw_at_line(label_, cursor_.line_number(), where + ": expected a vertex index, found " + quoted(*token));
+      if (!index)
+        throw_at_line(label_, cursor_.line_number(), where + ": expected a vertex index, found " + quoted(*token));
       soup_.face_vertices.push_back(*index);
     }
     soup_.close_face();

@@ -32,11 +32,11 @@ enum class PlyEncoding { ascii, binary_little_endian, binary_big_endian };
 
 std::optional<PlyType> parse_type(std::string_view name) {
   static constexpr std::pair<std::string_view, PlyType> kNames[] = {
-      {"char", PlyType::int8},     {"int8", PlyType::int8},       {"uchar", PlyType::uint8},
-      {"uint8", PlyType::uint8},   {"short", PlyType::int16},     {"int16", PlyType::int16},
-      {"ushort", PlyType::uint16}, {"uint16", PlyType::uint16},   {"int", PlyType::int32},
-      {"int32", PlyType::int32},   {"uint", PlyType::uint32},     {"uint32", PlyType::uint32},
-      {"float", PlyType::float32}, {"float32", PlyType::float32}, {"double", PlyType::float64},
+      {"char", PlyType::int8},      {"int8", PlyType::int8},       {"uchar", PlyType::uint8},
+      {"uint8", PlyType::uint8},    {"short", PlyType::int16},     {"int16", PlyType::int16},
+      {"ushort", PlyType::uint16},  {"uint16", PlyType::uint16},   {"int", PlyType::int32},
+      {"int32", PlyType::int32},    {"uint", PlyType::uint32},     {"uint32", PlyType::uint32},
+      {"float", PlyType::float32},  {"float32", PlyType::float32}, {"double", PlyType::float64},
       {"float64", PlyType::float64}};
   for (const auto& [known, type] : kNames) {
     if (name == known) return type;
@@ -46,10 +46,18 @@ std::optional<PlyType> parse_type(std::string_view name) {
 
 std::size_t size_of(PlyType type) {
   switch (type) {
-    case PlyType::int8: case PlyType::uint8: return 1;
-    case PlyType::int16: case PlyType::uint16: return 2;
-    case PlyType::int32: case PlyType::uint32: case PlyType::float32: return 4;
-    case PlyType::float64: return 8;
+    case PlyType::int8:
+    case PlyType::uint8:
+      return 1;
+    case PlyType::int16:
+    case PlyType::uint16:
+      return 2;
+    case PlyType::int32:
+    case PlyType::uint32:
+    case PlyType::float32:
+      return 4;
+    case PlyType::float64:
+      return 8;
   }
   return 0;
 }
@@ -66,14 +74,22 @@ T load(const char* bytes, bool swap) {
 
 double decode(PlyType type, const char* bytes, bool swap) {
   switch (type) {
-    case PlyType::int8: return load<std::int8_t>(bytes, swap);
-    case PlyType::uint8: return load<std::uint8_t>(bytes, swap);
-    case PlyType::int16: return load<std::int16_t>(bytes, swap);
-    case PlyType::uint16: return load<std::uint16_t>(bytes, swap);
-    case PlyType::int32: return load<std::int32_t>(bytes, swap);
-    case PlyType::uint32: return load<std::uint32_t>(bytes, swap);
-    case PlyType::float32: return load<float>(bytes, swap);
-    case PlyType::float64: return load<double>(bytes, swap);
+    case PlyType::int8:
+      return load<std::int8_t>(bytes, swap);
+    case PlyType::uint8:
+      return load<std::uint8_t>(bytes, swap);
+    case PlyType::int16:
+      return load<std::int16_t>(bytes, swap);
+    case PlyType::uint16:
+      return load<std::uint16_t>(bytes, swap);
+    case PlyType::int32:
+      return load<std::int32_t>(bytes, swap);
+    case PlyType::uint32:
+      return load<std::uint32_t>(bytes, swap);
+    case PlyType::float32:
+      return load<float>(bytes, swap);
+    case PlyType::float64:
+      return load<double>(bytes, swap);
   }
   return 0;
 }
@@ -165,7 +181,9 @@ class PlyReader {
     const auto name = tokens.next();
     const auto count_token = tokens.next();
     const auto count = count_token ? parse_integer(*count_token) : std::nullopt;
-    if (!name || !count || *count < 0) header_error("expected 'element NAME COUNT'");
+    if (!name || !count_token) header_error("expected 'element NAME COUNT'");
+    if (!count || *count < 0)
+      header_error("the count of element '" + std::string(*name) + "', " + quoted(*count_token) + ", is not a count");
     if ((*name == "vertex" || *name == "face" || *name == "tristrips") &&
         std::any_of(elements_.begin(), elements_.end(), [&](const PlyElement& e) { return e.name == *name; })) {
       header_error("a second '" + std::string(*name) + "' element");

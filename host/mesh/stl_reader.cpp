@@ -21,7 +21,7 @@ namespace meshparticles {
 
 namespace {
 
-constexpr std::size_t kBinaryHeaderBytes = 84;  // 80 bytes of text, then the triangle count
+constexpr std::size_t kBinaryHeaderBytes = 84;    // 80 bytes of text, then the triangle count
 constexpr std::size_t kBinaryTriangleBytes = 50;  // normal, three corners, attribute word
 
 class VertexMerger {
@@ -69,8 +69,8 @@ PolygonSoup read_binary_stl(std::span<const char> bytes, std::size_t triangle_co
     const char* corners = bytes.data() + kBinaryHeaderBytes + t * kBinaryTriangleBytes + 12;  // after the normal
     for (int corner = 0; corner < 3; ++corner) {
       const char* p = corners + 12 * corner;
-      soup.face_vertices.push_back(merger.index_of(
-          {little_endian_float(p), little_endian_float(p + 4), little_endian_float(p + 8)}));
+      soup.face_vertices.push_back(
+          merger.index_of({little_endian_float(p), little_endian_float(p + 4), little_endian_float(p + 8)}));
     }
     soup.close_face();
   }
@@ -126,7 +126,8 @@ class AsciiStlReader {
       soup_.face_vertices.push_back(merger_.index_of({x, y, z}));
       ++corners;
     }
-    if (corners < 3) throw_at_line(label_, cursor_.line_number(), "a facet with " + plural(corners, "vertex", "vertices"));
+    if (corners < 3)
+      throw_at_line(label_, cursor_.line_number(), "a facet with " + plural(corners, "vertex", "vertices"));
     soup_.close_face();
     expect("endfacet");
   }
