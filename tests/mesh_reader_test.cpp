@@ -133,6 +133,8 @@ TEST(OffReader, EveryKeywordGeomviewAllowsAndNone) {
       << "counts on the keyword line, no edge count";
   EXPECT_NEAR(read_text("OFF\r3 1 0\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2", MeshFormat::off).area(), 0.5, 1e-12)
       << "old Mac line ends, no final line break";
+  EXPECT_NEAR(read_text("\xEF\xBB\xBFOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", MeshFormat::off).area(), 0.5, 1e-12)
+      << "a UTF-8 byte order mark";
 }
 
 TEST(OffReader, ContentAfterTheDeclaredFacesIsIgnoredWithAWarning) {

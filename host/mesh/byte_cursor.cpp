@@ -8,6 +8,10 @@ namespace meshparticles {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
 
+void ByteCursor::skip_byte_order_mark() {
+  if (position_ == 0 && std::string_view(bytes_.data(), bytes_.size()).starts_with("\xEF\xBB\xBF")) position_ = 3;
+}
+
 std::optional<std::string_view> ByteCursor::next_line() {
   if (at_end()) return std::nullopt;
   const std::size_t start = position_;

@@ -14,6 +14,10 @@ class ByteCursor {
  public:
   explicit ByteCursor(std::span<const char> bytes) : bytes_(bytes) {}
 
+  // Skips a UTF-8 byte order mark at the start: Windows editors write one
+  // before text that is otherwise plain ASCII.
+  void skip_byte_order_mark();
+
   std::size_t remaining() const { return bytes_.size() - position_; }
   bool at_end() const { return position_ == bytes_.size(); }
   // The line (1-based) of what the last next_line or next_token returned.

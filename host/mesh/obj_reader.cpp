@@ -38,6 +38,7 @@ class ObjReader {
   ObjReader(std::span<const char> bytes, const std::string& label) : cursor_(bytes), label_(label) {}
 
   PolygonSoup read() {
+    cursor_.skip_byte_order_mark();
     while (const auto line = next_statement()) {
       LineTokens tokens(*line);
       const auto keyword = tokens.next();

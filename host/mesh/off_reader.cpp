@@ -82,6 +82,7 @@ class OffReader {
  private:
   // Reads the keyword (if any) and Ndim; returns the count tokens.
   std::vector<std::string_view> read_header() {
+    cursor_.skip_byte_order_mark();
     auto line = next_content_line(cursor_);
     if (!line) throw UserError(label_ + ": empty file (no OFF header)");
     LineTokens tokens(*line);

@@ -130,6 +130,7 @@ class PlyReader {
 
  private:
   void read_header() {
+    cursor_.skip_byte_order_mark();
     const auto magic = cursor_.next_line();
     if (!magic || trimmed(*magic) != "ply") throw UserError(label_ + ": not a PLY file (its first line is not 'ply')");
     bool has_format = false;
