@@ -5,8 +5,9 @@
 //
 // A finding is a crash, a sanitizer report, a hang or an allocation over
 // libFuzzer's limits, and, checked here: any exception but UserError, a
-// UserError whose message is not one line starting with the label, and
-// anything the code writes to std::cout, std::cerr or std::clog.
+// message or warning that is not one short line of printable text starting
+// with the label, and anything the code writes to std::cout, std::cerr or
+// std::clog.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -53,22 +54,26 @@ class CapturedStreams {
   std::streambuf* log_;
 };
 
+// A message or warning: one short line of printable text that names the input.
+void check_line(const std::string& kind, const std::string& text) {
+  if (text.rfind(kLabel + ": ", 0) != 0) finding("a " + kind + " that does not start with the label: " + text);
+  for (const char c : text) {
+    if (c < 0x20 || c > 0x7e) finding("a " + kind + " with a line break or an unprintable byte: " + text);
+  }
+  if (text.size() > 400) finding("a " + kind + " of " + std::to_string(text.size()) + " characters: " + text);
+}
+
 void read_check_and_solve(std::span<const char> bytes) {
   try {
     std::vector<std::string> warnings;
     const PolygonSoup soup = read_polygon_soup(bytes, MeshFormat::FUZZ_FORMAT, kLabel);
     const SurfaceMesh mesh = build_checked_mesh(soup, kLabel, warnings);
-    for (const std::string& warning : warnings) {
-      if (warning.find('\n') != std::string::npos) finding("a warning of more than one line: " + warning);
-    }
+    for (const std::string& warning : warnings) check_line("warning", warning);
     std::vector<double> distances(mesh.vertex_count());
     SolverScratch scratch;
     FastMarching(mesh).solve(0, distances, scratch);
   } catch (const UserError& error) {
-    const std::string message = error.what();
-    if (message.rfind(kLabel + ": ", 0) != 0) finding("a message that does not start with the label: " + message);
-    if (message.find_first_of("\n\r") != std::string::npos) finding("a message of more than one line: " + message);
-    if (message.size() > 400) finding("a message of " + std::to_string(message.size()) + " characters");
+    check_line("message", error.what());
   }
 }
 

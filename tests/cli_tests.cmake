@@ -138,3 +138,5 @@ if(NOT EXISTS ${FIFO})
 endif()
 expect_exit(fifo_refused 2 "fifo\\.off: not a regular file" info ${FIFO})
 set_tests_properties(cli.device_refused cli.fifo_refused PROPERTIES TIMEOUT 10)
+# Found by scripts/fuzz.sh: an element name of unprintable bytes, which went into the message as it was.
+expect_exit(ply_unprintable_name 2 "unprintable_element_name\\.ply: line 4: the count of element 've[?]+[.][.][.]', '[?]', is not a count" info ${DATA}/unprintable_element_name.ply)

@@ -229,6 +229,9 @@ TEST(PlyReader, RefusesWhatItCannotRead) {
       "property float z\nend_header\n" +
           std::string(12, '\0'),
       ply, "header declares 2147483647 'vertex' elements, more than the 12 bytes after it can hold");
+  // Fuzz finding: a name of 400 unprintable bytes went into the message as it was.
+  EXPECT_REFUSED("ply\nformat ascii 1.0\nelement " + std::string(400, '\xff') + " x\n", ply,
+                 "line 3: the count of element '????????????????????????????????????????...', 'x', is not a count");
   EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 18446744073709551615\n", ply,
                  "line 3: the count of element 'vertex', '18446744073709551615', is not a count");
   EXPECT_REFUSED("ply\nformat ascii 1.0\nelement vertex 1\nproperty float y\nproperty float z\nend_header\n0 0\n", ply,
@@ -238,17 +241,17 @@ TEST(PlyReader, RefusesWhatItCannotRead) {
   EXPECT_REFUSED(
       "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n3 0 1 2\n", ply,
       "the face element's vertex indices are not of an integer type");
-  EXPECT_REFUSED(start + faces + points + "3 0 1\n", ply, "file ends inside face 0 of 1");
+  EXPECT_REFUSED(start + faces + points + "3 0 1\n", ply, "file ends inside element 'face' record 0 of 1");
   EXPECT_REFUSED(start + faces + points + "3 0 1 2.5\n", ply,
-                 "line 13: face 0 has a vertex index that is not a whole number");
-  EXPECT_REFUSED(start + faces + points + "-3 0 1 2\n", ply, "line 13: face 0 has a list length that is not a count");
+                 "line 13: element 'face' record 0 has a vertex index that is not a whole number");
+  EXPECT_REFUSED(start + faces + points + "-3 0 1 2\n", ply, "line 13: element 'face' record 0 has a list length that is not a count");
   EXPECT_REFUSED(start + faces + "0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n", ply, "line 11: expected a number, found 'zero'");
 }
 
 TEST(PlyReader, TruncatedBinaryAndDataAfterTheElements) {
   std::ifstream input(data("tetrahedron_binary_le.ply"), std::ios::binary);
   const std::string whole((std::istreambuf_iterator<char>(input)), std::istreambuf_iterator<char>());
-  EXPECT_REFUSED(whole.substr(0, whole.size() - 3), MeshFormat::ply, "text: file ends inside face 3 of 4");
+  EXPECT_REFUSED(whole.substr(0, whole.size() - 3), MeshFormat::ply, "text: file ends inside element 'face' record 3 of 4");
   std::vector<std::string> warnings;
   expect_tetrahedron(read_text(whole + "extra", MeshFormat::ply, warnings), "data after the elements");
   ASSERT_EQ(warnings.size(), 1u);

@@ -184,7 +184,7 @@ class PlyReader {
     const auto count = count_token ? parse_integer(*count_token) : std::nullopt;
     if (!name || !count_token) header_error("expected 'element NAME COUNT'");
     if (!count || *count < 0)
-      header_error("the count of element '" + std::string(*name) + "', " + quoted(*count_token) + ", is not a count");
+      header_error("the count of element " + quoted(*name) + ", " + quoted(*count_token) + ", is not a count");
     if ((*name == "vertex" || *name == "face" || *name == "tristrips") &&
         std::any_of(elements_.begin(), elements_.end(), [&](const PlyElement& e) { return e.name == *name; })) {
       header_error("a second '" + std::string(*name) + "' element");
@@ -228,8 +228,8 @@ class PlyReader {
     for (const PlyElement& element : elements_) {
       const std::size_t least = least_record_bytes(element);
       if (least > 0 && (element.count > left / least || needed + element.count * least > left)) {
-        throw UserError(label_ + ": header declares " + std::to_string(element.count) + " '" + element.name +
-                        "' elements, more than the " + plural(cursor_.remaining(), "byte") +
+        throw UserError(label_ + ": header declares " + std::to_string(element.count) + " " + quoted(element.name) +
+                        " elements, more than the " + plural(cursor_.remaining(), "byte") +
                         " after it can hold (truncated file or corrupt header)");
       }
       needed += element.count * least;
@@ -379,15 +379,18 @@ class PlyReader {
   }
 
   [[noreturn]] void record_error(const std::string& problem) {
-    const std::string where = element_->name + " " + std::to_string(record_) + " has " + problem;
+    const std::string where = record_name() + " has " + problem;
     if (encoding_ == PlyEncoding::ascii) throw_at_line(label_, cursor_.line_number(), where);
     throw UserError(label_ + ": " + where);
   }
 
   [[noreturn]] void truncated() {
-    throw UserError(label_ + ": file ends inside " + element_->name + " " + std::to_string(record_) + " of " +
-                    std::to_string(element_->count) + " (truncated file?)");
+    throw UserError(label_ + ": file ends inside " + record_name() + " of " + std::to_string(element_->count) +
+                    " (truncated file?)");
   }
+
+  // Names come from the file: quoted, so a message stays one short printable line.
+  std::string record_name() const { return "element " + quoted(element_->name) + " record " + std::to_string(record_); }
 
   ByteCursor cursor_;
   const std::string& label_;
