@@ -1,13 +1,16 @@
 # The fuzz build: -DMESHPARTICLES_FUZZ=ON with clang (scripts/fuzz.sh
 # configures it in build-fuzz/). It builds one libFuzzer target per mesh
-# format from the readers, the mesh checks and fast marching, with ASan and
-# UBSan, and nothing that needs OpenCL or OpenMesh.
+# format from the readers, the mesh checks and fast marching, with ASan,
+# UBSan and libstdc++ assertions, and nothing that needs OpenCL or OpenMesh.
 option(MESHPARTICLES_FUZZ "Build the libFuzzer targets of the mesh readers (clang only) instead of the program" OFF)
 if(MESHPARTICLES_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
     message(FATAL_ERROR "MESHPARTICLES_FUZZ needs clang (e.g. CXX=clang++-14), not ${CMAKE_CXX_COMPILER_ID}")
   endif()
   set(SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  # libstdc++'s own bounds checks (vector and span indexing) catch what ASan
+  # cannot see inside an allocation.
+  add_compile_definitions(_GLIBCXX_ASSERTIONS)
   add_library(fuzzed_mesh_input STATIC
     host/mesh/byte_cursor.cpp
     host/mesh/mesh_file.cpp
