@@ -2,35 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <numeric>
-#include <set>
+#include <unordered_map>
 
 #include "common/user_error.hpp"
+#include "mesh/plural.hpp"
 
 namespace meshparticles {
 
 namespace {
 
-std::string plural(std::size_t count, const std::string& one, const std::string& many = "") {
-  return std::to_string(count) + " " + (count == 1 ? one : many.empty() ? one + "s" : many);
-}
-
-// Counts against the header, where the format has one; then whether every
-// element the reader produced was actually read.
-void check_counts(const PolygonSoup& soup, const std::string& label) {
-  const std::size_t readable_vertices = soup.first_unreadable_vertex.value_or(soup.vertices.size());
-  const std::size_t readable_faces = soup.first_unreadable_face.value_or(soup.faces.size());
-  if (soup.declared_vertices && *soup.declared_vertices != readable_vertices) {
-    throw UserError(label + ": header declares " + plural(*soup.declared_vertices, "vertex", "vertices") +
-                    " but " + std::to_string(readable_vertices) + " could be read (truncated file or malformed number)");
-  }
-  if (soup.declared_faces && *soup.declared_faces != readable_faces) {
-    throw UserError(label + ": header declares " + plural(*soup.declared_faces, "face") + " but " +
-                    std::to_string(readable_faces) + " could be read (truncated file or malformed number)");
-  }
+void check_not_empty(const PolygonSoup& soup, const std::string& label) {
   if (soup.vertices.empty()) throw UserError(label + ": the mesh has no vertices");
-  if (soup.faces.empty()) throw UserError(label + ": the mesh has no faces");
+  if (soup.face_count() == 0) throw UserError(label + ": the mesh has no faces");
 }
 
 void check_coordinates(const PolygonSoup& soup, const std::string& label) {
@@ -47,10 +32,11 @@ std::vector<Triangle> triangulate_checked_faces(const PolygonSoup& soup, const s
                                                 std::vector<std::string>& warnings) {
   const auto vertex_count = (long long)soup.vertices.size();
   std::vector<Triangle> triangles;
-  triangles.reserve(soup.faces.size());
+  triangles.reserve(soup.face_count());
   std::size_t polygons = 0;
-  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
-    const auto& face = soup.faces[f];
+  std::vector<long long> sorted;
+  for (std::size_t f = 0; f < soup.face_count(); ++f) {
+    const auto face = soup.face(f);
     const std::string where = label + ": face " + std::to_string(f);
     if (face.size() < 3) throw UserError(where + " has only " + plural(face.size(), "vertex", "vertices"));
     for (long long index : face) {
@@ -59,7 +45,7 @@ std::vector<Triangle> triangulate_checked_faces(const PolygonSoup& soup, const s
                         plural(soup.vertices.size(), "vertex", "vertices") + ")");
       }
     }
-    std::vector<long long> sorted = face;
+    sorted.assign(face.begin(), face.end());
     std::sort(sorted.begin(), sorted.end());
     if (const auto repeat = std::adjacent_find(sorted.begin(), sorted.end()); repeat != sorted.end()) {
       throw UserError(where + " uses vertex " + std::to_string(*repeat) + " more than once");
@@ -69,78 +55,157 @@ std::vector<Triangle> triangulate_checked_faces(const PolygonSoup& soup, const s
       triangles.push_back({VertexId(face[0]), VertexId(face[k]), VertexId(face[k + 1])});
     }
   }
-  if (polygons > 0) warnings.push_back(label + ": " + plural(polygons, "polygon") + " with more than 3 vertices triangulated");
+  if (polygons > 0)
+    warnings.push_back(label + ": " + plural(polygons, "polygon") + " with more than 3 vertices triangulated");
   return triangles;
 }
 
-// Every edge in at most two triangles, no triangle twice, and around every
-// vertex one fan of triangles (not two cones touching at a point).
-void check_manifold(const std::vector<Triangle>& triangles, std::size_t vertex_count,
-                    const std::string& label, std::vector<std::string>& warnings) {
-  std::map<std::pair<VertexId, VertexId>, int> edge_faces;
-  std::size_t same_direction_edges = 0;
-  std::set<std::pair<VertexId, VertexId>> directed;
-  std::map<Triangle, std::size_t> first_with_vertices;
+std::uint64_t edge_key(VertexId a, VertexId b) { return (std::uint64_t(a) << 32) | b; }
+
+// A triangle with the same three vertices as an earlier one adds nothing to
+// a surface and would count its edges twice: dropped, or refused if strict.
+void drop_repeated_triangles(std::vector<Triangle>& triangles, const std::string& label,
+                             std::vector<std::string>& warnings, bool strict) {
+  struct SortedHash {
+    std::size_t operator()(const Triangle& t) const {
+      return std::hash<std::uint64_t>()(edge_key(t[0], t[1]) * 0x9E3779B97F4A7C15ull ^ t[2]);
+    }
+  };
+  std::unordered_map<Triangle, std::size_t, SortedHash> first_with_vertices;
+  first_with_vertices.reserve(triangles.size());
+  std::vector<Triangle> kept;
+  kept.reserve(triangles.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) {
     Triangle key = triangles[f];
     std::sort(key.begin(), key.end());
-    if (const auto [it, inserted] = first_with_vertices.emplace(key, f); !inserted) {
-      throw UserError(label + ": triangle " + std::to_string(f) + " repeats triangle " +
-                      std::to_string(it->second) + " (same three vertices)");
-    }
-    for (int k = 0; k < 3; ++k) {
-      const VertexId a = triangles[f][k], b = triangles[f][(k + 1) % 3];
-      if (++edge_faces[{std::min(a, b), std::max(a, b)}] == 3) {
-        throw UserError(label + ": non-manifold edge " + std::to_string(a) + "-" + std::to_string(b) +
-                        " is shared by more than two faces");
-      }
-      if (!directed.insert({a, b}).second) ++same_direction_edges;
+    const auto [it, inserted] = first_with_vertices.emplace(key, f);
+    if (inserted) {
+      kept.push_back(triangles[f]);
+    } else if (strict) {
+      throw UserError(label + ": triangle " + std::to_string(f) + " repeats triangle " + std::to_string(it->second) +
+                      " (same three vertices)");
     }
   }
+  if (const std::size_t dropped = triangles.size() - kept.size(); dropped > 0) {
+    warnings.push_back(label + ": " + plural(dropped, "repeated triangle") +
+                       " (same three vertices as an earlier one) dropped");
+    triangles = std::move(kept);
+  }
+}
+
+// Edges in more than two triangles are kept (each joins all its triangles;
+// distances cross from any to any), or refused if strict.
+void check_edges(const std::vector<Triangle>& triangles, const std::string& label, std::vector<std::string>& warnings,
+                 bool strict) {
+  std::vector<std::uint64_t> undirected, directed;
+  undirected.reserve(3 * triangles.size());
+  directed.reserve(3 * triangles.size());
+  for (const Triangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const VertexId a = t[k], b = t[(k + 1) % 3];
+      undirected.push_back(edge_key(std::min(a, b), std::max(a, b)));
+      directed.push_back(edge_key(a, b));
+    }
+  }
+  std::sort(undirected.begin(), undirected.end());
+  std::size_t nonmanifold = 0;
+  std::string example;
+  for (std::size_t begin = 0, end = 0; begin < undirected.size(); begin = end) {
+    while (end < undirected.size() && undirected[end] == undirected[begin]) ++end;
+    if (end - begin <= 2) continue;
+    const std::string edge =
+        std::to_string(undirected[begin] >> 32) + "-" + std::to_string(undirected[begin] & 0xffffffffu);
+    if (strict) throw UserError(label + ": non-manifold edge " + edge + " is shared by more than two faces");
+    if (++nonmanifold == 1) example = edge + ", in " + std::to_string(end - begin) + " triangles";
+  }
+  if (nonmanifold > 0) {
+    warnings.push_back(label + ": " + plural(nonmanifold, "non-manifold edge") + " (e.g. " + example +
+                       ") kept: each joins all its triangles");
+  }
+  std::sort(directed.begin(), directed.end());
+  std::size_t same_direction_edges = 0;
+  for (std::size_t k = 1; k < directed.size(); ++k) same_direction_edges += directed[k] == directed[k - 1];
   if (same_direction_edges > 0) {
     warnings.push_back(label + ": " + plural(same_direction_edges, "edge") +
                        " where neighbouring faces disagree in orientation (harmless here: only distances matter)");
   }
+}
 
-  // The link of v: edges opposite v in its triangles. Manifold iff connected.
-  std::vector<std::vector<std::pair<VertexId, VertexId>>> link(vertex_count);
+// Around a manifold vertex its triangles form one fan: the link (the edges
+// opposite it) is connected. Where separate fans meet at a vertex (two
+// cones touching at their apexes) it is kept, so a shortest path may pass
+// through it, or refused if strict.
+void check_vertex_fans(const std::vector<Triangle>& triangles, std::size_t vertex_count, const std::string& label,
+                       std::vector<std::string>& warnings, bool strict) {
+  std::vector<std::uint32_t> offsets(vertex_count + 1, 0);
   for (const Triangle& t : triangles) {
-    for (int k = 0; k < 3; ++k) link[t[k]].push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
+    for (VertexId v : t) ++offsets[v + 1];
   }
-  for (std::size_t v = 0; v < vertex_count; ++v) {
-    if (link[v].empty()) continue;
-    std::map<VertexId, VertexId> parent;
-    const auto root = [&parent](VertexId x) {
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  std::vector<std::uint32_t> incident(offsets.back());
+  std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
+  for (std::uint32_t f = 0; f < triangles.size(); ++f) {
+    for (VertexId v : triangles[f]) incident[fill[v]++] = f;
+  }
+
+  std::size_t pinched = 0;
+  std::string example;
+  std::vector<VertexId> neighbours;
+  std::vector<std::uint32_t> parent;
+  for (VertexId v = 0; v < vertex_count; ++v) {
+    neighbours.clear();
+    for (std::uint32_t k = offsets[v]; k < offsets[v + 1]; ++k) {
+      for (VertexId w : triangles[incident[k]]) {
+        if (w != v) neighbours.push_back(w);
+      }
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    if (neighbours.empty()) continue;
+    const auto local = [&](VertexId w) {
+      return std::uint32_t(std::lower_bound(neighbours.begin(), neighbours.end(), w) - neighbours.begin());
+    };
+    const auto root = [&](std::uint32_t x) {
       while (parent[x] != x) x = parent[x] = parent[parent[x]];
       return x;
     };
-    for (const auto& [a, b] : link[v]) {
-      parent.emplace(a, a);
-      parent.emplace(b, b);
-    }
-    std::size_t fans = parent.size();
-    for (const auto& [a, b] : link[v]) {
-      const VertexId ra = root(a), rb = root(b);
-      if (ra != rb) {
-        parent[ra] = rb;
+    parent.resize(neighbours.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    std::size_t fans = neighbours.size();
+    for (std::uint32_t k = offsets[v]; k < offsets[v + 1]; ++k) {
+      const Triangle& t = triangles[incident[k]];
+      const int corner = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+      const std::uint32_t a = root(local(t[(corner + 1) % 3])), b = root(local(t[(corner + 2) % 3]));
+      if (a != b) {
+        parent[a] = b;
         --fans;
       }
     }
-    if (fans > 1) {
+    if (fans <= 1) continue;
+    if (strict) {
       throw UserError(label + ": non-manifold vertex " + std::to_string(v) + " (its triangles form " +
                       std::to_string(fans) + " separate fans)");
     }
+    if (++pinched == 1)
+      example = "vertex " + std::to_string(v) + ", where " + std::to_string(fans) + " fans of triangles meet";
+  }
+  if (pinched > 0) {
+    warnings.push_back(label + ": " + plural(pinched, "non-manifold vertex", "non-manifold vertices") + " (e.g. " +
+                       example + ") kept: a shortest path may pass through them");
   }
 }
 
 }  // namespace
 
-SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label,
-                               std::vector<std::string>& warnings) {
-  check_counts(soup, label);
+SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label, std::vector<std::string>& warnings,
+                               const MeshReadOptions& options) {
+  warnings.insert(warnings.end(), soup.warnings.begin(), soup.warnings.end());
+  check_not_empty(soup, label);
   check_coordinates(soup, label);
   std::vector<Triangle> triangles = triangulate_checked_faces(soup, label, warnings);
-  check_manifold(triangles, soup.vertices.size(), label, warnings);
+  drop_repeated_triangles(triangles, label, warnings, options.strict);
+  check_edges(triangles, label, warnings, options.strict);
+  check_vertex_fans(triangles, soup.vertices.size(), label, warnings, options.strict);
 
   // Drop vertices no triangle uses; keep their input ids for every output.
   std::vector<char> used(soup.vertices.size(), 0);

@@ -1,8 +1,11 @@
 #pragma once
-// What OpenMesh lets through, caught here: counts that disagree with the
-// header, non-finite coordinates, bad or repeated face indices, non-manifold
-// edges and vertices. Tolerated with a warning: polygons (triangulated),
-// degenerate triangles, unreferenced vertices (dropped, ids remembered).
+// What a reader hands on, checked before anything uses it. Refused: no
+// vertices or faces, non-finite coordinates, bad face indices. Tolerated with
+// one warning line per kind: polygons (fan-triangulated), degenerate
+// triangles, unreferenced vertices (dropped, input ids remembered),
+// inconsistent orientation, and the non-manifold cases real scans have:
+// edges in more than two triangles and vertices where separate fans meet
+// (kept as they are), repeated triangles (dropped).
 #include <string>
 #include <vector>
 
@@ -11,8 +14,14 @@
 
 namespace meshparticles {
 
+struct MeshReadOptions {
+  // Refuse non-manifold edges and vertices and repeated triangles, instead of
+  // keeping (or dropping) them with a warning.
+  bool strict = false;
+};
+
 // Throws UserError("LABEL: problem") for the first fatal problem.
-SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label,
-                               std::vector<std::string>& warnings);
+SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label, std::vector<std::string>& warnings,
+                               const MeshReadOptions& options = {});
 
 }  // namespace meshparticles

@@ -1,20 +1,32 @@
 #pragma once
-// Mesh input: OFF, OBJ, PLY and STL parsed by OpenMesh into a polygon soup,
-// then checked (mesh_checks) and handed on as a SurfaceMesh.
+// Mesh input: OFF, OBJ, PLY and STL read by our own strict readers
+// (format_readers) into a polygon soup, then checked (mesh_checks) and handed
+// on as a SurfaceMesh. Why not a library: docs/MESHES.md.
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "mesh/mesh_checks.hpp"
 #include "mesh/polygon_soup.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace meshparticles {
 
+enum class MeshFormat { off, obj, ply, stl };
+
+// The format a file name's extension (any case) names; throws UserError for
+// any other extension.
+MeshFormat mesh_format_of(const std::filesystem::path& file);
+
 // Reads and checks `file`. Throws UserError("FILE: problem") on anything the
 // program cannot use; appends one line per tolerated oddity to `warnings`.
-SurfaceMesh read_mesh(const std::filesystem::path& file, std::vector<std::string>& warnings);
+SurfaceMesh read_mesh(const std::filesystem::path& file, std::vector<std::string>& warnings,
+                      const MeshReadOptions& options = {});
 
-// The parsing step alone: OpenMesh's reader, recording what it was given.
+// The parsing step alone, from a file (regular files up to
+// kMaxMeshFileBytes) or from bytes in memory; `label` starts every message.
 PolygonSoup read_polygon_soup(const std::filesystem::path& file);
+PolygonSoup read_polygon_soup(std::span<const char> bytes, MeshFormat format, const std::string& label);
 
 }  // namespace meshparticles

@@ -1,8 +1,8 @@
 #pragma once
 // The compact, read-only triangle mesh that everything after mesh input works
 // on: plain arrays, one-ring adjacency in CSR form (no maximum valence), and
-// the statistics the particle system and reports need. OpenMesh stays at the
-// door (mesh_reader); the numeric code never sees a half-edge structure.
+// the statistics the particle system and reports need. The readers hand over
+// a polygon soup; the numeric code never sees a half-edge structure.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -18,8 +18,9 @@ using Triangle = std::array<VertexId, 3>;
 
 class SurfaceMesh {
  public:
-  // `triangles` must be a valid manifold triangle list over `positions` (the
-  // reader's checks guarantee it). `input_ids[v]` is the id vertex v had in
+  // `triangles` must index `positions`, no triangle twice (the reader's checks
+  // guarantee it). They need not be manifold: an edge in three triangles is
+  // interior (boundary means one), and separate fans may share a vertex. `input_ids[v]` is the id vertex v had in
   // the input file (empty: the identity), out of `input_vertex_count` vertices
   // the file had (0: as many as here).
   SurfaceMesh(std::vector<Vec3> positions, std::vector<Triangle> triangles,

@@ -1,0 +1,39 @@
+# The fuzz build: -DMESHPARTICLES_FUZZ=ON with clang (scripts/fuzz.sh
+# configures it in build-fuzz/). It builds one libFuzzer target per mesh
+# format from the readers, the mesh checks and fast marching, with ASan,
+# UBSan and libstdc++ assertions, and nothing that needs OpenCL or OpenMesh.
+option(MESHPARTICLES_FUZZ "Build the libFuzzer targets of the mesh readers (clang only) instead of the program" OFF)
+if(MESHPARTICLES_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "MESHPARTICLES_FUZZ needs clang (e.g. CXX=clang++-14), not ${CMAKE_CXX_COMPILER_ID}")
+  endif()
+  set(SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  # libstdc++'s own bounds checks (vector and span indexing) catch what ASan
+  # cannot see inside an allocation.
+  add_compile_definitions(_GLIBCXX_ASSERTIONS)
+  add_library(fuzzed_mesh_input STATIC
+    host/mesh/byte_cursor.cpp
+    host/mesh/mesh_file.cpp
+    host/mesh/off_reader.cpp
+    host/mesh/ply_reader.cpp
+    host/mesh/obj_reader.cpp
+    host/mesh/stl_reader.cpp
+    host/mesh/mesh_reader.cpp
+    host/mesh/mesh_checks.cpp
+    host/mesh/surface_mesh.cpp
+    host/geodesics/single_source.cpp
+    host/geodesics/dijkstra.cpp
+    host/geodesics/triangle_stencils.cpp
+    host/geodesics/fast_marching.cpp
+  )
+  target_include_directories(fuzzed_mesh_input PUBLIC host)
+  target_compile_options(fuzzed_mesh_input PUBLIC -g -O1 ${SANITIZERS} -fsanitize=fuzzer-no-link)
+  target_link_options(fuzzed_mesh_input PUBLIC ${SANITIZERS})
+  foreach(format off ply obj stl)
+    add_executable(fuzz_${format} fuzz/mesh_reader_fuzzer.cpp)
+    target_compile_definitions(fuzz_${format} PRIVATE FUZZ_FORMAT=${format})
+    target_compile_options(fuzz_${format} PRIVATE -fsanitize=fuzzer)
+    target_link_options(fuzz_${format} PRIVATE -fsanitize=fuzzer)
+    target_link_libraries(fuzz_${format} PRIVATE fuzzed_mesh_input)
+  endforeach()
+endif()

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# scripts/real_meshes.sh [--info-only] [--subset] [--limit V]: the mesh
+# readers on real files, the 143 meshes Debian's libcgal-demo ships
+# (installed if missing, unpacked under ${XDG_CACHE_HOME:-$HOME/.cache}/meshparticles/).
+# For every file: `build/meshparticles info`; then, unless --info-only, a run
+# of min(256, V) particles on every mesh of at most V vertices (default
+# 12,000: its distance table is 0.58 GB and takes a minute on two cores).
+# Prints one Markdown row per file: name, vertices, accepted or refused (with
+# the reason), the kinds of warning, iterations, converged or not, seconds. --subset: a
+# fixed handful of files for CI (about a minute). Exits 1 when a file other
+# than the expected refusals is refused or a run fails.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BINARY="$ROOT/build/meshparticles"
+info_only=0 subset=0 limit=12000
+while (($#)); do
+  case "$1" in
+    --info-only) info_only=1 ;;
+    --subset) subset=1 ;;
+    --limit) limit="$2"; shift ;;
+    *) echo "usage: $0 [--info-only] [--subset] [--limit V]" >&2; exit 2 ;;
+  esac
+  shift
+done
+[ -x "$BINARY" ] || { echo "real_meshes: build first (scripts/test.sh, or cmake --build build)" >&2; exit 2; }
+
+# Files no reader should accept, with why (docs/MESHES.md).
+EXPECTED_REFUSALS=(b9.ply)  # a point cloud: its header declares 0 faces
+# The CI subset: each reader, each dialect issue 13 named, non-manifold files, the refusal.
+SUBSET=(mesh_with_colors.off prim.off cube_poly.off blobby-shuffled.off polygon_mesh.off pig.stl sphere.stl
+        colored_tetra.ply sphere.ply b9.ply)
+
+ARCHIVE=/usr/share/doc/libcgal-dev/data.tar.gz
+if [ ! -f "$ARCHIVE" ]; then
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  echo "real_meshes: installing libcgal-demo" >&2
+  $SUDO apt-get update -qq >/dev/null
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends libcgal-demo >/dev/null
+fi
+CACHE="${XDG_CACHE_HOME:-$HOME/.cache}/meshparticles/cgal-data"
+if [ ! -d "$CACHE/data/meshes" ]; then
+  mkdir -p "$CACHE"
+  tar -xzf "$ARCHIVE" -C "$CACHE" data/meshes
+fi
+MESHES="$CACHE/data/meshes"
+WORK="$(mktemp -d)"
+trap 'rm -rf "$WORK"' EXIT
+
+if ((subset)); then files=("${SUBSET[@]}"); else mapfile -t files < <(ls "$MESHES"); fi
+
+# The kinds of warning a file gave, in a few words each.
+warning_kinds() {
+  { grep "warning:" "$1" || true; } | sed -E -e 's/.*polygons? with more than 3.*/polygons/' -e 's/.*degenerate.*/degenerate triangles/' \
+    -e 's/.*unreferenced.*/unreferenced vertices/' -e 's/.*orientation.*/orientation/' \
+    -e 's/.*non-manifold edge.*/non-manifold edges/' -e 's/.*non-manifold vert.*/non-manifold vertices/' \
+    -e 's/.*repeated triangle.*/repeated triangles/' -e 's/.*ignored$/content after the faces/' | paste -sd, - | sed 's/,/, /g'
+}
+
+json_field() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
+
+echo "| file | vertices | input | warnings | iterations | converged | seconds |"
+echo "|---|---|---|---|---|---|---|"
+accepted=0 refused=0 unexpected=0
+for name in "${files[@]}"; do
+  mesh="$MESHES/$name"
+  if "$BINARY" info "$mesh" --json >"$WORK/info.json" 2>"$WORK/info.err"; then
+    accepted=$((accepted + 1))
+    vertices=$(json_field "$WORK/info.json" vertices)
+    warnings=$(warning_kinds "$WORK/info.err")
+    input="accepted"
+  else
+    refused=$((refused + 1))
+    reason=$(sed -e 's/^meshparticles: error: //' -e "s|$MESHES/||" "$WORK/info.err" | head -1)
+    if [[ " ${EXPECTED_REFUSALS[*]} " != *" $name "* ]]; then unexpected=$((unexpected + 1)); reason="UNEXPECTED: $reason"; fi
+    echo "| $name | | refused: $reason | | | | |"
+    continue
+  fi
+  iterations="" converged="" seconds=""
+  if ((!info_only)) && ((vertices <= limit)); then
+    particles=$((vertices < 256 ? vertices : 256))
+    start=$(date +%s.%N)
+    if "$BINARY" run "$mesh" -n "$particles" --out "$WORK/run" --no-cache -q >/dev/null 2>"$WORK/run.err"; then
+      seconds=$(python3 -c "print(f'{$(date +%s.%N) - $start:.1f}')")
+      iterations=$(json_field "$WORK/run/report.json" iterations_run)
+      stopped=$(json_field "$WORK/run/report.json" stopped)
+      [ "$stopped" = "converged" ] && converged="yes" || converged="no ($stopped)"
+    else
+      unexpected=$((unexpected + 1))
+      converged="RUN FAILED: $(tail -1 "$WORK/run.err")"
+    fi
+  elif ((!info_only)); then
+    converged="(over $limit vertices: not run)"
+  fi
+  echo "| $name | $vertices | $input | $warnings | $iterations | $converged | $seconds |"
+done
+echo
+echo "$accepted of ${#files[@]} accepted, $refused refused ($unexpected unexpected)"
+((unexpected == 0))

@@ -1,0 +1,113 @@
+// What the checks keep, drop and refuse in non-manifold input: by default
+// one warning line per kind, with MeshReadOptions::strict the refusals of
+// old.
+#include "mesh/mesh_checks.hpp"
+
+#include <gtest/gtest.h>
+
+#include "common/user_error.hpp"
+#include "mesh/mesh_reader.hpp"
+
+namespace meshparticles {
+namespace {
+
+std::string data(const std::string& name) { return std::string(TEST_DATA_DIR) + "/" + name; }
+
+std::string strict_refusal(const std::filesystem::path& file) {
+  std::vector<std::string> warnings;
+  try {
+    read_mesh(file, warnings, {.strict = true});
+  } catch (const UserError& error) {
+    return error.what();
+  }
+  return "accepted";
+}
+
+TEST(MeshChecks, TwoFansAtAVertexAreKeptWithOneWarning) {
+  // Two tetrahedra touching at vertex 0.
+  std::vector<std::string> warnings;
+  const SurfaceMesh mesh = read_mesh(data("nonmanifold_vertex.off"), warnings);
+  EXPECT_EQ(mesh.vertex_count(), 7u);
+  EXPECT_EQ(mesh.triangle_count(), 8u);
+  EXPECT_EQ(mesh.component_count(), 1u);
+  EXPECT_EQ(mesh.valence(0), 6u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], data("nonmanifold_vertex.off") +
+                             ": 1 non-manifold vertex (e.g. vertex 0, where 2 fans of triangles meet) kept: a shortest "
+                             "path may pass through them");
+  EXPECT_EQ(strict_refusal(data("nonmanifold_vertex.off")),
+            data("nonmanifold_vertex.off") + ": non-manifold vertex 0 (its triangles form 2 separate fans)");
+}
+
+TEST(MeshChecks, AnEdgeInThreeTrianglesJoinsThemAll) {
+  std::vector<std::string> warnings;
+  const SurfaceMesh mesh = read_mesh(data("nonmanifold_edge.off"), warnings);
+  EXPECT_EQ(mesh.triangle_count(), 3u);
+  EXPECT_EQ(mesh.edge_count(), 7u);
+  EXPECT_EQ(mesh.valence(0), 4u);  // 1, 2, 3 and 4
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find(": 1 non-manifold edge (e.g. 0-1, in 3 triangles) kept: each joins all its triangles"),
+            std::string::npos)
+      << warnings[0];
+  EXPECT_NE(warnings[1].find("disagree in orientation"), std::string::npos) << warnings[1];
+  EXPECT_EQ(strict_refusal(data("nonmanifold_edge.off")),
+            data("nonmanifold_edge.off") + ": non-manifold edge 0-1 is shared by more than two faces");
+}
+
+PolygonSoup tetrahedron_with_repeats() {
+  PolygonSoup soup;
+  soup.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  for (const auto& [a, b, c] : {std::array{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}, {2, 1, 0}, {3, 1, 0}}) {
+    soup.add_triangle(a, b, c);
+  }
+  return soup;
+}
+
+TEST(MeshChecks, RepeatedTrianglesAreDroppedWithOneWarning) {
+  std::vector<std::string> warnings;
+  const SurfaceMesh mesh = build_checked_mesh(tetrahedron_with_repeats(), "tetra", warnings);
+  EXPECT_EQ(mesh.triangle_count(), 4u);
+  EXPECT_EQ(mesh.boundary_vertex_count(), 0u);
+  EXPECT_NEAR(mesh.area(), 8 * std::sqrt(3.0), 1e-12);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "tetra: 2 repeated triangles (same three vertices as an earlier one) dropped");
+  try {
+    build_checked_mesh(tetrahedron_with_repeats(), "tetra", warnings, {.strict = true});
+    ADD_FAILURE() << "strict accepted a repeated triangle";
+  } catch (const UserError& error) {
+    EXPECT_EQ(std::string(error.what()), "tetra: triangle 4 repeats triangle 0 (same three vertices)");
+  }
+}
+
+TEST(MeshChecks, StrictAcceptsManifoldMeshesUnchanged) {
+  for (const char* name : {"tetrahedron.ply", "off_dialect.off", "octahedron_tristrips.ply"}) {
+    EXPECT_EQ(strict_refusal(data(name)), "accepted") << name;
+  }
+}
+
+TEST(MeshChecks, ManyPinchedVerticesStillGiveOneLine) {
+  // A strip of tetrahedra, each touching the next at one vertex.
+  PolygonSoup soup;
+  constexpr int kTetrahedra = 5;
+  for (int t = 0; t < kTetrahedra; ++t) {
+    const double x = 2.0 * t;
+    const auto first = static_cast<long long>(soup.vertices.size()) - (t > 0 ? 1 : 0);  // shares the last apex
+    if (t == 0) soup.vertices.push_back({x, 0, 0});
+    soup.vertices.insert(soup.vertices.end(), {{x + 1, 1, 0}, {x + 1, -1, 0}, {x + 2, 0, 0}});
+    const long long a = first, b = first + 1, c = first + 2, d = first + 3;
+    soup.add_triangle(a, b, c);
+    soup.add_triangle(a, c, d);
+    soup.add_triangle(a, d, b);
+    soup.add_triangle(b, d, c);
+  }
+  std::vector<std::string> warnings;
+  const SurfaceMesh mesh = build_checked_mesh(soup, "chain", warnings);
+  EXPECT_EQ(mesh.component_count(), 1u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("chain: " + std::to_string(kTetrahedra - 1) + " non-manifold vertices (e.g. vertex 3,"),
+            std::string::npos)
+      << warnings[0];
+}
+
+}  // namespace
+}  // namespace meshparticles
