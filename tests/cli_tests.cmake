@@ -139,3 +139,54 @@ expect_kernel_build_failure(kernel_error_names_includer naive naive_update.cl
   "#include \"claims.h\"\n#include \"particle_energy.h\"\nthis is not OpenCL C;\n" "naive_update\\.cl:3:[0-9]+: ")
 expect_kernel_build_failure(kernel_error_names_second_file naive apply_moves.cl
   "// line 1\nthis is not OpenCL C;\n" "apply_moves\\.cl:2:[0-9]+: ")
+# Hard edges (issue 14): numbers parsed strictly, with the option and its range named.
+expect_exit(number_negative 2 "--iterations: expected a whole number from 0 to 1000000, got \"-1\"" run ${TETRA} --iterations -1 --out ${RUN_OUT})
+expect_exit(number_timed_negative 2 "--iterations: expected a whole number from 1 to 100000, got \"-1\"" bench --iterations -1)
+expect_exit(number_sweep_negative 2 "--iterations: expected a whole number from 1 to 100000, got \"-1\"" sweep ${TETRA} --iterations -1)
+expect_exit(number_leading_zero_is_decimal 2 "-n 10 is more particles than the 4 vertices" run ${TETRA} -n 010 --out ${RUN_OUT})
+expect_exit(number_hex 2 "-n/--particles: expected a whole number from 1 to 4294967295, got \"0x3\"" run ${TETRA} -n 0x3 --out ${RUN_OUT})
+expect_exit(number_huge 2 "-n/--particles: expected a whole number from 1 to 4294967295, got \"99999999999999999999\"" run ${TETRA} -n 99999999999999999999 --out ${RUN_OUT})
+expect_exit(number_words 2 "-n/--particles: expected a whole number from 1 to 4294967295, got \"abc\"" run ${TETRA} -n abc --out ${RUN_OUT})
+expect_exit(number_colors_cap 2 "--colors: expected a whole number from 1 to 4096, got \"4294967295\"" run ${TETRA} --colors 4294967295 --out ${RUN_OUT})
+expect_exit(number_wg_fraction 2 "--wg: expected a whole number from 1 to 1048576, got \"32.5\"" sweep ${TETRA} --wg 16,32.5)
+expect_exit(number_case 2 "--case torus:-1: expected a whole number from 1 to 4294967295, got \"-1\"" bench --case torus:-1)
+expect_exit(number_source 2 "--source: expected a whole number from 0 to 4294967295, got \"-1\"" geodesics ${TETRA} --source -1)
+expect_exit(number_threads 2 "--threads: expected a whole number from 0 to 1024, got \"1e3\"" geodesics ${TETRA} --threads 1e3)
+expect_exit(sigma_nan 2 "--sigma: expected a finite number above 0, got \"nan\"" run ${TETRA} --sigma nan --out ${RUN_OUT})
+expect_exit(sigma_inf 2 "--sigma: expected a finite number above 0, got \"inf\"" quality ${TORUS} ${PARTICLES_DATA}/blank_lines.particles --sigma inf)
+expect_exit(sigma_overflows 2 "--sigma 1e-300 is too small to compute with" run ${TETRA} -n 2 --backend serial --sigma 1e-300 --no-cache --out ${RUN_OUT})
+expect_exit(sigma_tiny_warns 0 "warning: --sigma 1e-05 with d_hex .*particles will not feel each other" run ${TETRA} -n 2 --backend serial --sigma 1e-5 --no-cache --out ${RUN_OUT}_sigma_tiny)
+expect_exit(sigma_huge_warns 0 "warning: --sigma 1e\\+300 with d_hex .*the energy is flat" run ${TETRA} -n 2 --backend serial --sigma 1e300 --no-cache --out ${RUN_OUT}_sigma_huge)
+# The environment: named when it is the cause; `devices` always lists.
+expect_exit_of(devices_bogus_variable 0 "warning: \\$MESHPARTICLES_DEVICE='bogus' matches no device above"
+               env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> devices)
+expect_exit_of(run_bogus_variable 2 "no OpenCL device matches \\$MESHPARTICLES_DEVICE='bogus'"
+               env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --out ${RUN_OUT})
+expect_exit_of(bad_pocl_cache 3 "\\$POCL_CACHE_DIR='/proc/no-such-dir' is not a directory PoCL can write"
+               env POCL_CACHE_DIR=/proc/no-such-dir $<TARGET_FILE:meshparticles> devices)
+expect_exit_of(no_cache_ignores_tmpdir 0 "converged"
+               env -u HOME -u XDG_CACHE_HOME -u XDG_CONFIG_HOME TMPDIR=/nonexistent
+               $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend serial --no-cache --out ${RUN_OUT}_tmpdir)
+expect_exit_of(cache_without_tmpdir_warns 0 "warning: no cache directory: .*\\$TMPDIR='/nonexistent' is not a directory"
+               env -u HOME -u XDG_CACHE_HOME TMPDIR=/nonexistent $<TARGET_FILE:meshparticles> geodesics ${TETRA})
+# Destinations checked before the work, with the system's reason.
+expect_exit(out_is_directory 2 "${CMAKE_CURRENT_BINARY_DIR}: cannot write: it is a directory" geodesics ${TETRA} --source 0 --out ${CMAKE_CURRENT_BINARY_DIR})
+expect_exit(sweep_csv_in_proc 2 "/proc/x: cannot write to /proc: " sweep ${TETRA} -n 2 --csv /proc/x)
+expect_exit(bench_csv_in_proc 2 "/proc/x: cannot write to /proc: " bench --case tetrahedron:2 --backend serial --csv /proc/x)
+expect_exit(sweep_save_unwritable 2 "cannot create tuning file directory /proc/x: " sweep ${TETRA} -n 2 --save --tuning-file /proc/x/tuning.json)
+expect_exit(cache_dir_unwritable 0 "warning: cannot create cache directory /proc/x: .* not cached" geodesics ${TETRA} --cache-dir /proc/x)
+# A run never replaces a directory holding files it did not write.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/cli_foreign_out)
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/cli_foreign_out/notes.txt "the user's own\n")
+expect_exit(run_foreign_out 2 "output directory .*cli_foreign_out holds notes\\.txt, which a run did not write" run ${TETRA} -n 2 --out ${CMAKE_CURRENT_BINARY_DIR}/cli_foreign_out)
+# A tuning file with a fractional size or an empty class is named in a warning, in run and in bench.
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/cli_fractional_tuning.json
+     "{\"version\": 1, \"entries\": [{\"device\": \"d\", \"kernel\": \"tiled\", \"size_class\": \"n<=64\", \"wg\": 32.7, \"tile\": 8}]}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/cli_empty_class_tuning.json
+     "{\"version\": 1, \"entries\": [{\"device\": \"d\", \"kernel\": \"tiled\", \"size_class\": \"\", \"wg\": 32, \"tile\": 8}]}")
+expect_exit(run_fractional_tuning 0 "warning: tuning file .* is not readable \\(wg 32.7 is not a whole number above 0\\)" run ${TETRA} -n 2 --backend tiled --no-cache --tuning-file ${CMAKE_CURRENT_BINARY_DIR}/cli_fractional_tuning.json --out ${RUN_OUT}_fractional_tuning)
+expect_exit(bench_empty_class_tuning 0 "warning: tuning file .* is not readable \\(size class \"\" is not n<=N" bench --case tetrahedron:2 --backend tiled --iterations 1 --no-cache --tuning-file ${CMAKE_CURRENT_BINARY_DIR}/cli_empty_class_tuning.json)
+# bench --quality once on the smallest case: the sanitizer stage runs it (it read freed memory once).
+add_test(NAME cli.bench_quality_small
+         COMMAND $<TARGET_FILE:meshparticles> bench --quality --case tetrahedron:2 --backend serial,serial-field -q)
+set_tests_properties(cli.bench_quality_small PROPERTIES LABELS fast)
