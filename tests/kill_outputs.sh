@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # kill_outputs.sh MESHPARTICLES MESHES_DIR WORKDIR [KILLS] [SEED]: kills
 # `run`, `geodesics` and `generate` with SIGKILL at random times (a fixed
-# seed: the same times on every machine of the same speed) while they
+# seed; half of them once writing has begun) while they
 # replace earlier results, and checks after every kill that each output
 # holds the complete old set or the complete new one - never a mix, never
 # half a file - and after one more complete run of each, that no temporary
@@ -17,7 +17,9 @@ work=$(cd "$work" && pwd)
 fail() { echo "FAIL: $*"; exit 1; }
 RANDOM=$seed
 sphere="$meshes/sphere.off" torus="$meshes/torus.off"
-cache="$work/cache" out="$work/out" distances="$work/distances.txt" generated="$work/generated"
+# Each output in a directory of its own: the watch for writing looks there.
+cache="$work/cache" out="$work/runs/out" distances="$work/distances/d.txt" generated="$work/generated"
+mkdir -p "$work/runs" "$work/distances"
 
 run_args() { echo run "$sphere" -n "$1" --iterations 3 --backend serial --cache-dir "$cache" --out "$2" -q; }
 geodesics_args() { echo geodesics "$torus" --source "$1" --out "$2" -q; }
@@ -36,17 +38,31 @@ duration_ms() {
   "$@" > /dev/null 2>&1
   echo $(( ($(date +%s%N) - start) / 1000000 ))
 }
-# Starts COMMAND, kills it after a random part of 1.2 x SPAN ms (or lets it finish).
+# kill_at_random MODE SPAN AREA COMMAND...: starts COMMAND and kills it:
+# MODE any: at a random moment of 1.2 x SPAN ms (or not at all if it has
+# finished); MODE writing: at a random moment of the first 50 ms after a
+# file under AREA appeared or changed (the probe that checks the directory
+# is writable aside) - inside the writing, which is a few percent of a run.
 kill_at_random() {
-  local span=$1
-  shift
-  local delay=$(( RANDOM * RANDOM % (span * 12 / 10 + 1) ))
+  local mode=$1 span=$2 area=$3
+  shift 3
+  local marker="$work/.marker"
+  touch "$marker"
+  sleep 0.01  # file times are coarser than this on some file systems
   "$@" > /dev/null 2>&1 &
   local pid=$!
+  local delay=$(( RANDOM * RANDOM % (span * 12 / 10 + 1) ))
+  if [ "$mode" = writing ]; then
+    while kill -0 "$pid" 2> /dev/null &&
+      [ -z "$(find "$area" -mindepth 1 -newer "$marker" ! -name '.write-probe*' -print -quit)" ]; do :; done
+    delay=$(( RANDOM % 50 ))
+    ((writing_kills++)) || true
+  fi
   sleep "$(printf '%d.%03d' $((delay / 1000)) $((delay % 1000)))"
   kill -9 "$pid" 2> /dev/null && killed=1 || killed=0
   wait "$pid" 2> /dev/null || true
 }
+writing_kills=0
 
 same_files() { for name in particles.particles particles.csv particles.ply mesh_distance.vtk; do cmp -s "$1/$name" "$2/$name" || return 1; done; }
 check_run_set() {
@@ -91,11 +107,12 @@ generate_span=$(duration_ms "$bin" generate --out-dir "$work/timing_generated") 
 
 declare -A count=([run]=0 [geodesics]=0 [cache]=0 [generate]=0) finished=([run]=0 [geodesics]=0 [cache]=0 [generate]=0)
 for ((k = 0; k < kills; ++k)); do
+  mode=$( (( (k / 4) % 2 )) && echo any || echo writing )
   case $((k % 4)) in
-    0) what=run; kill_at_random "$run_span" "$bin" $(run_args $((k % 8 ? 256 : 512)) "$out"); check_run_set ;;
-    1) what=geodesics; kill_at_random "$geodesics_span" "$bin" $(geodesics_args $((k % 8 == 1)) "$distances"); check_distances ;;
-    2) what=cache; rm -f "$cache"/*.dist; kill_at_random "$cache_span" "$bin" geodesics "$torus" --cache-dir "$cache" -q; check_cache ;;
-    3) what=generate; kill_at_random "$generate_span" "$bin" generate --out-dir "$generated"; check_generated ;;
+    0) what=run; kill_at_random "$mode" "$run_span" "$work/runs" "$bin" $(run_args $(( (k / 8) % 2 ? 256 : 512 )) "$out"); check_run_set ;;
+    1) what=geodesics; kill_at_random "$mode" "$geodesics_span" "$work/distances" "$bin" $(geodesics_args $(( (k / 8) % 2 )) "$distances"); check_distances ;;
+    2) what=cache; rm -f "$cache"/*.dist; kill_at_random "$mode" "$cache_span" "$cache" "$bin" geodesics "$torus" --cache-dir "$cache" -q; check_cache ;;
+    3) what=generate; kill_at_random "$mode" "$generate_span" "$generated" "$bin" generate --out-dir "$generated"; check_generated ;;
   esac
   count[$what]=$((count[$what] + 1))
   ((killed)) || finished[$what]=$((finished[$what] + 1))
@@ -111,4 +128,4 @@ summary=""
 for what in run geodesics cache generate; do
   summary+=" $what ${count[$what]} ($((count[$what] - finished[$what])) killed, ${finished[$what]} finished first);"
 done
-echo "ok: $kills kills, seed $seed:$summary every output was the complete old or new set; no temporary left"
+echo "ok: $kills kills ($writing_kills of them once writing had begun), seed $seed:$summary every output was the complete old or new set; no temporary left"
