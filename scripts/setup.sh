@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Shared set-up for scripts/run.sh and scripts/test.sh: install the Debian
 # packages that are missing (silent when all are present), then configure and
-# build Release into build/. Sourced, not run: the callers continue in $ROOT.
+# build Release into build/, showing the build's progress on stderr. Sourced,
+# not run: the callers go on in their own directory, with $ROOT set.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
@@ -32,5 +33,10 @@ fi
 BUILD_TYPE="${BUILD_TYPE:-Release}"
 # Extra -D options from the caller (scripts/test.sh builds with warnings as errors).
 read -r -a cmake_options <<< "${CMAKE_OPTIONS:-}"
+if [ ! -x "$ROOT/build/meshparticles" ]; then
+  echo "setup: building into $ROOT/build (the first build takes about 8 minutes on 2 cores)" >&2
+fi
 cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" "${cmake_options[@]}" >/dev/null
-cmake --build "$ROOT/build" --parallel "$(nproc)" -- --no-print-directory >/dev/null
+# The build's own progress lines ([ 42%] Building ...) on stderr, so a long
+# first build is visibly moving; its errors come through as they are.
+cmake --build "$ROOT/build" --parallel "$(nproc)" -- --no-print-directory | sed -n 's/^\(\[ *[0-9]*%\]\)/setup: \1/p' >&2

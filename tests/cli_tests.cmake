@@ -35,7 +35,7 @@ expect_exit(quads_warn 0 "6 polygons with more than 3 vertices triangulated" inf
 # Arguments and devices.
 expect_exit(no_subcommand 2 "error: " )
 expect_exit(unknown_subcommand 2 "error: " frobnicate)
-expect_exit(unknown_device 2 "no OpenCL device matches 'no-such-device'" devices --device no-such-device)
+expect_exit(unknown_device 2 "--device='no-such-device' matches no device above" devices --device no-such-device)
 # No OpenCL runtime at all: the ICD loader finds no vendor, the message names the package.
 expect_exit_of(no_opencl_runtime 3 "no OpenCL platform found: install an OpenCL runtime .*pocl-opencl-icd"
             env OCL_ICD_VENDORS=${CMAKE_CURRENT_BINARY_DIR}/no-such-vendors-dir $<TARGET_FILE:meshparticles> devices)
@@ -48,16 +48,16 @@ expect_exit(geodesics_dropped_vertex 2 "--source 0 is not a vertex of the surfac
 # meshparticles run: bad arguments exit 2 with one clear line.
 set(TORUS ${PROJECT_SOURCE_DIR}/meshes/torus.off)
 set(TETRA ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off)
-set(RUN_OUT ${CMAKE_CURRENT_BINARY_DIR}/run_out)
-expect_exit(run_zero_particles 2 "--particles: Value 0 not in range" run ${TETRA} -n 0 --out ${RUN_OUT})
+set(RUN_OUT ${CMAKE_CURRENT_BINARY_DIR}/cli_run)
+expect_exit(run_zero_particles 2 "-n/--particles: expected a whole number from 1 to 4294967295, got \"0\"" run ${TETRA} -n 0 --out ${RUN_OUT})
 expect_exit(run_too_many_particles 2 "-n 5 is more particles than the 4 vertices of .*tetrahedron\\.off" run ${TETRA} -n 5 --out ${RUN_OUT})
-expect_exit(run_zero_sigma 2 "--sigma: Value 0 not in range" run ${TETRA} -n 2 --sigma 0 --out ${RUN_OUT})
-expect_exit(run_negative_sigma 2 "--sigma: Value -1 not in range" run ${TETRA} -n 2 --sigma -1 --out ${RUN_OUT})
+expect_exit(run_zero_sigma 2 "--sigma: expected a finite number above 0, got \"0\"" run ${TETRA} -n 2 --sigma 0 --out ${RUN_OUT})
+expect_exit(run_negative_sigma 2 "--sigma: expected a finite number above 0, got \"-1\"" run ${TETRA} -n 2 --sigma -1 --out ${RUN_OUT})
 expect_exit(run_unknown_backend 2 "--backend: cuda not in" run ${TETRA} --backend cuda --out ${RUN_OUT})
 expect_exit(run_unknown_scheme 2 "--scheme: jacobi not in" run ${TETRA} --scheme jacobi --out ${RUN_OUT})
-expect_exit(run_zero_colors 2 "--colors: Value 0 not in range" run ${TETRA} --colors 0 --out ${RUN_OUT})
+expect_exit(run_zero_colors 2 "--colors: expected a whole number from 1 to 4096, got \"0\"" run ${TETRA} --colors 0 --out ${RUN_OUT})
 expect_exit(run_colors_without_colored 2 "--colors applies to --scheme colored and monotone, not synchronous" run ${TETRA} -n 2 --scheme synchronous --colors 4 --out ${RUN_OUT})
-expect_exit(run_sequential_on_device 0 "converged" run ${TETRA} -n 2 --backend tiled --scheme sequential --no-cache --out ${RUN_OUT})
+expect_exit(run_sequential_on_device 0 "converged" run ${TETRA} -n 2 --backend tiled --scheme sequential --no-cache --out ${RUN_OUT}_sequential_on_device)
 expect_exit(run_refused_work_group 2 "--wg 1000000 exceeds the maximum work-group size [0-9]+" run ${TETRA} -n 2 --backend tiled --wg 1000000 --no-cache --out ${RUN_OUT})
 expect_exit(run_refused_tile 2 "needs [0-9]+ bytes of local memory. .* has [0-9]+" run ${TETRA} -n 2 --backend tiled --tile 16000000 --no-cache --out ${RUN_OUT})
 expect_exit(run_tile_on_naive 2 "--tile applies to the tiled backend only" run ${TETRA} -n 2 --backend naive --tile 8 --no-cache --out ${RUN_OUT})
@@ -66,12 +66,12 @@ expect_exit(run_tile_on_field 2 "--tile applies to the tiled backend only" run $
 expect_exit(run_weights_on_tiled 2 "--weights and --rebuild-every apply to the serial-field and field backends, not tiled" run ${TETRA} -n 2 --backend tiled --weights half --no-cache --out ${RUN_OUT})
 expect_exit(run_rebuild_on_serial 2 "--weights and --rebuild-every apply to the serial-field and field backends, not serial" run ${TETRA} -n 2 --backend serial --rebuild-every 5 --no-cache --out ${RUN_OUT})
 expect_exit(run_unknown_weights 2 "--weights: double not in" run ${TETRA} -n 2 --backend field --weights double --out ${RUN_OUT})
-expect_exit(run_field_half 0 "converged" run ${TETRA} -n 2 --backend field --weights half --rebuild-every 3 --no-cache --out ${RUN_OUT})
+expect_exit(run_field_half 0 "converged" run ${TETRA} -n 2 --backend field --weights half --rebuild-every 3 --no-cache --out ${RUN_OUT}_field_half)
 expect_exit(run_bad_start_vertex 2 "--start-vertex 9 is not a vertex of the surface" run ${TETRA} -n 2 --init v0 --start-vertex 9 --out ${RUN_OUT})
-expect_exit(run_unwritable_out 2 "cannot create output directory /dev/null/out" run ${TETRA} -n 2 --out /dev/null/out)
+expect_exit(run_unwritable_out 2 "cannot create the parent of output directory /dev/null: Not a directory" run ${TETRA} -n 2 --out /dev/null/out)
 # Whole runs on the tetrahedron: every backend, files written, summary printed.
 foreach(backend serial serial-field naive tiled field)
-  expect_exit(run_${backend} 0 "particles: [0-9]+ done in .*(converged|iteration limit reached)" run ${TETRA} -n 2 --backend ${backend} --no-cache --out ${RUN_OUT}/${backend})
+  expect_exit(run_${backend} 0 "particles: [0-9]+ done in .*(converged|iteration limit reached)" run ${TETRA} -n 2 --backend ${backend} --no-cache --out ${RUN_OUT}_${backend})
 endforeach()
 # A kernel that does not build: exit 2, the build log follows the message.
 # expect_kernel_build_failure(NAME BACKEND FILE TEXT REGEX): `run --backend
@@ -89,7 +89,7 @@ expect_kernel_build_failure(run_kernel_build_failure naive naive_update.cl
 expect_kernel_build_failure(run_field_kernel_build_failure field field.h
   "#error the field header is broken\n" "OpenCL kernels failed to build \\(field_weights\\.cl.*build log:")
 # Performance commands: bad arguments, then the tuning loop end to end.
-expect_exit(sweep_zero_iterations 2 "--iterations must be at least 1" sweep ${TORUS} -n 8 --iterations 0 --no-cache)
+expect_exit(sweep_zero_iterations 2 "--iterations: expected a whole number from 1 to 100000, got \"0\"" sweep ${TORUS} -n 8 --iterations 0 --no-cache)
 expect_exit(sweep_tile_without_tiled 2 "--tile applies to the tiled kernel" sweep ${TORUS} --kernel naive --tile 8)
 expect_exit(sweep_weights_without_field 2 "--weights applies to the field kernel, which is not swept" sweep ${TORUS} --kernel naive --weights half)
 expect_exit(sweep_unknown_kernel 2 "--kernel: cuda not in" sweep ${TORUS} --kernel naive,cuda)
@@ -100,7 +100,7 @@ expect_exit(bench_colors_without_colored 2 "--colors applies to --scheme colored
 expect_exit(bench_bad_case 2 "--case 'torus': expected MESH:N" bench --case torus)
 expect_exit(bench_unknown_mesh 2 "no built-in mesh named 'cube'" bench --case cube:8 --meshes-dir ${PROJECT_SOURCE_DIR}/meshes)
 expect_exit(bench_too_many_particles 2 "--case torus:100000 is more particles than its 1500 vertices" bench --case torus:100000 --meshes-dir ${PROJECT_SOURCE_DIR}/meshes)
-expect_exit(bench_zero_iterations 2 "--iterations must be at least 1" bench --case torus:8 --iterations 0)
+expect_exit(bench_zero_iterations 2 "--iterations: expected a whole number from 1 to 100000, got \"0\"" bench --case torus:8 --iterations 0)
 add_test(NAME cli.performance_commands
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/performance_commands.sh $<TARGET_FILE:meshparticles> ${TORUS}
                  ${CMAKE_CURRENT_BINARY_DIR}/performance_commands ${PROJECT_SOURCE_DIR}/scripts/plot_sweep.py)
@@ -168,3 +168,55 @@ expect_exit(fifo_refused 2 "fifo\\.off: not a regular file" info ${FIFO})
 set_tests_properties(cli.device_refused cli.fifo_refused PROPERTIES TIMEOUT 10)
 # Found by scripts/fuzz.sh: an element name of unprintable bytes, which went into the message as it was.
 expect_exit(ply_unprintable_name 2 "unprintable_element_name\\.ply: line 4: the count of element 've[?]+[.][.][.]', '[?]', is not a count" info ${DATA}/unprintable_element_name.ply)
+
+# Numbers parsed strictly, with the option and its range named.
+expect_exit(number_negative 2 "--iterations: expected a whole number from 0 to 1000000, got \"-1\"" run ${TETRA} --iterations -1 --out ${RUN_OUT})
+expect_exit(number_timed_negative 2 "--iterations: expected a whole number from 1 to 100000, got \"-1\"" bench --iterations -1)
+expect_exit(number_sweep_negative 2 "--iterations: expected a whole number from 1 to 100000, got \"-1\"" sweep ${TETRA} --iterations -1)
+expect_exit(number_leading_zero_is_decimal 2 "-n 10 is more particles than the 4 vertices" run ${TETRA} -n 010 --out ${RUN_OUT})
+expect_exit(number_hex 2 "-n/--particles: expected a whole number from 1 to 4294967295, got \"0x3\"" run ${TETRA} -n 0x3 --out ${RUN_OUT})
+expect_exit(number_huge 2 "-n/--particles: expected a whole number from 1 to 4294967295, got \"99999999999999999999\"" run ${TETRA} -n 99999999999999999999 --out ${RUN_OUT})
+expect_exit(number_words 2 "-n/--particles: expected a whole number from 1 to 4294967295, got \"abc\"" run ${TETRA} -n abc --out ${RUN_OUT})
+expect_exit(number_colors_cap 2 "--colors: expected a whole number from 1 to 4096, got \"4294967295\"" run ${TETRA} --colors 4294967295 --out ${RUN_OUT})
+expect_exit(number_wg_fraction 2 "--wg: expected a whole number from 1 to 1048576, got \"32.5\"" sweep ${TETRA} --wg 16,32.5)
+expect_exit(number_case 2 "--case torus:-1: expected a whole number from 1 to 4294967295, got \"-1\"" bench --case torus:-1)
+expect_exit(number_source 2 "--source: expected a whole number from 0 to 4294967295, got \"-1\"" geodesics ${TETRA} --source -1)
+expect_exit(number_threads 2 "--threads: expected a whole number from 0 to 1024, got \"1e3\"" geodesics ${TETRA} --threads 1e3)
+expect_exit(sigma_nan 2 "--sigma: expected a finite number above 0, got \"nan\"" run ${TETRA} --sigma nan --out ${RUN_OUT})
+expect_exit(sigma_inf 2 "--sigma: expected a finite number above 0, got \"inf\"" quality ${TORUS} ${PARTICLES_DATA}/blank_lines.particles --sigma inf)
+expect_exit(sigma_overflows 2 "--sigma 1e-300 is too small to compute with" run ${TETRA} -n 2 --backend serial --sigma 1e-300 --no-cache --out ${RUN_OUT})
+expect_exit(sigma_tiny_warns 0 "warning: --sigma 1e-05 with d_hex .*particles will not feel each other" run ${TETRA} -n 2 --backend serial --sigma 1e-5 --no-cache --out ${RUN_OUT}_sigma_tiny)
+expect_exit(sigma_huge_warns 0 "warning: --sigma 1e\\+300 with d_hex .*the energy is flat" run ${TETRA} -n 2 --backend serial --sigma 1e300 --no-cache --out ${RUN_OUT}_sigma_huge)
+# The environment: named when it is the cause; `devices` always lists.
+expect_exit_of(devices_bogus_variable 0 "warning: \\$MESHPARTICLES_DEVICE='bogus' matches no device above"
+               env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> devices)
+expect_exit_of(run_bogus_variable 2 "no OpenCL device matches \\$MESHPARTICLES_DEVICE='bogus'"
+               env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --out ${RUN_OUT})
+expect_exit_of(bad_pocl_cache 3 "\\$POCL_CACHE_DIR='/proc/no-such-dir' is not a directory PoCL can write"
+               env POCL_CACHE_DIR=/proc/no-such-dir $<TARGET_FILE:meshparticles> devices)
+expect_exit_of(no_cache_ignores_tmpdir 0 "converged"
+               env -u HOME -u XDG_CACHE_HOME -u XDG_CONFIG_HOME TMPDIR=/nonexistent
+               $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend serial --no-cache --out ${RUN_OUT}_tmpdir)
+expect_exit_of(cache_without_tmpdir_warns 0 "warning: no cache directory: .*\\$TMPDIR='/nonexistent' is not a directory"
+               env -u HOME -u XDG_CACHE_HOME TMPDIR=/nonexistent $<TARGET_FILE:meshparticles> geodesics ${TETRA})
+# Destinations checked before the work, with the system's reason.
+expect_exit(out_is_directory 2 "${CMAKE_CURRENT_BINARY_DIR}: cannot write: it is a directory" geodesics ${TETRA} --source 0 --out ${CMAKE_CURRENT_BINARY_DIR})
+expect_exit(sweep_csv_in_proc 2 "/proc/x: cannot write to /proc: " sweep ${TETRA} -n 2 --csv /proc/x)
+expect_exit(bench_csv_in_proc 2 "/proc/x: cannot write to /proc: " bench --case tetrahedron:2 --backend serial --csv /proc/x)
+expect_exit(sweep_save_unwritable 2 "cannot create tuning file directory /proc/x: " sweep ${TETRA} -n 2 --save --tuning-file /proc/x/tuning.json)
+expect_exit(cache_dir_unwritable 0 "warning: cannot create cache directory /proc/x: .* not cached" geodesics ${TETRA} --cache-dir /proc/x)
+# A run never replaces a directory holding files it did not write.
+file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/cli_foreign_out)
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/cli_foreign_out/notes.txt "the user's own\n")
+expect_exit(run_foreign_out 2 "output directory .*cli_foreign_out holds notes\\.txt, which a run did not write" run ${TETRA} -n 2 --out ${CMAKE_CURRENT_BINARY_DIR}/cli_foreign_out)
+# A tuning file with a fractional size or an empty class is named in a warning, in run and in bench.
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/cli_fractional_tuning.json
+     "{\"version\": 1, \"entries\": [{\"device\": \"d\", \"kernel\": \"tiled\", \"size_class\": \"n<=64\", \"wg\": 32.7, \"tile\": 8}]}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/cli_empty_class_tuning.json
+     "{\"version\": 1, \"entries\": [{\"device\": \"d\", \"kernel\": \"tiled\", \"size_class\": \"\", \"wg\": 32, \"tile\": 8}]}")
+expect_exit(run_fractional_tuning 0 "warning: tuning file .* is not readable \\(wg 32.7 is not a whole number above 0\\)" run ${TETRA} -n 2 --backend tiled --no-cache --tuning-file ${CMAKE_CURRENT_BINARY_DIR}/cli_fractional_tuning.json --out ${RUN_OUT}_fractional_tuning)
+expect_exit(bench_empty_class_tuning 0 "warning: tuning file .* is not readable \\(size class \"\" is not n<=N" bench --case tetrahedron:2 --backend tiled --iterations 1 --no-cache --tuning-file ${CMAKE_CURRENT_BINARY_DIR}/cli_empty_class_tuning.json)
+# bench --quality once on the smallest case: the sanitizer stage runs it (it read freed memory once).
+add_test(NAME cli.bench_quality_small
+         COMMAND $<TARGET_FILE:meshparticles> bench --quality --case tetrahedron:2 --backend serial,serial-field -q)
+set_tests_properties(cli.bench_quality_small PROPERTIES LABELS fast)

@@ -4,6 +4,9 @@
 
 #include <cstring>
 #include <fstream>
+#include <functional>
+
+#include <unistd.h>
 
 #include "mesh/mesh_generator.hpp"
 
@@ -75,6 +78,45 @@ TEST_F(DistanceCacheTest, AnotherMeshOrSolverDoesNotMatch) {
   EXPECT_FALSE(load_cached_table(source.cache_file, other_solver, problem));
   EXPECT_NE(other_solver.file_in(directory_), source.cache_file);
   EXPECT_NE(mesh_content_hash(mesh_), mesh_content_hash(generate_mesh("tetrahedron")));
+}
+
+// A checksum detects damage, not who wrote the file: a table planted by
+// someone else, with a valid checksum, must not be read.
+TEST_F(DistanceCacheTest, TablesOthersCouldHaveWrittenAreRecomputed) {
+  TableSource first;
+  const DistanceTable good = load_or_compute_distances(mesh_, request_, first);
+  EXPECT_EQ(std::filesystem::status(directory_).permissions() & std::filesystem::perms::all,
+            std::filesystem::perms::owner_all)
+      << "created 0700";
+  const auto planted = [&](const std::function<void()>& plant, const std::string& expected_problem) {
+    SCOPED_TRACE(expected_problem);
+    std::filesystem::remove(first.cache_file);
+    std::filesystem::copy_file(first.cache_file.string() + ".good", first.cache_file);
+    plant();
+    EXPECT_NE(cache_file_problem(first.cache_file).value_or("").find(expected_problem), std::string::npos);
+    TableSource again;
+    const DistanceTable table = load_or_compute_distances(mesh_, request_, again);
+    EXPECT_FALSE(again.from_cache);
+    EXPECT_EQ(0, std::memcmp(good.values().data(), table.values().data(), good.byte_size()));
+    EXPECT_FALSE(cache_file_problem(first.cache_file)) << "replaced by our own";
+  };
+  std::filesystem::copy_file(first.cache_file, first.cache_file.string() + ".good");
+  planted([&] { std::filesystem::permissions(first.cache_file, std::filesystem::perms::others_write,
+                                             std::filesystem::perm_options::add); },
+          "writable by others");
+  if (::geteuid() == 0) {  // only root can give a file away
+    planted([&] { ASSERT_EQ(::chown(first.cache_file.c_str(), 65534, 65534), 0); }, "owned by user 65534");
+  }
+  std::filesystem::remove(first.cache_file.string() + ".good");
+
+  // A directory others can write is not used at all.
+  std::filesystem::permissions(directory_, std::filesystem::perms::all);
+  EXPECT_NE(cache_directory_problem(directory_).value_or("").find("can be written by others (mode 0777)"),
+            std::string::npos);
+  TableSource shared;
+  load_or_compute_distances(mesh_, request_, shared);
+  EXPECT_FALSE(shared.from_cache);
+  EXPECT_TRUE(shared.cache_file.empty()) << "nothing read or written there";
 }
 
 }  // namespace

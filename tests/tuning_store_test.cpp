@@ -2,6 +2,7 @@
 // keeps what was there, and files that are not tuning files.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -89,7 +90,14 @@ TEST_F(TuningStoreTest, BadFilesNameTheFile) {
         "{\"version\": 1, \"entries\": [{\"device\": \"gpu\", \"kernel\": \"naive\", \"size_class\": \"big\", "
         "\"wg\": 8}]}",
         "{\"version\": 1, \"entries\": [{\"device\": \"gpu\", \"kernel\": \"tiled\", \"size_class\": \"n<=64\", "
-        "\"wg\": 0, \"tile\": 8}]}"}) {
+        "\"wg\": 0, \"tile\": 8}]}",
+        // A fraction is not truncated, an empty or odd class is named.
+        "{\"version\": 1, \"entries\": [{\"device\": \"gpu\", \"kernel\": \"naive\", \"size_class\": \"n<=64\", "
+        "\"wg\": 32.7}]}",
+        "{\"version\": 1, \"entries\": [{\"device\": \"gpu\", \"kernel\": \"naive\", \"size_class\": \"\", "
+        "\"wg\": 32}]}",
+        "{\"version\": 1, \"entries\": [{\"device\": \"gpu\", \"kernel\": \"naive\", \"size_class\": \"n<=48\", "
+        "\"wg\": 32}]}"}) {
     SCOPED_TRACE(text);
     write(text);
     try {
@@ -99,6 +107,21 @@ TEST_F(TuningStoreTest, BadFilesNameTheFile) {
       EXPECT_NE(std::string(error.what()).find(file.string()), std::string::npos) << error.what();
     }
   }
+}
+
+TEST_F(TuningStoreTest, ManyEntriesLoadInLinearTime) {
+  // put() once compared every entry with every other: 200,000 took minutes.
+  TuningStore store;
+  for (std::size_t k = 0; k < 200000; ++k) store.put(entry("device " + std::to_string(k), "naive", 64, 8, 0));
+  store.put(entry("device 7", "naive", 64, 16, 0));  // replaces, does not add
+  store.save(file);
+  const auto started = std::chrono::steady_clock::now();
+  const TuningStore loaded = TuningStore::load(file, kKernels);
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(10));
+  EXPECT_EQ(loaded.entries().size(), 200000u);
+  EXPECT_EQ(loaded.find("device 7", "naive", 64)->work_group_size, 16u);
+  EXPECT_TRUE(loaded.file_found());
+  EXPECT_FALSE(TuningStore::load(directory / "absent.json", kKernels).file_found());
 }
 
 }  // namespace

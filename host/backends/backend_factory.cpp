@@ -15,16 +15,18 @@ namespace {
 // `checked` what was used and why.
 void apply_tuned_sizes(const std::filesystem::path& file, const DeviceDescription& device, std::size_t particles,
                        UpdateKernel& kernel, CheckedBackend& checked) {
-  std::optional<TunedSizes> tuned;
+  TuningStore store;
   try {
-    tuned = TuningStore::load(file, device_backend_names()).find(device.name, kernel.name(), particles);
+    store = TuningStore::load(file, device_backend_names());
   } catch (const UserError& error) {
     checked.sizes_note = error.what();
     checked.tuning_refused = true;
     return;
   }
+  const std::optional<TunedSizes> tuned = store.find(device.name, kernel.name(), particles);
   if (!tuned) {
-    checked.sizes_note = "no entry for this device and kernel in " + file.string();
+    checked.sizes_note = store.file_found() ? "no entry for this device and kernel in " + file.string()
+                                            : "no tuning file at " + file.string();
     return;
   }
   if (kernel.spec().takes_tile != (tuned->tile_size > 0)) {

@@ -2,9 +2,11 @@
 // our rows beside the paper's figures (measurement/bench.hpp); with
 // --quality, how even each placement is (measurement/quality_bench.hpp).
 #include <iostream>
+#include <set>
 
 #include "backends/backend_table.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
 #include "measurement/bench.hpp"
@@ -37,15 +39,10 @@ std::vector<CaseRequest> requested_cases(const BenchOptions& options) {
   std::vector<CaseRequest> cases;
   for (const std::string& text : options.cases) {
     const auto colon = text.find(':');
-    std::size_t particles = 0;
-    try {
-      std::size_t used = 0;
-      if (colon != std::string::npos) particles = std::stoull(text.substr(colon + 1), &used);
-      if (used == 0 || colon + 1 + used != text.size()) particles = 0;
-    } catch (const std::exception&) {
-      particles = 0;
+    if (colon == 0 || colon == std::string::npos) {
+      throw UserError("--case '" + text + "': expected MESH:N, e.g. sphere:1024");
     }
-    if (colon == 0 || particles == 0) throw UserError("--case '" + text + "': expected MESH:N, e.g. sphere:1024");
+    const std::size_t particles = parse_whole_number(text.substr(colon + 1), "--case " + text, kParticleRange);
     cases.push_back({text.substr(0, colon), particles});
   }
   return cases;
@@ -55,13 +52,24 @@ void write_json(const std::string& file, const nlohmann::json& document) {
   if (!file.empty()) write_file_atomically(file, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
 }
 
+// As `run` does: an unreadable or unusable tuning file is named, once.
+void warn_about_refused_tuning(const BenchPlan& plan, bool quiet) {
+  std::set<std::string> notes;
+  for (const PlannedCase& planned : plan.cases) {
+    for (const CheckedBackend& backend : planned.backends) {
+      if (backend.tuning_refused) notes.insert(backend.sizes_note);
+    }
+  }
+  if (quiet) return;
+  for (const std::string& note : notes) std::cerr << "meshparticles: warning: " << note << "; using the built-in sizes\n";
+}
+
 void run_bench_command(BenchOptions options, bool colors_given) {
   BenchSettings& settings = options.settings;
   settings.device_scheme = parse_scheme(options.scheme);
   if (colors_given && !uses_colors(settings.device_scheme)) {
     throw UserError("--colors applies to --scheme colored and monotone, not " + options.scheme);
   }
-  if (settings.iterations == 0) throw UserError("--iterations must be at least 1");
   if (options.quality && !options.csv.empty()) throw UserError("--csv applies to the timing tables (with --quality, use --json)");
   for (const auto& file : {options.csv, options.json}) {
     if (!file.empty()) check_writable(file);
@@ -75,6 +83,7 @@ void run_bench_command(BenchOptions options, bool colors_given) {
   request.geodesics = options.table.request(GeodesicMethod::fast_marching);
   request.quiet = options.table.quiet;
   const BenchPlan plan = plan_bench(request);
+  warn_about_refused_tuning(plan, options.table.quiet);
 
   if (options.quality) {
     const std::vector<QualityCase> cases = run_quality_bench(plan, kDefaultMaxIterations);
@@ -104,14 +113,12 @@ void add_bench_command(CLI::App& app) {
       ->allow_extra_args(false)
       ->check(CLI::IsMember(backend_names()))
       ->capture_default_str();
-  bench->add_option("--iterations", options->settings.iterations, "Timed iterations per row (the paper: 1000)")
-      ->capture_default_str();
+  add_whole_number_option(*bench, "--iterations", options->settings.iterations, kTimedIterationRange,
+                          "Timed iterations per row (the paper: 1000)");
   bench->add_option("--scheme", options->scheme, "Scheme of the device rows: monotone, colored or synchronous")
       ->check(CLI::IsMember({"synchronous", "colored", "monotone"}))
       ->capture_default_str();
-  bench->add_option("--colors", options->settings.colors, "Groups of the colored scheme")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_whole_number_option(*bench, "--colors", options->settings.colors, kColorRange, "Groups of the colored scheme");
   add_device_option(*bench, options->device);
   bench->add_option("--meshes-dir", options->meshes_dir, "Where the committed meshes are")->capture_default_str();
   bench->add_option("--csv", options->csv, "Also write the rows as CSV to this file");

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "common/user_error.hpp"
+#include "common/atomic_file.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
 
@@ -18,9 +18,8 @@ struct GenerateOptions {
 
 void run_generate(const GenerateOptions& options) {
   const std::vector<std::string>& names = options.names.empty() ? generated_mesh_names() : options.names;
-  std::error_code error;
-  std::filesystem::create_directories(options.out_dir, error);
-  if (error) throw UserError(options.out_dir + ": cannot create directory: " + error.message());
+  create_directory_for(options.out_dir, "output directory");
+  check_writable_directory(options.out_dir);
   for (const std::string& name : names) {
     const SurfaceMesh mesh = generate_mesh(name);
     const auto file = std::filesystem::path(options.out_dir) / (name + ".off");

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
@@ -72,7 +73,8 @@ void add_geodesics_command(CLI::App& app) {
   auto options = std::make_shared<GeodesicsOptions>();
   CLI::App* geodesics = app.add_subcommand("geodesics", "All-pairs geodesic distances (cached), or one source's");
   geodesics->add_option("mesh", options->mesh, "Mesh file")->required();
-  auto* source = geodesics->add_option("--source", options->source, "Write this vertex's distances (input vertex id)");
+  auto* source = add_whole_number_option(*geodesics, "--source", options->source, kVertexIdRange,
+                                         "Write this vertex's distances (input vertex id)");
   geodesics->add_option("--out", options->out, "File for --source's distances (default: stdout)")->needs(source);
   geodesics->add_option("--geodesic", options->method, "Solver: fmm (fast marching) or dijkstra (edge graph)")
       ->check(CLI::IsMember({"fmm", "dijkstra"}))

@@ -1,4 +1,8 @@
+#include <iostream>
+
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
+#include "common/user_error.hpp"
 
 namespace meshparticles {
 
@@ -7,15 +11,24 @@ GeodesicsRequest DistanceTableOptions::request(GeodesicMethod method) const {
   request.method = method;
   request.threads = threads;
   request.quiet = quiet;
-  if (!no_cache) request.cache_directory = cache_dir.empty() ? default_cache_directory() : std::filesystem::path(cache_dir);
+  if (no_cache) return request;
+  if (!cache_dir.empty()) {
+    request.cache_directory = std::filesystem::path(cache_dir);
+    return request;
+  }
+  try {
+    request.cache_directory = default_cache_directory();
+  } catch (const UserError& problem) {  // the cache only saves time: go on without it
+    if (!quiet) std::cerr << "meshparticles: warning: " << problem.what() << "; not cached\n";
+  }
   return request;
 }
 
 void add_distance_table_options(CLI::App& command, DistanceTableOptions& options) {
   command.add_option("--cache-dir", options.cache_dir, "Distance cache directory (default: $XDG_CACHE_HOME/meshparticles)");
   command.add_flag("--no-cache", options.no_cache, "Neither read nor write the distance cache");
-  command.add_option("--threads", options.threads, "Threads for all-pairs distances (0: all cores)")
-      ->check(CLI::Range(0u, 1024u));
+  add_whole_number_option(command, "--threads", options.threads, kThreadRange,
+                          "Threads for all-pairs distances (0: all cores)");
   command.add_flag("-q,--quiet", options.quiet, "No progress or warnings on stderr");
 }
 

@@ -5,9 +5,11 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "common/user_error.hpp"
 #include "pipeline/distances.hpp"
+#include "pipeline/sigma_check.hpp"
 #include "quality/particle_sets.hpp"
 #include "reports/quality_report.hpp"
 
@@ -30,6 +32,7 @@ void run_quality(const QualityOptions& options) {
   // Read before the distance table, so a bad file fails in a second.
   std::vector<std::vector<Vec3>> points;
   for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
+  if (options.sigma) check_sigma_computable({parse_potential(options.potential), *options.sigma});
   const ObtainedDistances obtained = obtain_distances(mesh, options.table.request(parse_method(options.geodesic)));
   const DistanceStore& distances = *obtained.store;
   const Potential potential = parse_potential(options.potential);
@@ -68,8 +71,8 @@ void run_quality(const QualityOptions& options) {
 }
 
 void add_shared_options(CLI::App& command, QualityOptions& options) {
-  command.add_option("--sigma", options.sigma, "Sigma of the energy (default: the run's rule for each set's n)")
-      ->check(CLI::PositiveNumber);
+  add_positive_number_option(command, "--sigma", options.sigma,
+                             "Sigma of the energy (default: the run's rule for each set's n)");
   command.add_option("--potential", options.potential, "exp or gauss")
       ->check(CLI::IsMember({"exp", "gauss"}))
       ->capture_default_str();

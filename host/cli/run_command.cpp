@@ -6,6 +6,7 @@
 
 #include "backends/backend_table.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "reports/quality_report.hpp"
@@ -75,12 +76,10 @@ void add_run_command(CLI::App& app) {
   RunRequest& request = options->request;
   CLI::App* run = app.add_subcommand("run", "Spread particles over a mesh (default: the sphere, 1024 particles)");
   run->add_option("mesh", options->mesh, "Mesh file (default: meshes/sphere.off, else the built-in sphere)");
-  run->add_option("-n,--particles", request.particles, "Number of particles, 1..V")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  run->add_option("--iterations", request.max_iterations,
-                  "Stop after this many iterations (or when none moves); 0 writes the start and its quality")
-      ->capture_default_str();
+  add_whole_number_option(*run, "-n,--particles", request.particles, kParticleRange,
+                          "Number of particles, at most the mesh's vertices");
+  add_whole_number_option(*run, "--iterations", request.max_iterations, kRunIterationRange,
+                          "Stop after this many iterations (or when none moves); 0 writes the start and its quality");
   std::string backends_help;
   for (const BackendDescriptor* backend : backend_table()) {
     backends_help += (backends_help.empty() ? "" : "; ") + backend->name + ": " + backend->summary;
@@ -92,16 +91,16 @@ void add_run_command(CLI::App& app) {
                   "sequential, synchronous, colored or monotone (colored, with every iteration lowering the energy; "
                   "default: sequential on serial and serial-field, monotone on the OpenCL backends)")
       ->check(CLI::IsMember({"sequential", "synchronous", "colored", "monotone"}));
-  run->add_option("--colors", request.colors,
-                  "Groups of the colored and monotone schemes (default " + std::to_string(kDefaultColors) + ")")
-      ->check(CLI::PositiveNumber);
+  add_whole_number_option(*run, "--colors", request.colors, kColorRange,
+                          "Groups of the colored and monotone schemes (default " + std::to_string(kDefaultColors) + ")");
   run->add_option("--init", options->init, "Start: v0 (all on one vertex), random, farthest (farthest-point sampling)")
       ->check(CLI::IsMember({"v0", "random", "farthest"}))
       ->capture_default_str();
-  run->add_option("--start-vertex", request.start_vertex, "Input vertex id for v0, or the first farthest sample");
-  run->add_option("--seed", request.seed, "Seed of random and farthest starts")->capture_default_str();
-  run->add_option("--sigma", request.sigma, "Sigma in mesh units (default from the particle spacing, see docs)")
-      ->check(CLI::PositiveNumber);
+  add_whole_number_option(*run, "--start-vertex", request.start_vertex, kVertexIdRange,
+                          "Input vertex id for v0, or the first farthest sample");
+  add_whole_number_option(*run, "--seed", request.seed, kSeedRange, "Seed of random and farthest starts");
+  add_positive_number_option(*run, "--sigma", request.sigma,
+                             "Sigma in mesh units (default from the particle spacing, see docs)");
   run->add_option("--potential", options->potential, "exp: exp(-d/(2 sigma^2)); gauss: exp(-d^2/(2 sigma^2))")
       ->check(CLI::IsMember({"exp", "gauss"}))
       ->capture_default_str();
@@ -109,16 +108,16 @@ void add_run_command(CLI::App& app) {
       ->check(CLI::IsMember({"fmm", "dijkstra"}))
       ->capture_default_str();
   add_device_option(*run, request.backend.device);
-  run->add_option("--wg", request.backend.work_group_size, "Work-group size of the kernel")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
-  run->add_option("--tile", request.backend.tile_size, "Tile size (particles staged in local memory; tiled only)")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24));
+  add_whole_number_option(*run, "--wg", request.backend.work_group_size, kWorkGroupRange,
+                          "Work-group size of the kernel");
+  add_whole_number_option(*run, "--tile", request.backend.tile_size, kTileRange,
+                          "Tile size (particles staged in local memory; tiled only)");
   run->add_option("--weights", options->weights,
                   "Weight table of the field backends: float (float32, default) or half (half the bytes)")
       ->check(CLI::IsMember({"float", "half"}));
-  run->add_option("--rebuild-every", request.backend.rebuild_every,
-                  "Field backends: rebuild the field from scratch every N iterations (default 0: never; it is "
-                  "exact and does not drift)");
+  add_whole_number_option(*run, "--rebuild-every", request.backend.rebuild_every, kRebuildRange,
+                          "Field backends: rebuild the field from scratch every N iterations (default 0: never; it "
+                          "is exact and does not drift)");
   run->add_option("--out", options->out, "Output directory")->capture_default_str();
   run->add_option("--tuning-file", options->tuning_file,
                   "Sizes saved by `sweep --save`, used when --wg and --tile are absent "

@@ -6,6 +6,7 @@
 
 #include "backends/backend_table.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
 #include "measurement/sweep.hpp"
@@ -73,8 +74,18 @@ void run_sweep_command(SweepOptions options, bool tiles_given, bool weights_give
   for (const auto& file : {options.csv, options.json}) {
     if (!file.empty()) check_writable(file);
   }
-  const std::filesystem::path tuning_file = tuning_file_or_default(options.tuning_file);
-  const TuningStore store = options.save ? TuningStore::load(tuning_file, device_backend_names()) : TuningStore();
+  std::filesystem::path tuning_file;
+  TuningStore store;
+  if (options.save) {
+    tuning_file = tuning_file_or_default(options.tuning_file).value_or("");
+    if (tuning_file.empty()) {
+      throw UserError("--save: neither $XDG_CONFIG_HOME nor $HOME is set, so there is no default tuning file "
+                      "(give --tuning-file)");
+    }
+    create_directory_for(tuning_file.parent_path(), "tuning file directory");
+    check_writable(tuning_file);
+    store = TuningStore::load(tuning_file, device_backend_names());  // refuses to overwrite a file it cannot read
+  }
 
   const SweepOutcome sweep = run_sweep(mesh, plan);
   std::cout << sweep_table(sweep);
@@ -102,43 +113,33 @@ void add_sweep_command(CLI::App& app) {
   CLI::App* sweep = app.add_subcommand(
       "sweep", "Time the update kernels over work-group and tile sizes, each verified against the serial reference");
   sweep->add_option("mesh", options->mesh, "Mesh file (default: meshes/sphere.off, else the built-in sphere)");
-  sweep->add_option("-n,--particles", request.particles, "Number of particles, 1..V")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_whole_number_option(*sweep, "-n,--particles", request.particles, kParticleRange,
+                          "Number of particles, at most the mesh's vertices");
   sweep->add_option("--kernel", request.kernels, "Kernels to sweep, comma-separated")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->check(CLI::IsMember(device_backend_names()))
       ->capture_default_str();
-  sweep->add_option("--wg", request.work_group_sizes, "Work-group sizes, comma-separated")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20))
-      ->capture_default_str();
-  sweep->add_option("--tile", options->tile_sizes, "Tile sizes of the tiled kernel, comma-separated")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
-      ->capture_default_str();
+  add_whole_number_list_option(*sweep, "--wg", request.work_group_sizes, kWorkGroupRange,
+                               "Work-group sizes, comma-separated");
+  add_whole_number_list_option(*sweep, "--tile", options->tile_sizes, kTileRange,
+                               "Tile sizes of the tiled kernel, comma-separated");
   sweep->add_option("--weights", options->weights,
                     "Weight table of the field kernel: float or half (half is held to 1e-3 of the reference, "
                     "not 1e-5)")
       ->check(CLI::IsMember({"float", "half"}))
       ->capture_default_str();
-  sweep->add_option("--iterations", request.settings.repetitions,
-                    "Timed iterations per configuration (after 2 warm-ups)")
-      ->capture_default_str();
+  add_whole_number_option(*sweep, "--iterations", request.settings.repetitions, kTimedIterationRange,
+                          "Timed iterations per configuration (after 2 warm-ups)");
   sweep->add_option("--scheme", options->scheme, "synchronous or colored: the launches one iteration makes")
       ->check(CLI::IsMember({"synchronous", "colored"}))
       ->capture_default_str();
   request.settings.colors = kDefaultColors;
-  sweep->add_option("--colors", request.settings.colors, "Groups of the colored scheme")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_whole_number_option(*sweep, "--colors", request.settings.colors, kColorRange, "Groups of the colored scheme");
   sweep->add_option("--init", options->init, "Positions the kernels are timed and verified on")
       ->check(CLI::IsMember({"v0", "random", "farthest"}))
       ->capture_default_str();
-  sweep->add_option("--seed", request.seed, "Seed of random and farthest starts")->capture_default_str();
+  add_whole_number_option(*sweep, "--seed", request.seed, kSeedRange, "Seed of random and farthest starts");
   sweep->add_option("--potential", options->potential, "exp or gauss")
       ->check(CLI::IsMember({"exp", "gauss"}))
       ->capture_default_str();

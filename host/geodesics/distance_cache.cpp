@@ -1,12 +1,18 @@
 #include "geodesics/distance_cache.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <array>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
 
 #include "common/atomic_file.hpp"
+#include "common/temporary_names.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/memory_guard.hpp"
 
@@ -45,6 +51,26 @@ std::uint64_t checksum(const void* data, std::size_t bytes) {
   return hash;
 }
 
+std::string format_mode(mode_t mode) {
+  char text[8];
+  std::snprintf(text, sizeof text, "%04o", unsigned(mode & 07777));
+  return text;
+}
+
+// Creates the last component 0700 (the parents as usual): the cache is
+// this user's alone.
+void create_private_directory(const std::filesystem::path& directory) {
+  std::error_code error;
+  if (directory.has_parent_path()) std::filesystem::create_directories(directory.parent_path(), error);
+  if (::mkdir(directory.c_str(), 0700) != 0 && errno != EEXIST) {
+    throw UserError("cannot create cache directory " + directory.string() + ": " + std::strerror(errno));
+  }
+}
+
+void warn(const GeodesicsRequest& request, const std::string& text) {
+  if (!request.quiet) std::cerr << "meshparticles: warning: " << text << "\n";
+}
+
 }  // namespace
 
 std::filesystem::path default_cache_directory() {
@@ -52,7 +78,42 @@ std::filesystem::path default_cache_directory() {
   if (const char* home = std::getenv("HOME"); home && *home) {
     return std::filesystem::path(home) / ".cache" / "meshparticles";
   }
-  return std::filesystem::temp_directory_path() / "meshparticles-cache";
+  // A directory of this user's own in the shared temporary directory;
+  // cache_directory_problem() refuses it if someone else made it first.
+  std::error_code error;
+  const std::filesystem::path temporary = std::filesystem::temp_directory_path(error);
+  if (error) {
+    const char* tmpdir = std::getenv("TMPDIR");
+    throw UserError("no cache directory: neither $XDG_CACHE_HOME nor $HOME is set, and $TMPDIR='" +
+                    std::string(tmpdir ? tmpdir : "") + "' is not a directory (give --cache-dir or --no-cache)");
+  }
+  return temporary / ("meshparticles-cache-" + std::to_string(::geteuid()));
+}
+
+std::optional<std::string> cache_directory_problem(const std::filesystem::path& directory) {
+  struct stat status {};
+  if (::lstat(directory.c_str(), &status) != 0) {
+    return "cache directory " + directory.string() + ": " + std::strerror(errno);
+  }
+  if (!S_ISDIR(status.st_mode)) return "cache directory " + directory.string() + " is not a directory";
+  if (status.st_uid != ::geteuid()) {
+    return "cache directory " + directory.string() + " belongs to user " + std::to_string(status.st_uid) +
+           ", not to you";
+  }
+  if (status.st_mode & (S_IWGRP | S_IWOTH)) {
+    return "cache directory " + directory.string() + " can be written by others (mode " +
+           format_mode(status.st_mode) + "): anyone could plant a table there";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> cache_file_problem(const std::filesystem::path& file) {
+  struct stat status {};
+  if (::lstat(file.c_str(), &status) != 0) return std::nullopt;  // not cached yet
+  if (!S_ISREG(status.st_mode)) return "not a regular file";
+  if (status.st_uid != ::geteuid()) return "owned by user " + std::to_string(status.st_uid) + ", not by you";
+  if (status.st_mode & (S_IWGRP | S_IWOTH)) return "writable by others (mode " + format_mode(status.st_mode) + ")";
+  return std::nullopt;
 }
 
 std::uint64_t mesh_content_hash(const SurfaceMesh& mesh) {
@@ -121,26 +182,36 @@ void store_cached_table(const std::filesystem::path& file, const CacheKey& key, 
 DistanceTable load_or_compute_distances(const SurfaceMesh& mesh, const GeodesicsRequest& request,
                                         TableSource& source) {
   source = {};
-  if (!request.cache_directory) return compute_all_pairs(mesh, request.method, request.threads, request.quiet);
+  const auto compute = [&] { return compute_all_pairs(mesh, request.method, request.threads, request.quiet); };
+  if (!request.cache_directory) return compute();
+  const std::filesystem::path& directory = *request.cache_directory;
+  try {
+    create_private_directory(directory);
+  } catch (const UserError& failure) {
+    warn(request, std::string(failure.what()) + "; not cached");
+    return compute();
+  }
+  if (const auto problem = cache_directory_problem(directory)) {
+    warn(request, *problem + "; not used");
+    return compute();
+  }
+  remove_stale_temporaries(directory);
 
   const CacheKey key{mesh_content_hash(mesh), std::uint32_t(mesh.vertex_count()), request.method};
-  source.cache_file = key.file_in(*request.cache_directory);
+  source.cache_file = key.file_in(directory);
   std::string problem;
-  if (auto cached = load_cached_table(source.cache_file, key, problem)) {
+  if (const auto untrusted = cache_file_problem(source.cache_file)) {
+    problem = *untrusted;
+  } else if (auto cached = load_cached_table(source.cache_file, key, problem)) {
     source.from_cache = true;
     return std::move(*cached);
   }
-  if (!problem.empty() && !request.quiet) {
-    std::cerr << "meshparticles: warning: cache file " << source.cache_file.string() << " is " << problem
-              << "; recomputing\n";
-  }
-  DistanceTable table = compute_all_pairs(mesh, request.method, request.threads, request.quiet);
-  std::error_code error;
-  std::filesystem::create_directories(*request.cache_directory, error);
+  if (!problem.empty()) warn(request, "cache file " + source.cache_file.string() + " is " + problem + "; recomputing");
+  DistanceTable table = compute();
   try {
     store_cached_table(source.cache_file, key, table);
   } catch (const UserError& failure) {
-    if (!request.quiet) std::cerr << "meshparticles: warning: not cached: " << failure.what() << "\n";
+    warn(request, std::string("not cached: ") + failure.what());
     source.cache_file.clear();
   }
   return table;

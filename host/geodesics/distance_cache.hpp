@@ -3,7 +3,8 @@
 // format version, V, solver, a hash of the mesh content, a checksum of the
 // values) and the float32 table. It is reused only when the header matches
 // the request and the size and checksum are right; it is written to a
-// temporary file and renamed, so an interrupted run never leaves half a file.
+// temporary file and renamed, so an interrupted run never leaves half a file
+// (and the next one removes what it left).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -13,8 +14,18 @@
 
 namespace meshparticles {
 
-// $XDG_CACHE_HOME/meshparticles, else ~/.cache/meshparticles.
+// $XDG_CACHE_HOME/meshparticles, else ~/.cache/meshparticles, else
+// meshparticles-cache-UID in the temporary directory. Throws UserError
+// (naming $TMPDIR) when there is none.
 std::filesystem::path default_cache_directory();
+
+// Why a cache directory must not be used, if it must not: it is not this
+// user's, or others can write it (anyone could plant a table with a valid
+// checksum there: a checksum detects damage, not who wrote the file).
+std::optional<std::string> cache_directory_problem(const std::filesystem::path& directory);
+// The same for one file of it: not a regular file, someone else's, or
+// writable by others. Nothing when it is fine or does not exist.
+std::optional<std::string> cache_file_problem(const std::filesystem::path& file);
 
 // A hash of positions and triangles: any change to the mesh changes it.
 std::uint64_t mesh_content_hash(const SurfaceMesh& mesh);
@@ -47,8 +58,10 @@ struct GeodesicsRequest {
 };
 
 // The table from the cache when it holds a valid one, else computed and
-// stored. Problems with the cache are reported on stderr and never fatal
-// for reading; a cache that cannot be written is a warning too.
+// stored. The directory is created 0700; one that is not this user's, or
+// that others can write, is not used, and a file in it that is not this
+// user's is recomputed and replaced. Every problem with the cache is a
+// warning on stderr, never fatal: the cache only saves time.
 DistanceTable load_or_compute_distances(const SurfaceMesh& mesh, const GeodesicsRequest& request,
                                         TableSource& source);
 

@@ -21,13 +21,17 @@ void write_mesh(const SurfaceMesh& mesh, const std::filesystem::path& file) {
     out.add_face(OpenMesh::VertexHandle(int(t[0])), OpenMesh::VertexHandle(int(t[1])),
                  OpenMesh::VertexHandle(int(t[2])));
   }
-  const auto temporary = temporary_sibling(file);
-  // Nine significant digits hold a float exactly: regenerated files compare equal.
-  if (!OpenMesh::IO::write_mesh(out, temporary.string(), OpenMesh::IO::Options::Default, 9)) {
-    std::filesystem::remove(temporary);
-    throw UserError(file.string() + ": cannot write mesh");
-  }
-  commit_temporary(temporary, file);
+  // Through our own atomic writer: OpenMesh's file variant reports no failed
+  // write (a full disk left a truncated file and "success"). Nine
+  // significant digits hold a float exactly: regenerated files compare equal.
+  write_file_atomically(
+      file,
+      [&](std::ostream& stream) {
+        if (!OpenMesh::IO::write_mesh(out, stream, file.extension().string(), OpenMesh::IO::Options::Default, 9)) {
+          throw UserError(file.string() + ": cannot write mesh (format " + file.extension().string() + ")");
+        }
+      },
+      true);
 }
 
 }  // namespace meshparticles

@@ -1,7 +1,11 @@
 #include "opencl/device_discovery.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 
 #include "common/user_error.hpp"
 
@@ -12,6 +16,18 @@ namespace {
 constexpr int kNoRuntimeExitCode = 3;
 const char* const kInstallHint =
     "install an OpenCL runtime (on Debian: apt-get install pocl-opencl-icd for the CPU, or your GPU vendor's ICD)";
+
+// The runtime quirks that make a present runtime look absent, named so the
+// user fixes the cause instead of installing what is already there. PoCL
+// does not start without a cache directory it can write ($POCL_CACHE_DIR).
+std::string runtime_hint() {
+  const char* pocl_cache = std::getenv("POCL_CACHE_DIR");
+  if (pocl_cache && *pocl_cache && ::access(pocl_cache, W_OK) != 0) {
+    return std::string("$POCL_CACHE_DIR='") + pocl_cache + "' is not a directory PoCL can write (" +
+           std::strerror(errno) + "), and PoCL does not start without it: unset it or point it at a directory of yours";
+  }
+  return kInstallHint;
+}
 
 std::string type_name(cl_device_type type) {
   if (type & CL_DEVICE_TYPE_GPU) return "GPU";
@@ -38,7 +54,7 @@ std::vector<DeviceDescription> list_devices() {
   try {
     cl::Platform::get(&platforms);
   } catch (const cl::Error& error) {
-    throw UserError(std::string("no OpenCL platform found: ") + kInstallHint, kNoRuntimeExitCode);
+    throw UserError("no OpenCL platform found: " + runtime_hint(), kNoRuntimeExitCode);
   }
   std::vector<DeviceDescription> devices;
   for (std::size_t p = 0; p < platforms.size(); ++p) {
@@ -67,33 +83,44 @@ std::vector<DeviceDescription> list_devices() {
     }
   }
   if (devices.empty()) {
-    throw UserError(std::string("no OpenCL device found: ") + kInstallHint, kNoRuntimeExitCode);
+    throw UserError("no OpenCL device found: " + runtime_hint(), kNoRuntimeExitCode);
   }
   return devices;
 }
 
-DeviceDescription select_device(const std::string& request) {
-  std::string wanted = request;
-  if (wanted.empty()) {
-    if (const char* from_environment = std::getenv("MESHPARTICLES_DEVICE")) wanted = from_environment;
-  }
-  const std::vector<DeviceDescription> devices = list_devices();
-  if (wanted.empty()) {
+DeviceRequest device_request(const std::string& option) {
+  if (!option.empty()) return {option, "--device"};
+  const char* from_environment = std::getenv("MESHPARTICLES_DEVICE");
+  if (from_environment && *from_environment) return {from_environment, "$MESHPARTICLES_DEVICE"};
+  return {};
+}
+
+std::string DeviceRequest::described() const { return origin + "='" + text + "'"; }
+
+std::optional<DeviceDescription> match_device(const std::vector<DeviceDescription>& devices,
+                                              const DeviceRequest& request) {
+  if (request.text.empty()) {
     const auto gpu = std::find_if(devices.begin(), devices.end(), [](const auto& d) { return d.type == "GPU"; });
     return gpu != devices.end() ? *gpu : devices.front();
   }
   for (const auto& d : devices) {
-    if (d.index() == wanted) return d;
+    if (d.index() == request.text) return d;
   }
+  const std::string needle = lowercase(request.text);
   for (const auto& d : devices) {
-    const std::string needle = lowercase(wanted);
     if (lowercase(d.name).find(needle) != std::string::npos ||
         lowercase(d.platform_name).find(needle) != std::string::npos) {
       return d;
     }
   }
-  throw UserError("no OpenCL device matches '" + wanted +
-                  "' (give P:D or part of a device or platform name; `meshparticles devices` lists them)");
+  return std::nullopt;
+}
+
+DeviceDescription select_device(const std::string& option) {
+  const DeviceRequest request = device_request(option);
+  if (auto device = match_device(list_devices(), request)) return *device;
+  throw UserError("no OpenCL device matches " + request.described() +
+                  " (give P:D or part of a device or platform name; `meshparticles devices` lists them)");
 }
 
 }  // namespace meshparticles

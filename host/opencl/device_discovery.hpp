@@ -1,6 +1,7 @@
 #pragma once
 // Finding OpenCL devices: the one place that enumerates platforms, describes
 // devices and picks the one a command runs on.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,25 @@ struct DeviceDescription {
 // install) when there is no OpenCL runtime or no device at all.
 std::vector<DeviceDescription> list_devices();
 
-// The device named by `request` ("P:D", or a case-insensitive substring of
-// the device or platform name); when empty, by $MESHPARTICLES_DEVICE; otherwise the first GPU,
-// else the first device. Throws UserError when nothing matches.
-DeviceDescription select_device(const std::string& request);
+// What the user asked for and where it came from, for messages.
+struct DeviceRequest {
+  std::string text;    // "P:D" or part of a name; empty: the default rule
+  std::string origin;  // "--device" or "$MESHPARTICLES_DEVICE"
+  std::string described() const;  // "$MESHPARTICLES_DEVICE='bogus'"
+};
+
+// --device when given, else $MESHPARTICLES_DEVICE, else nothing (the default rule).
+DeviceRequest device_request(const std::string& option);
+
+// The device `request` names ("P:D", or a case-insensitive substring of the
+// device or platform name); with an empty request the first GPU, else the
+// first device; nothing when no device matches.
+std::optional<DeviceDescription> match_device(const std::vector<DeviceDescription>& devices,
+                                              const DeviceRequest& request);
+
+// match_device over list_devices() for --device `option` (or the
+// environment); throws UserError naming the option or the variable when
+// nothing matches.
+DeviceDescription select_device(const std::string& option);
 
 }  // namespace meshparticles

@@ -7,6 +7,7 @@
 #include "common/user_error.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
+#include "pipeline/sigma_check.hpp"
 
 namespace meshparticles {
 
@@ -42,6 +43,9 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   plan.backend = check_backend(request.backend, mesh, request.particles);
   plan.energy = {request.potential,
                  request.sigma.value_or(default_sigma(request.potential, mesh.area(), request.particles))};
+  check_sigma_computable(plan.energy);
+  const auto sigma_warning = degenerate_sigma_warning(plan.energy, hexagonal_spacing(mesh.area(), request.particles));
+  if (sigma_warning && !request.quiet) std::cerr << "meshparticles: warning: " << *sigma_warning << "\n";
   if (plan.backend.tuning_refused && !request.quiet) {
     std::cerr << "meshparticles: warning: " << plan.backend.sizes_note << "; using the built-in sizes\n";
   }

@@ -46,11 +46,15 @@ std::string speedup_text(std::optional<double> speedup) {
   return speedup ? " [" + format_number(*speedup >= 10 ? "%.0fx" : "%.1fx", *speedup) + "]" : "";
 }
 
+// The paper's row a backend is, or for the field methods (not in the paper)
+// the one it stands beside: "GPU2", "vs GPU2".
 std::string paper_label(const std::string& backend) {
-  switch (find_backend(backend).paper_row) {
-    case PaperRow::cpu: return "CPU";
-    case PaperRow::gpu1_naive: return "GPU1";
-    case PaperRow::gpu2_tiled: return "GPU2";
+  const BackendDescriptor& descriptor = find_backend(backend);
+  const std::string beside = descriptor.field_method ? "vs " : "";
+  switch (descriptor.paper_row) {
+    case PaperRow::cpu: return beside + "CPU";
+    case PaperRow::gpu1_naive: return beside + "GPU1";
+    case PaperRow::gpu2_tiled: return beside + "GPU2";
   }
   return "?";
 }
@@ -132,7 +136,7 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
       if (bench.mesh == mesh) columns.push_back(&bench);
     }
     text += "\n" + mesh + " (" + std::to_string(columns.front()->vertices) + " vertices)\n";
-    std::snprintf(cell, sizeof cell, "%-19s", "particles");
+    std::snprintf(cell, sizeof cell, "%-21s", "particles");
     text += cell;
     for (const BenchCase* bench : columns) {
       std::snprintf(cell, sizeof cell, "  %-17s %-15s", ("n=" + std::to_string(bench->particles) + " ours").c_str(),
@@ -141,8 +145,7 @@ std::string bench_tables(const std::string& device_name, const BenchSettings& se
     }
     text += "\n";
     for (const std::string& backend : backends_of(cases)) {
-      std::snprintf(cell, sizeof cell, "%-12s (%s)%*s", backend.c_str(), paper_label(backend).c_str(),
-                    int(4 - paper_label(backend).size()), "");
+      std::snprintf(cell, sizeof cell, "%-21s", (backend + " (" + paper_label(backend) + ")").c_str());
       text += cell;
       for (const BenchCase* bench : columns) {
         const BenchRow* row = row_of(*bench, backend);

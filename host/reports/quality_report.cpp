@@ -67,18 +67,22 @@ std::string quality_table(const std::vector<const MeasuredSet*>& sets) {
       {"energy", [&](Q s) { return fixed(s.quality.energy, "%.6g"); }},
       {"stacked", [](Q s) { return std::to_string(s.quality.stacked); }},
   };
+  // Whole paths on lines of their own (a column would cut them); the
+  // columns are headed by their letters when there are two.
   std::string text;
   char line[256];
-  std::snprintf(line, sizeof line, "%-22s", "");
-  text += line;
-  for (std::size_t k = 0; k < sets.size(); ++k) {  // "A ...q1/particles.particles": the path's tail
-    const std::string& path = sets[k]->path;
-    std::string title = path.size() > 22 ? "..." + path.substr(path.size() - 22) : path;
-    if (sets.size() > 1) title = std::string(1, char('A' + k)) + " " + title;
-    std::snprintf(line, sizeof line, "  %-28s", title.c_str());
+  if (sets.size() == 1) {
+    text += "file  " + sets.front()->path + "\n";
+  } else {
+    for (std::size_t k = 0; k < sets.size(); ++k) text += std::string(1, char('A' + k)) + "     " + sets[k]->path + "\n";
+    std::snprintf(line, sizeof line, "%-22s", "");
     text += line;
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      std::snprintf(line, sizeof line, "  %-28c", char('A' + k));
+      text += line;
+    }
+    text += "\n";
   }
-  text += "\n";
   for (const auto& [name, value] : rows) {
     std::snprintf(line, sizeof line, "%-22s", name.c_str());
     text += line;

@@ -1,11 +1,9 @@
 #include "reports/run_outputs.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
 
+#include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
-#include "common/user_error.hpp"
 #include "reports/paraview_export.hpp"
 
 namespace meshparticles {
@@ -35,26 +33,20 @@ void write_csv(std::ostream& out, const SurfaceMesh& mesh, const std::vector<Ver
 }  // namespace
 
 void prepare_output_directory(const std::filesystem::path& directory) {
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error || !std::filesystem::is_directory(directory)) {
-    throw UserError("cannot create output directory " + directory.string() +
-                    (error ? ": " + error.message() : ": a file of that name exists"));
-  }
-  if (::access(directory.c_str(), W_OK) != 0) {
-    throw UserError("cannot write to output directory " + directory.string() + ": permission denied");
-  }
+  check_replaceable_directory(directory, kRunOutputFiles);
 }
 
 void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh, const RunResult& result,
                        const nlohmann::json& report) {
   const std::vector<VertexId>& positions = result.outcome.positions;
-  write_file_atomically(directory / "particles.particles", [&](std::ostream& out) { write_points(out, mesh, positions); });
-  write_file_atomically(directory / "particles.csv", [&](std::ostream& out) { write_csv(out, mesh, positions); });
-  write_particles_ply(directory / "particles.ply", mesh, positions);
-  write_mesh_field_vtk(directory / "mesh_distance.vtk", mesh, result.distance_to_nearest,
-                       "distance_to_nearest_particle");
-  write_file_atomically(directory / "report.json", [&](std::ostream& out) { out << report.dump(2) << "\n"; });
+  write_directory_atomically(directory, kRunOutputFiles, [&](const std::filesystem::path& staging) {
+    write_new_file(staging / "particles.particles", [&](std::ostream& out) { write_points(out, mesh, positions); });
+    write_new_file(staging / "particles.csv", [&](std::ostream& out) { write_csv(out, mesh, positions); });
+    write_particles_ply(staging / "particles.ply", mesh, positions);
+    write_mesh_field_vtk(staging / "mesh_distance.vtk", mesh, result.distance_to_nearest,
+                         "distance_to_nearest_particle");
+    write_new_file(staging / "report.json", [&](std::ostream& out) { out << report.dump(2) << "\n"; });
+  });
 }
 
 }  // namespace meshparticles

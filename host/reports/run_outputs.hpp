@@ -1,12 +1,14 @@
 #pragma once
-// What `meshparticles run` leaves in its output directory, each file written
-// atomically: particles.particles (ShapeWorks: one "x y z" per line),
+// What `meshparticles run` leaves in its output directory, written as one
+// set (common/atomic_directory.hpp: the old set or the new one, never a
+// mix): particles.particles (ShapeWorks: one "x y z" per line),
 // particles.csv (particle,vertex,x,y,z with input vertex ids), report.json
 // (mesh, parameters, device, trace, timings, quality), and for ParaView
 // particles.ply (point cloud) and mesh_distance.vtk (the mesh with the
 // distance from each vertex to its nearest particle).
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
 #include "mesh/surface_mesh.hpp"
@@ -14,10 +16,16 @@
 
 namespace meshparticles {
 
-// Creates `directory` if needed; throws UserError when it cannot be written.
+// The names of the files of one run: an output directory holds these and nothing else.
+inline const std::set<std::string> kRunOutputFiles = {"particles.particles", "particles.csv", "particles.ply",
+                                                      "mesh_distance.vtk", "report.json"};
+
+// Throws UserError, before the work, when `directory` could not be replaced
+// by a run's files: its parent cannot be written, or it holds files that a
+// run did not write (they would be lost).
 void prepare_output_directory(const std::filesystem::path& directory);
 
-// Every file of the result, report.json last.
+// Every file of the result, put in place of `directory` at once.
 void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh, const RunResult& result,
                        const nlohmann::json& report);
 

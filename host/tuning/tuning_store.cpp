@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <charconv>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -15,10 +16,28 @@ namespace {
 
 constexpr int kFormatVersion = 1;
 
-// log2 of the class's bound, for "nearest class".
+// log2 of the class's bound ("n<=1024": 10). Throws UserError unless the
+// class is "n<=" and a power of two in decimal digits.
 int class_exponent(const std::string& size_class) {
-  const std::size_t bound = std::stoull(size_class.substr(size_class.find("<=") + 2));
+  const std::string prefix = "n<=";
+  std::uint64_t bound = 0;
+  const char* end = size_class.data() + size_class.size();
+  const bool has_prefix = size_class.rfind(prefix, 0) == 0;
+  const auto [stop, error] =
+      has_prefix ? std::from_chars(size_class.data() + prefix.size(), end, bound) : std::from_chars_result{};
+  if (!has_prefix || error != std::errc{} || stop != end || !std::has_single_bit(bound)) {
+    throw UserError("size class \"" + size_class + "\" is not n<=N with N a power of two");
+  }
   return std::bit_width(bound) - 1;
+}
+
+// A whole number above 0 (JSON 32.7 or -3 is refused, not truncated).
+std::size_t positive_whole_number(const nlohmann::json& entry, const char* key) {
+  const nlohmann::json& value = entry.at(key);
+  if (!value.is_number_unsigned() || value.get<std::uint64_t>() == 0) {
+    throw UserError(std::string(key) + " " + value.dump() + " is not a whole number above 0");
+  }
+  return value.get<std::size_t>();
 }
 
 nlohmann::json to_json(const TunedSizes& sizes) {
@@ -38,12 +57,8 @@ TunedSizes from_json(const nlohmann::json& entry) {
   sizes.kernel = entry.at("kernel").get<std::string>();
   sizes.size_class = entry.at("size_class").get<std::string>();
   class_exponent(sizes.size_class);  // throws when malformed
-  sizes.work_group_size = entry.at("wg").get<std::size_t>();
-  if (entry.contains("tile")) {
-    sizes.tile_size = entry.at("tile").get<std::size_t>();
-    if (sizes.tile_size == 0) throw UserError("a tile of 0");
-  }
-  if (sizes.work_group_size == 0) throw UserError("a work-group size of 0");
+  sizes.work_group_size = positive_whole_number(entry, "wg");
+  if (entry.contains("tile")) sizes.tile_size = positive_whole_number(entry, "tile");
   sizes.median_ms = entry.value("median_ms", 0.0);
   sizes.measured_on = entry.value("measured_on", "");
   return sizes;
@@ -51,20 +66,21 @@ TunedSizes from_json(const nlohmann::json& entry) {
 
 }  // namespace
 
-std::filesystem::path default_tuning_file() {
-  std::filesystem::path directory;
+std::optional<std::filesystem::path> default_tuning_file() {
+  // No fallback to the temporary directory: a tuning file there would be
+  // lost at the next reboot, and anyone could put one there for us.
   if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) {
-    directory = xdg;
-  } else if (const char* home = std::getenv("HOME"); home && *home) {
-    directory = std::filesystem::path(home) / ".config";
-  } else {
-    directory = std::filesystem::temp_directory_path();
+    return std::filesystem::path(xdg) / "meshparticles" / "tuning.json";
   }
-  return directory / "meshparticles" / "tuning.json";
+  if (const char* home = std::getenv("HOME"); home && *home) {
+    return std::filesystem::path(home) / ".config" / "meshparticles" / "tuning.json";
+  }
+  return std::nullopt;
 }
 
-std::filesystem::path tuning_file_or_default(const std::string& option) {
-  return option.empty() ? default_tuning_file() : std::filesystem::path(option);
+std::optional<std::filesystem::path> tuning_file_or_default(const std::string& option) {
+  if (option.empty()) return default_tuning_file();
+  return std::filesystem::path(option);
 }
 
 std::string size_class(std::size_t particles) { return "n<=" + std::to_string(std::bit_ceil(particles)); }
@@ -73,6 +89,7 @@ TuningStore TuningStore::load(const std::filesystem::path& file, const std::vect
   TuningStore store;
   std::error_code error;
   if (!std::filesystem::exists(file, error)) return store;
+  store.file_found_ = true;
   std::ifstream in(file);
   try {
     const nlohmann::json document = nlohmann::json::parse(in);
@@ -104,13 +121,13 @@ std::optional<TunedSizes> TuningStore::find(const std::string& device, const std
 }
 
 void TuningStore::put(const TunedSizes& sizes) {
-  for (TunedSizes& entry : entries_) {
-    if (entry.device == sizes.device && entry.kernel == sizes.kernel && entry.size_class == sizes.size_class) {
-      entry = sizes;
-      return;
-    }
+  // An index keeps loading a file of many entries linear, not quadratic.
+  const auto [place, added] = index_.try_emplace({sizes.device, sizes.kernel, sizes.size_class}, entries_.size());
+  if (added) {
+    entries_.push_back(sizes);
+  } else {
+    entries_[place->second] = sizes;
   }
-  entries_.push_back(sizes);
 }
 
 void TuningStore::save(const std::filesystem::path& file) const {

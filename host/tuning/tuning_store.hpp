@@ -5,16 +5,20 @@
 // ~/.config/meshparticles/tuning.json). `run` and `bench` take their sizes
 // from it when --wg and --tile are absent.
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 
 namespace meshparticles {
 
-std::filesystem::path default_tuning_file();
+// $XDG_CONFIG_HOME/meshparticles/tuning.json, else
+// $HOME/.config/meshparticles/tuning.json; nothing when neither is set.
+std::optional<std::filesystem::path> default_tuning_file();
 // --tuning-file as given, or default_tuning_file() when it is empty.
-std::filesystem::path tuning_file_or_default(const std::string& option);
+std::optional<std::filesystem::path> tuning_file_or_default(const std::string& option);
 
 // Problems are grouped by particle count, rounded up to a power of two:
 // "n<=1024" holds 513..1024 particles.
@@ -46,9 +50,13 @@ class TuningStore {
   void save(const std::filesystem::path& file) const;
 
   const std::vector<TunedSizes>& entries() const { return entries_; }
+  // Whether load() found a file (an empty store may come from none).
+  bool file_found() const { return file_found_; }
 
  private:
   std::vector<TunedSizes> entries_;
+  std::map<std::tuple<std::string, std::string, std::string>, std::size_t> index_;  // device, kernel, class
+  bool file_found_ = false;
 };
 
 }  // namespace meshparticles
