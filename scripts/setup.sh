@@ -11,7 +11,7 @@ PACKAGES=(
   opencl-headers opencl-clhpp-headers ocl-icd-opencl-dev pocl-opencl-icd
   libopenmesh-dev libgtest-dev libcli11-dev nlohmann-json3-dev
   python3-matplotlib python3-numpy python3-meshio
-  clang-14 libclc-14
+  clang-14 libclc-14 libclang-rt-14-dev
 )
 
 missing=()

@@ -2,7 +2,9 @@
 # Every test from a fresh Debian 12 machine: installs what is missing, builds
 # (warnings are errors), runs the whole suite with ctest on PoCL (the CPU
 # OpenCL device), then the fast tests again under AddressSanitizer and
-# UndefinedBehaviorSanitizer (scripts/sanitize.sh).
+# UndefinedBehaviorSanitizer (scripts/sanitize.sh), two minutes of fuzzing of
+# the mesh readers (scripts/fuzz.sh) and ten real meshes from Debian's
+# libcgal-demo (scripts/real_meshes.sh --subset).
 #   scripts/test.sh            everything (what CI runs)
 #   scripts/test.sh ARGS       ctest ARGS only, e.g. -L fast or -R Monotone
 set -euo pipefail
@@ -17,3 +19,5 @@ if (($#)); then
 fi
 ctest --output-on-failure --parallel "$(nproc)"
 "$ROOT/scripts/sanitize.sh" fast
+"$ROOT/scripts/fuzz.sh" 120
+"$ROOT/scripts/real_meshes.sh" --subset

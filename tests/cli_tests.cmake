@@ -220,3 +220,6 @@ expect_exit(bench_empty_class_tuning 0 "warning: tuning file .* is not readable 
 add_test(NAME cli.bench_quality_small
          COMMAND $<TARGET_FILE:meshparticles> bench --quality --case tetrahedron:2 --backend serial,serial-field -q)
 set_tests_properties(cli.bench_quality_small PROPERTIES LABELS fast)
+# --strict refuses what is kept by default, with the old one-line messages.
+expect_exit(strict_nonmanifold_edge 2 "nonmanifold_edge\\.off: non-manifold edge 0-1 is shared by more than two faces" info ${DATA}/nonmanifold_edge.off --strict)
+expect_exit(strict_nonmanifold_vertex 2 "nonmanifold_vertex\\.off: non-manifold vertex 0" run ${DATA}/nonmanifold_vertex.off -n 2 --strict --out ${RUN_OUT})

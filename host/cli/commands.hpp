@@ -5,11 +5,16 @@
 #include <string>
 
 #include "geodesics/distance_cache.hpp"
+#include "mesh/mesh_checks.hpp"
 
 namespace meshparticles {
 
 // --device P:D|NAME, shared by every command that uses a device.
 void add_device_option(CLI::App& command, std::string& device_request);
+
+// --strict, shared by every command that reads a mesh: refuse non-manifold
+// edges and vertices and repeated triangles instead of keeping them.
+void add_strict_option(CLI::App& command, MeshReadOptions& read);
 
 // Options of every command that needs the distance table: solver threads,
 // cache, quiet.

@@ -17,6 +17,7 @@ namespace {
 
 struct GeodesicsOptions {
   std::string mesh;
+  MeshReadOptions read;
   std::optional<std::size_t> source;
   std::string out;
   std::string method = "fmm";
@@ -36,7 +37,7 @@ void write_single_source(const SurfaceMesh& mesh, const std::vector<double>& dis
 }
 
 void run_geodesics(const GeodesicsOptions& options) {
-  const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet);
+  const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet, options.read);
   const GeodesicMethod method = parse_method(options.method);
   const auto started = std::chrono::steady_clock::now();
   const auto seconds_since_start = [&] {
@@ -79,6 +80,7 @@ void add_geodesics_command(CLI::App& app) {
   geodesics->add_option("--geodesic", options->method, "Solver: fmm (fast marching) or dijkstra (edge graph)")
       ->check(CLI::IsMember({"fmm", "dijkstra"}))
       ->capture_default_str();
+  add_strict_option(*geodesics, options->read);
   add_distance_table_options(*geodesics, options->table);
   geodesics->callback([options] { run_geodesics(*options); });
 }

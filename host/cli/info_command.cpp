@@ -13,6 +13,7 @@ namespace {
 struct InfoOptions {
   std::string mesh;
   bool json = false;
+  MeshReadOptions read;
 };
 
 nlohmann::json mesh_statistics(const SurfaceMesh& mesh) {
@@ -33,7 +34,7 @@ nlohmann::json mesh_statistics(const SurfaceMesh& mesh) {
 }
 
 void run_info(const InfoOptions& options) {
-  const SurfaceMesh mesh = load_mesh(options.mesh);
+  const SurfaceMesh mesh = load_mesh(options.mesh, false, options.read);
   nlohmann::json stats = mesh_statistics(mesh);
   stats["mesh"] = options.mesh;
   if (options.json) {
@@ -60,6 +61,7 @@ void add_info_command(CLI::App& app) {
   CLI::App* info = app.add_subcommand("info", "Print statistics of a mesh");
   info->add_option("mesh", options->mesh, "Mesh file (.off, .obj, .ply, .stl)")->required();
   info->add_flag("--json", options->json, "Machine-readable output");
+  add_strict_option(*info, options->read);
   info->callback([options] { run_info(*options); });
 }
 

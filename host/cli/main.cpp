@@ -15,6 +15,12 @@ void add_device_option(CLI::App& command, std::string& device_request) {
                      "else the first device)");
 }
 
+void add_strict_option(CLI::App& command, MeshReadOptions& read) {
+  command.add_flag("--strict", read.strict,
+                   "Refuse non-manifold edges and vertices and repeated triangles (default: keep them, with a "
+                   "warning)");
+}
+
 }  // namespace meshparticles
 
 int main(int argc, char** argv) {

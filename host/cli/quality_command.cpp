@@ -19,6 +19,7 @@ namespace {
 
 struct QualityOptions {
   std::string mesh;
+  MeshReadOptions read;
   std::vector<std::string> particle_files;  // one (quality) or two (compare)
   std::optional<double> sigma;
   std::string potential = "exp";
@@ -28,7 +29,7 @@ struct QualityOptions {
 };
 
 void run_quality(const QualityOptions& options) {
-  const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet);
+  const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet, options.read);
   // Read before the distance table, so a bad file fails in a second.
   std::vector<std::vector<Vec3>> points;
   for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
@@ -80,6 +81,7 @@ void add_shared_options(CLI::App& command, QualityOptions& options) {
       ->check(CLI::IsMember({"fmm", "dijkstra"}))
       ->capture_default_str();
   command.add_flag("--json", options.json, "Machine-readable output");
+  add_strict_option(command, options.read);
   add_distance_table_options(command, options.table);
 }
 

@@ -20,6 +20,7 @@ namespace {
 
 struct RunOptions {
   std::string mesh;
+  MeshReadOptions read;
   RunRequest request;
   // Options whose words become enums in the request.
   std::string scheme;  // default: the backend's
@@ -59,7 +60,7 @@ void run_run(RunOptions options) {
   request.geodesics = options.table.request(parse_method(options.geodesic));
   request.quiet = options.table.quiet;
 
-  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, request.quiet);
+  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, request.quiet, options.read);
   request.mesh_label = options.mesh;
   const RunPlan plan = plan_run(mesh, request);
   prepare_output_directory(options.out);  // before the long work, not after
@@ -122,6 +123,7 @@ void add_run_command(CLI::App& app) {
   run->add_option("--tuning-file", options->tuning_file,
                   "Sizes saved by `sweep --save`, used when --wg and --tile are absent "
                   "(default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
+  add_strict_option(*run, options->read);
   add_distance_table_options(*run, options->table);
   run->callback([options] { run_run(*options); });
 }

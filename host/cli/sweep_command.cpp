@@ -20,6 +20,7 @@ namespace {
 
 struct SweepOptions {
   std::string mesh;
+  MeshReadOptions read;
   SweepRequest request;
   std::vector<std::size_t> tile_sizes = kSweepTileSizes;
   std::string weights = "float";
@@ -67,7 +68,7 @@ void run_sweep_command(SweepOptions options, bool tiles_given, bool weights_give
   request.geodesics = options.table.request(parse_method(options.geodesic));
   request.settings.quiet = options.table.quiet;
 
-  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, options.table.quiet);
+  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, options.table.quiet, options.read);
   request.mesh_label = options.mesh;
   const SweepPlan plan = plan_sweep(mesh, request);
   // Everything that can fail fast does so before the distances.
@@ -152,6 +153,7 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_flag("--save", options->save, "Store the best sizes per kernel for this device and size class");
   sweep->add_option("--tuning-file", options->tuning_file,
                     "Where --save stores them (default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
+  add_strict_option(*sweep, options->read);
   add_distance_table_options(*sweep, options->table);
   sweep->callback([options, sweep] {
     run_sweep_command(*options, sweep->count("--tile") > 0, sweep->count("--weights") > 0,

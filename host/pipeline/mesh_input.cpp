@@ -8,23 +8,23 @@
 
 namespace meshparticles {
 
-SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet) {
+SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet, const MeshReadOptions& read) {
   std::vector<std::string> warnings;
-  SurfaceMesh mesh = read_mesh(file, warnings);
+  SurfaceMesh mesh = read_mesh(file, warnings, read);
   if (!quiet) {
     for (const auto& warning : warnings) std::cerr << "meshparticles: warning: " << warning << "\n";
   }
   return mesh;
 }
 
-SurfaceMesh load_mesh_or_default(std::string& path, bool quiet) {
+SurfaceMesh load_mesh_or_default(std::string& path, bool quiet, const MeshReadOptions& read) {
   const char* const committed_sphere = "meshes/sphere.off";
   if (path.empty() && !std::filesystem::exists(committed_sphere)) {
     path = "built-in:sphere";
     return generate_mesh("sphere");
   }
   if (path.empty()) path = committed_sphere;
-  return load_mesh(path, quiet);
+  return load_mesh(path, quiet, read);
 }
 
 VertexId surface_vertex_for_option(const SurfaceMesh& mesh, std::size_t input_id, const std::string& option) {

@@ -5,17 +5,19 @@
 #include <filesystem>
 #include <string>
 
+#include "mesh/mesh_checks.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace meshparticles {
 
-// Reads and checks a mesh, printing the reader's warnings on stderr unless quiet.
-SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet = false);
+// Reads and checks a mesh, printing the reader's warnings on stderr unless
+// quiet. `read.strict` refuses non-manifold input and repeated triangles.
+SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet = false, const MeshReadOptions& read = {});
 
 // With `path` empty: the committed sphere when run from the repository, else
 // the same sphere from the built-in generator, so default jobs run anywhere;
 // `path` then names what was loaded. Otherwise load_mesh(path).
-SurfaceMesh load_mesh_or_default(std::string& path, bool quiet = false);
+SurfaceMesh load_mesh_or_default(std::string& path, bool quiet = false, const MeshReadOptions& read = {});
 
 // The surface vertex that had `input_id` in the file, for an option such as
 // --source; throws UserError naming `option` when there is none.
