@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/real_meshes.sh [--info-only] [--subset] [--limit V]: the mesh
+# scripts/real_meshes.sh [--info-only] [--subset] [--schemes] [--limit V]: the mesh
 # readers on real files, the 143 meshes Debian's libcgal-demo ships
 # (installed if missing, unpacked under ${XDG_CACHE_HOME:-$HOME/.cache}/meshparticles/).
 # For every file: `build/meshparticles info`; then, unless --info-only, a run
@@ -7,18 +7,24 @@
 # 12,000: its distance table is 0.58 GB and takes a minute on two cores).
 # Prints one Markdown row per file: name, vertices, accepted or refused (with
 # the reason), the kinds of warning, iterations, converged or not, seconds. --subset: a
-# fixed handful of files for CI (about a minute). Exits 1 when a file other
-# than the expected refusals is refused or a run fails.
+# fixed handful of files for CI (about a minute). --schemes: instead of the
+# one run, the default run (field, monotone) and the sequential loop
+# (serial-field) from the farthest-point start and from the paper's (v0),
+# plus monotone on serial-field and tiled: one row per mesh with each run's
+# iterations (+ when it stopped at the limit) and its final energy over the
+# sequential loop's. Exits 1 when a file other than the expected refusals is
+# refused, a run fails, or (--schemes) a monotone run does not converge.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-BINARY="$ROOT/build/meshparticles"
-info_only=0 subset=0 limit=12000
+BINARY="${MESHPARTICLES_BINARY:-$ROOT/build/meshparticles}"
+info_only=0 subset=0 schemes=0 limit=12000
 while (($#)); do
   case "$1" in
     --info-only) info_only=1 ;;
     --subset) subset=1 ;;
+    --schemes) schemes=1 ;;
     --limit) limit="$2"; shift ;;
-    *) echo "usage: $0 [--info-only] [--subset] [--limit V]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--info-only] [--subset] [--schemes] [--limit V]" >&2; exit 2 ;;
   esac
   shift
 done
@@ -59,8 +65,44 @@ warning_kinds() {
 
 json_field() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
 
-echo "| file | vertices | input | warnings | iterations | converged | seconds |"
-echo "|---|---|---|---|---|---|---|"
+# schemes_row MESH N: the runs of --schemes, sharing one cached distance table.
+schemes_row() {
+  local mesh=$1 n=$2 cells="" init backend scheme reference
+  for init in farthest v0; do
+    for run in "seq serial-field sequential" "default field monotone" "twin serial-field monotone" "tiled tiled monotone"; do
+      read -r label backend scheme <<< "$run"
+      if ! "$BINARY" run "$mesh" -n "$n" --init "$init" --backend "$backend" --scheme "$scheme" \
+          --cache-dir "$WORK/cache" --out "$WORK/$label-$init" -q >/dev/null 2>"$WORK/run.err"; then
+        unexpected=$((unexpected + 1)); cells+=" RUN FAILED: $(tail -1 "$WORK/run.err") |"; continue
+      fi
+    done
+    reference=$(json_field "$WORK/seq-$init/report.json" final_energy)
+    cells+=" $(python3 - "$WORK" "$init" "$reference" <<'PY'
+import json, sys
+work, init, reference = sys.argv[1], sys.argv[2], float(sys.argv[3])
+cells = []
+for label in ["seq", "default", "twin", "tiled"]:
+    report = json.load(open(f"{work}/{label}-{init}/report.json"))
+    iterations = f"{report['iterations_run']}{'' if report['stopped'] == 'converged' else '+'}"
+    cells.append(iterations if label == "seq" else f"{iterations}, {report['final_energy'] / reference:.5f}")
+print(" | ".join(cells))
+PY
+) |"
+    for label in default twin tiled; do
+      [ "$(json_field "$WORK/$label-$init/report.json" stopped)" = converged ] || unexpected=$((unexpected + 1))
+    done
+  done
+  rm -rf "$WORK/cache"
+  echo "| $(basename "$mesh") | $vertices | $n |$cells"
+}
+
+if ((schemes)); then
+  echo "| file | vertices | n | sequential (farthest) | default | serial-field monotone | tiled monotone | sequential (v0) | default | serial-field monotone | tiled monotone |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+else
+  echo "| file | vertices | input | warnings | iterations | converged | seconds |"
+  echo "|---|---|---|---|---|---|---|"
+fi
 accepted=0 refused=0 unexpected=0
 for name in "${files[@]}"; do
   mesh="$MESHES/$name"
@@ -73,10 +115,14 @@ for name in "${files[@]}"; do
     refused=$((refused + 1))
     reason=$(sed -e 's/^meshparticles: error: //' -e "s|$MESHES/||" "$WORK/info.err" | head -1)
     if [[ " ${EXPECTED_REFUSALS[*]} " != *" $name "* ]]; then unexpected=$((unexpected + 1)); reason="UNEXPECTED: $reason"; fi
-    echo "| $name | | refused: $reason | | | | |"
+    ((schemes)) || echo "| $name | | refused: $reason | | | | |"
     continue
   fi
   iterations="" converged="" seconds=""
+  if ((schemes)); then
+    ((vertices <= limit)) && schemes_row "$mesh" $((vertices < 256 ? vertices : 256))
+    continue
+  fi
   if ((!info_only)) && ((vertices <= limit)); then
     particles=$((vertices < 256 ? vertices : 256))
     start=$(date +%s.%N)
