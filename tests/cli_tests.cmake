@@ -146,7 +146,7 @@ expect_exit(nonmanifold_vertex_kept 0 "nonmanifold_vertex\\.off: 1 non-manifold 
 expect_exit(off_dialect 0 "off_dialect\\.off: 5 polygons with more than 3 vertices triangulated" info ${DATA}/off_dialect.off)
 expect_exit(off_trailing_content 0 "trailing_content\\.off: 1 line after the 3 faces the header declares \\(from line 10\\) ignored" info ${DATA}/trailing_content.off)
 expect_exit(obj_dialect 0 "obj_dialect\\.obj: 5 polygons" info ${DATA}/obj_dialect.obj)
-expect_exit(run_nonmanifold_vertex 0 "particles: [0-9]+ done" run ${DATA}/nonmanifold_vertex.off -n 3 --backend serial --no-cache --out ${RUN_OUT}/nonmanifold)
+expect_exit(run_nonmanifold_vertex 0 "particles: [0-9]+ done" run ${DATA}/nonmanifold_vertex.off -n 3 --backend serial --no-cache --out ${RUN_OUT}_nonmanifold)
 # What fuzzing the old readers found, each now one line and exit 2.
 expect_exit(ply_header_cut 2 "header_cut_inside_element_line\\.ply: line 7: expected 'element NAME COUNT'" info ${DATA}/header_cut_inside_element_line.ply)
 expect_exit(ply_count_2_31 2 "vertex_count_2147483647\\.ply: header declares 2147483647 'vertex' elements, more than the 6 bytes after it can hold" info ${DATA}/vertex_count_2147483647.ply)

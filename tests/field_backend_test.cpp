@@ -57,7 +57,7 @@ std::size_t total_moved(const RunOutcome& outcome) {
 TEST(Field, DeviceIncrementalUpdatesMatchARebuildAfter1000Iterations) {
   const MeshWithDistances m("torus.off");
   const EnergyParams energy = m.default_energy(kParticles);
-  const auto start = place_particles(m.distances, {Init::random, kParticles, 3, std::nullopt});
+  const auto start = place_particles(m.mesh, {Init::random, kParticles, 3, std::nullopt});
   auto backend = device_backend(m, energy, "field", 64);
   const RunOutcome outcome = run_particles(*backend, start, {Scheme::colored, 2, kIterations, true});
   ASSERT_EQ(outcome.trace.size(), kIterations) << "the run settled: the test needs moves";
@@ -72,7 +72,7 @@ TEST(Field, DeviceIncrementalUpdatesMatchARebuildAfter1000Iterations) {
 TEST(Field, SerialTwinIncrementalUpdatesMatchARebuildAfter1000Iterations) {
   const MeshWithDistances m("torus.off");
   const EnergyParams energy = m.default_energy(kParticles);
-  const auto start = place_particles(m.distances, {Init::random, kParticles, 3, std::nullopt});
+  const auto start = place_particles(m.mesh, {Init::random, kParticles, 3, std::nullopt});
   SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::float32, 0);
   const RunOutcome outcome = run_particles(twin, start, {Scheme::colored, 2, kIterations, true});
   ASSERT_EQ(outcome.trace.size(), kIterations);
@@ -94,7 +94,7 @@ TEST(Field, RebuildingChangesNothing) {
   const UpdateKernel kernel = default_update_kernel(field_backend(), m.mesh.max_valence() + 1, 64);
   for (const Init init : {Init::random, Init::v0}) {
     SCOPED_TRACE(init_name(init));
-    const auto start = place_particles(m.distances, {init, particles, 4, std::nullopt});
+    const auto start = place_particles(m.mesh, {init, particles, 4, std::nullopt});
     SerialFieldBackend serial_never(m.mesh, m.distances, energy, WeightFormat::float32, 0);
     SerialFieldBackend serial_always(m.mesh, m.distances, energy, WeightFormat::float32, 1);
     FieldBackend device_never(select_device(""), kernel, {m.mesh, m.distances, energy, WeightFormat::float32, 0});
@@ -129,7 +129,7 @@ TEST(Field, AFloat32FieldWouldDrift) {
     return pair_weight_float(energy.potential, m.distances.row(a)[v], inv_two_sigma_sq);
   };
   const std::size_t vertices = m.mesh.vertex_count();
-  std::vector<VertexId> positions = place_particles(m.distances, {Init::random, kParticles, 3, std::nullopt});
+  std::vector<VertexId> positions = place_particles(m.mesh, {Init::random, kParticles, 3, std::nullopt});
   SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::float32, 0);
   twin.set_positions(positions);
   std::vector<float> float_field(vertices, 0.0f);
@@ -180,7 +180,7 @@ TEST(Field, DeviceAndTwinCountWeightsInTheSameUnits) {
   const std::size_t particles = 200, vertices = m.mesh.vertex_count();
   ASSERT_NE(vertices % 8, 0u) << "the test needs a partial chunk";
   const EnergyParams energy = m.default_energy(particles);
-  const auto start = place_particles(m.distances, {Init::random, particles, 9, std::nullopt});
+  const auto start = place_particles(m.mesh, {Init::random, particles, 9, std::nullopt});
   for (const WeightFormat format : {WeightFormat::float32, WeightFormat::half}) {
     SCOPED_TRACE(weight_format_name(format));
     auto backend = device_backend(m, energy, "field", 32, 0, format);
@@ -211,7 +211,7 @@ TEST(Field, DeviceAndTwinCountWeightsInTheSameUnits) {
 TEST(Field, HalfWeightsGiveTheSameRunOnBothTwins) {
   const MeshWithDistances m("torus.off");
   const EnergyParams energy = m.default_energy(kParticles);
-  const auto start = place_particles(m.distances, {Init::farthest, kParticles, 1, std::nullopt});
+  const auto start = place_particles(m.mesh, {Init::farthest, kParticles, 1, std::nullopt});
   SerialFieldBackend twin(m.mesh, m.distances, energy, WeightFormat::half, 0);
   auto device = device_backend(m, energy, "field", 32, 0, WeightFormat::half);
   const RunOutcome expected = run_particles(twin, start, {Scheme::colored, 8, 50, true});

@@ -16,21 +16,21 @@ std::size_t distinct(const std::vector<VertexId>& positions) {
 
 TEST(InitialPlacement, RandomIsDistinctAndSeeded) {
   const MeshWithDistances m("patch.off");
-  const auto a = place_particles(m.distances, {Init::random, 400, 9, std::nullopt});
+  const auto a = place_particles(m.mesh, {Init::random, 400, 9, std::nullopt});
   EXPECT_EQ(distinct(a), 400u);  // every vertex, once
-  const auto b = place_particles(m.distances, {Init::random, 50, 9, std::nullopt});
-  EXPECT_EQ(b, place_particles(m.distances, {Init::random, 50, 9, std::nullopt}));
-  EXPECT_NE(b, place_particles(m.distances, {Init::random, 50, 10, std::nullopt}));
+  const auto b = place_particles(m.mesh, {Init::random, 50, 9, std::nullopt});
+  EXPECT_EQ(b, place_particles(m.mesh, {Init::random, 50, 9, std::nullopt}));
+  EXPECT_NE(b, place_particles(m.mesh, {Init::random, 50, 10, std::nullopt}));
 }
 
 TEST(InitialPlacement, FarthestPointSamplingSpreadsAndCoversComponents) {
   const MeshWithDistances m("two_pieces.off");
-  const auto two = place_particles(m.distances, {Init::farthest, 2, 1, VertexId{0}});
+  const auto two = place_particles(m.mesh, {Init::farthest, 2, 1, VertexId{0}});
   EXPECT_NE(m.mesh.component_of(two[0]), m.mesh.component_of(two[1]));
-  EXPECT_EQ(distinct(place_particles(m.distances, {Init::farthest, 8, 1, std::nullopt})), 8u);
+  EXPECT_EQ(distinct(place_particles(m.mesh, {Init::farthest, 8, 1, std::nullopt})), 8u);
 
   const MeshWithDistances patch("patch.off");
-  const auto samples = place_particles(patch.distances, {Init::farthest, 4, 1, VertexId{0}});
+  const auto samples = place_particles(patch.mesh, {Init::farthest, 4, 1, VertexId{0}});
   // Each sample is at least as far from the earlier ones as any vertex is.
   for (std::size_t k = 1; k < samples.size(); ++k) {
     auto nearest = [&](VertexId v) {
@@ -44,7 +44,7 @@ TEST(InitialPlacement, FarthestPointSamplingSpreadsAndCoversComponents) {
 
 TEST(InitialPlacement, PapersStartStacksEveryParticle) {
   const MeshWithDistances m("tetrahedron.off");
-  EXPECT_EQ(place_particles(m.distances, {Init::v0, 3, 0, VertexId{2}}), (std::vector<VertexId>{2, 2, 2}));
+  EXPECT_EQ(place_particles(m.mesh, {Init::v0, 3, 0, VertexId{2}}), (std::vector<VertexId>{2, 2, 2}));
 }
 
 TEST(DefaultSigma, FollowsTheHexagonalSpacing) {

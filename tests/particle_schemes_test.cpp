@@ -25,7 +25,7 @@ TEST(WholeRuns, SynchronousAndColoredAgreeOnEveryBackend) {
   const MeshWithDistances m("torus.off");
   const std::size_t particles = 200;
   const EnergyParams energy = m.default_energy(particles);
-  const auto start = place_particles(m.distances, {Init::farthest, particles, 1, std::nullopt});
+  const auto start = place_particles(m.mesh, {Init::farthest, particles, 1, std::nullopt});
   for (const auto& [scheme, colors] : {std::pair{Scheme::synchronous, 1u}, std::pair{Scheme::colored, 8u}}) {
     SCOPED_TRACE(scheme_name(scheme));
     SerialBackend reference(m.mesh, m.distances, energy);
@@ -61,7 +61,7 @@ TEST(WholeRuns, GaussianPotentialAgreesOnEveryBackend) {
   const MeshWithDistances m("torus.off");
   const std::size_t particles = 200;
   const EnergyParams energy = m.default_energy(particles, Potential::gauss);
-  const auto start = place_particles(m.distances, {Init::farthest, particles, 1, std::nullopt});
+  const auto start = place_particles(m.mesh, {Init::farthest, particles, 1, std::nullopt});
   SerialBackend reference(m.mesh, m.distances, energy);
   const RunOutcome expected = run(reference, start, Scheme::colored, 8, 30);
   ASSERT_GT(expected.trace.front().moved, 0u);
@@ -90,7 +90,7 @@ TEST(WholeRuns, SequentialAgreesOnEveryBackend) {
   const EnergyParams energy = m.default_energy(particles);
   for (const Init init : {Init::farthest, Init::v0}) {
     SCOPED_TRACE(init_name(init));
-    const auto start = place_particles(m.distances, {init, particles, 2, std::nullopt});
+    const auto start = place_particles(m.mesh, {init, particles, 2, std::nullopt});
     SerialBackend reference(m.mesh, m.distances, energy);
     const RunOutcome expected = run(reference, start, Scheme::sequential, 1, 30);
     ASSERT_GT(expected.trace.size(), 2u);
@@ -115,7 +115,7 @@ TEST(Sequential, EnergyNeverIncreasesAndTheRunStops) {
     for (const Init init : {Init::farthest, Init::v0}) {
       const std::size_t particles = 100;
       SerialBackend serial(m.mesh, m.distances, m.default_energy(particles));
-      const auto start = place_particles(m.distances, {init, particles, 3, std::nullopt});
+      const auto start = place_particles(m.mesh, {init, particles, 3, std::nullopt});
       const RunOutcome outcome = run(serial, start, Scheme::sequential, 1, 2000);
       EXPECT_TRUE(outcome.converged) << init_name(init);
       double previous = outcome.initial_energy;
@@ -137,7 +137,7 @@ TEST(Monotone, SettlesWhereColoredOscillatesAndNeverRaisesTheEnergy) {
   const MeshWithDistances m("torus.off");
   const std::size_t particles = 200;
   const EnergyParams energy = m.default_energy(particles);
-  const auto start = place_particles(m.distances, {Init::random, particles, 3, std::nullopt});
+  const auto start = place_particles(m.mesh, {Init::random, particles, 3, std::nullopt});
   SerialFieldBackend colored(m.mesh, m.distances, energy, WeightFormat::float32, 0);
   ASSERT_FALSE(run(colored, start, Scheme::colored, 2, 300).converged) << "the test needs a case colored cannot settle";
 
@@ -185,7 +185,7 @@ TEST(Monotone, ARedoneIterationStartsAgainFromItsStart) {
   const EnergyParams energy = m.default_energy(particles);
   SerialFieldBackend monotone(m.mesh, m.distances, energy, WeightFormat::float32, 0);
   SerialFieldBackend replay(m.mesh, m.distances, energy, WeightFormat::float32, 0);
-  monotone.set_positions(place_particles(m.distances, {Init::random, particles, 3, std::nullopt}));
+  monotone.set_positions(place_particles(m.mesh, {Init::random, particles, 3, std::nullopt}));
   double current = monotone.total_energy();
   std::size_t replayed = 0;
   for (std::size_t iteration = 0; iteration < 300; ++iteration) {
@@ -211,7 +211,7 @@ TEST(Monotone, DrainsThePapersStackWithoutRaisingTheEnergy) {
   const MeshWithDistances m("patch.off");
   const std::size_t particles = 100;
   const EnergyParams energy = m.default_energy(particles);
-  const auto start = place_particles(m.distances, {Init::v0, particles, 0, VertexId{0}});
+  const auto start = place_particles(m.mesh, {Init::v0, particles, 0, VertexId{0}});
   for (const auto& backend : std::vector<std::shared_ptr<ParticleBackend>>{
            std::make_shared<SerialBackend>(m.mesh, m.distances, energy), device_backend(m, energy, "field", 32)}) {
     SCOPED_TRACE(backend->device_name());
@@ -231,7 +231,7 @@ TEST(Monotone, DrainsThePapersStackWithoutRaisingTheEnergy) {
 TEST(Schemes, ColoredGeneralizesTheOtherTwo) {
   const MeshWithDistances m("patch.off");
   const std::size_t particles = 60;
-  const auto start = place_particles(m.distances, {Init::random, particles, 5, std::nullopt});
+  const auto start = place_particles(m.mesh, {Init::random, particles, 5, std::nullopt});
   const EnergyParams energy = m.default_energy(particles);
   SerialBackend a(m.mesh, m.distances, energy), b(m.mesh, m.distances, energy);
   EXPECT_EQ(run(a, start, Scheme::sequential, 1, 20).positions,
@@ -245,7 +245,7 @@ TEST(Schemes, EverySchemeSeparatesThePapersStart) {
   const MeshWithDistances m("patch.off");
   const std::size_t particles = m.mesh.vertex_count() / 2;
   const EnergyParams energy = m.default_energy(particles);
-  const auto start = place_particles(m.distances, {Init::v0, particles, 0, VertexId{0}});
+  const auto start = place_particles(m.mesh, {Init::v0, particles, 0, VertexId{0}});
   auto distinct = [](const std::vector<VertexId>& positions) {
     return std::set<VertexId>(positions.begin(), positions.end()).size();
   };

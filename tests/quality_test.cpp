@@ -52,7 +52,8 @@ class GridSquare : public ::testing::Test {
     return v;
   }
   static DistributionQuality measure(const std::vector<VertexId>& positions, double sigma = 0.1) {
-    return measure_quality(*mesh_, *distances_, positions, {Potential::exp, sigma});
+    return measure_quality(*mesh_, *distances_, positions, {Potential::exp, sigma},
+                           distance_to_nearest_particle(*mesh_, GeodesicMethod::fast_marching, positions));
   }
   static SurfaceMesh* mesh_;
   static DistanceTable* distances_;
@@ -122,12 +123,17 @@ TEST(Quality, AComponentWithoutParticlesLeavesTheCoverUndefined) {
   }
   both_sides.push_back(0);
   const EnergyParams energy{Potential::exp, 1.0};
-  const DistributionQuality one = measure_quality(m.mesh, m.distances, one_side, energy);
+  const auto measure = [&](const std::vector<VertexId>& positions) {
+    return measure_quality(m.mesh, m.distances, positions, energy,
+                           distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions));
+  };
+  const DistributionQuality one = measure(one_side);
   EXPECT_FALSE(one.cover.has_value());
   EXPECT_TRUE(one.nn_min.has_value());
   // One particle in each component: neither has a neighbour, both cover their own.
-  const DistributionQuality two = measure_quality(m.mesh, m.distances, both_sides, energy);
+  const DistributionQuality two = measure(both_sides);
   EXPECT_FALSE(two.nn_min.has_value());
+  EXPECT_EQ(two.alone, 2u);
   EXPECT_TRUE(two.cover.has_value());
   EXPECT_EQ(two.energy, 0.0);
   EXPECT_TRUE(quality_json(two)["nn_min"].is_null());

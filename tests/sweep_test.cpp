@@ -43,7 +43,7 @@ class SweepTest : public ::testing::Test {
  protected:
   MeshWithDistances m{"torus.off"};
   EnergyParams energy = m.default_energy(200);
-  std::vector<VertexId> positions = place_particles(m.distances, {Init::random, 200, 3, std::nullopt});
+  std::vector<VertexId> positions = place_particles(m.mesh, {Init::random, 200, 3, std::nullopt});
   SweepSettings settings{Scheme::colored, 4, 3, 1, true};
 };
 

@@ -34,18 +34,20 @@ void run_quality(const QualityOptions& options) {
   std::vector<std::vector<Vec3>> points;
   for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
   if (options.sigma) check_sigma_computable({parse_potential(options.potential), *options.sigma});
-  const ObtainedDistances obtained = obtain_distances(mesh, options.table.request(parse_method(options.geodesic)));
+  const GeodesicMethod method = parse_method(options.geodesic);
+  const ObtainedDistances obtained = obtain_distances(mesh, options.table.request(method));
   const DistanceStore& distances = *obtained.store;
   const Potential potential = parse_potential(options.potential);
   std::vector<MeasuredSet> sets;
   for (std::size_t k = 0; k < points.size(); ++k) {
-    sets.push_back(measure_particle_file(mesh, distances, options.particle_files[k], points[k], potential, options.sigma));
+    sets.push_back(
+        measure_particle_file(mesh, distances, method, options.particle_files[k], points[k], potential, options.sigma));
   }
   const bool comparing = sets.size() == 2;
   double a_to_b = 0, b_to_a = 0;
   if (comparing) {
-    a_to_b = mean_distance_to_nearest(distances, sets[0].snapped.positions, sets[1].snapped.positions);
-    b_to_a = mean_distance_to_nearest(distances, sets[1].snapped.positions, sets[0].snapped.positions);
+    a_to_b = mean_distance_to_nearest(mesh, method, sets[0].snapped.positions, sets[1].snapped.positions);
+    b_to_a = mean_distance_to_nearest(mesh, method, sets[1].snapped.positions, sets[0].snapped.positions);
   }
   if (options.json) {
     nlohmann::json out = {{"mesh", options.mesh}};

@@ -1,9 +1,12 @@
 #pragma once
-// The one way the particle system, its starts and its metrics read geodesic
-// distances: point queries, batched queries from one source, and the
-// vertices within a radius. The dense V x V table (distance_table.hpp) is
-// the first store; a store of local balls computed on demand can stand
-// behind the same interface for meshes whose table would not fit.
+// The one way the particle system and its metrics read geodesic distances
+// between vertices: point queries, batched queries from one source, and the
+// marked vertices within a radius. Two stores stand behind it: the dense
+// V x V table (distance_table.hpp) and local balls computed on demand
+// (local_distances.hpp), for meshes whose table would not fit. (Distances
+// from every vertex to a set of sources - starts, covering radii - come from
+// a solver directly: geodesic_solver.hpp.)
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <span>
@@ -27,9 +30,12 @@ class DistanceStore {
   // loops (a candidate's energy reads its distance to every particle).
   virtual void distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const = 0;
 
-  // visit(v, d(u, v)) for every vertex v with d(u, v) <= radius, u itself
-  // (at 0) included, in increasing v.
-  virtual void for_each_within(VertexId u, float radius, const std::function<void(VertexId, float)>& visit) const = 0;
+  // visit(v, d(u, v)) for every vertex v that `marked` marks (marked[v] != 0)
+  // with d(u, v) <= radius, u itself included, in increasing v: the few
+  // vertices of interest near u (the particles, for nearest neighbours)
+  // without paying for all the others.
+  virtual void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
+                                      const std::function<void(VertexId, float)>& visit) const = 0;
 
   // How far the store knows distances: +inf for a complete table.
   virtual float reach() const { return std::numeric_limits<float>::infinity(); }

@@ -17,11 +17,11 @@ void DistanceTable::distances_from(VertexId u, std::span<const VertexId> targets
   for (std::size_t k = 0; k < targets.size(); ++k) out[k] = from_u[targets[k]];
 }
 
-void DistanceTable::for_each_within(VertexId u, float radius,
-                                    const std::function<void(VertexId, float)>& visit) const {
+void DistanceTable::for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
+                                           const std::function<void(VertexId, float)>& visit) const {
   const auto from_u = row(u);
   for (std::size_t v = 0; v < vertex_count_; ++v) {
-    if (from_u[v] <= radius) visit(VertexId(v), from_u[v]);
+    if (marked[v] && from_u[v] <= radius) visit(VertexId(v), from_u[v]);
   }
 }
 

@@ -35,8 +35,8 @@ FastMarching::FastMarching(const SurfaceMesh& mesh)
       stencils_(build_triangle_stencils(mesh)) {}
 
 void FastMarching::march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                         double max_distance) const {
-  ShortestFirstQueue queue(sources, distances, scratch, max_distance);
+                         double max_distance, std::span<const float> bound) const {
+  ShortestFirstQueue queue(sources, distances, scratch, max_distance, bound);
   const auto& offsets = mesh_.ring_offsets();
   const auto& neighbors = mesh_.ring_neighbors();
   // Which source each vertex's distance comes from. A point-source update

@@ -41,7 +41,7 @@ void GeodesicSolver::solve(std::span<const VertexId> sources, std::span<double> 
                            double max_distance) const {
   scratch.fit(vertex_count_);
   std::fill(distances.begin(), distances.end(), std::numeric_limits<double>::infinity());
-  march(sources, distances, scratch, max_distance);
+  march(sources, distances, scratch, max_distance, {});
   // A stopped march leaves upper bounds on the vertices just beyond the
   // accepted ones: beyond the radius means +inf.
   for (const VertexId v : scratch.touched) {
@@ -53,7 +53,7 @@ void GeodesicSolver::solve(std::span<const VertexId> sources, std::span<double> 
 
 Ball GeodesicSolver::solve_ball(VertexId source, double radius, SolverScratch& scratch) const {
   scratch.fit(vertex_count_);
-  march(std::span<const VertexId>(&source, 1), scratch.distances, scratch, radius);
+  march(std::span<const VertexId>(&source, 1), scratch.distances, scratch, radius, {});
   std::vector<VertexId> inside;
   for (const VertexId v : scratch.touched) {
     if (scratch.accepted[v]) inside.push_back(v);
@@ -69,6 +69,22 @@ Ball GeodesicSolver::solve_ball(VertexId source, double radius, SolverScratch& s
   }
   scratch.touched.clear();
   return ball;
+}
+
+void GeodesicSolver::lower_nearest(VertexId source, std::span<float> nearest, SolverScratch& scratch,
+                                   std::vector<VertexId>& lowered) const {
+  scratch.fit(vertex_count_);
+  march(std::span<const VertexId>(&source, 1), scratch.distances, scratch, kNoDistanceLimit, nearest);
+  lowered.clear();
+  for (const VertexId v : scratch.touched) {
+    if (scratch.accepted[v] && float(scratch.distances[v]) < nearest[v]) {
+      nearest[v] = float(scratch.distances[v]);
+      lowered.push_back(v);
+    }
+    scratch.distances[v] = std::numeric_limits<double>::infinity();
+    scratch.accepted[v] = 0;
+  }
+  scratch.touched.clear();
 }
 
 std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {

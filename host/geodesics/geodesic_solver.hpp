@@ -65,14 +65,25 @@ class GeodesicSolver {
   // the values a full solve gives them, at a cost in proportion to the ball.
   Ball solve_ball(VertexId source, double radius, SolverScratch& scratch) const;
 
+  // Lowers nearest[v] to the distance from `source` wherever that is
+  // smaller, marching only where it is: a vertex no nearer to `source` than
+  // to what `nearest` measures from is not expanded. What farthest-point
+  // sampling needs, at a cost in proportion to the region the new sample
+  // takes over.
+  // `lowered`: the vertices whose nearest[v] dropped.
+  void lower_nearest(VertexId source, std::span<float> nearest, SolverScratch& scratch,
+                     std::vector<VertexId>& lowered) const;
+
  protected:
   explicit GeodesicSolver(std::size_t vertex_count) : vertex_count_(vertex_count) {}
 
   // Marches from `sources` until every vertex within `max_distance` is
-  // accepted. Expects `distances` +inf and the scratch clean wherever the
-  // march goes; appends every vertex it gives a distance to scratch.touched.
+  // accepted, giving no vertex a distance of `bound[v]` or more (no bound
+  // when empty). Expects `distances` +inf and the scratch clean wherever
+  // the march goes; appends every vertex it gives a distance to
+  // scratch.touched.
   virtual void march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                     double max_distance) const = 0;
+                     double max_distance, std::span<const float> bound) const = 0;
 
  private:
   std::size_t vertex_count_;

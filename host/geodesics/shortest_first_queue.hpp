@@ -21,14 +21,16 @@ class ShortestFirstQueue {
   // Queues the sources at distance 0. Expects every distance +inf and no
   // vertex accepted where the march goes (GeodesicSolver::march); records
   // each vertex given a distance in scratch.touched. Vertices farther than
-  // `max_distance` are never accepted.
+  // `max_distance` are never accepted, and none is given a distance of
+  // `bound[v]` or more (no bound when empty).
   ShortestFirstQueue(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                     double max_distance)
+                     double max_distance, std::span<const float> bound)
       : distances_(distances),
         heap_(scratch.heap),
         accepted_(scratch.accepted),
         touched_(scratch.touched),
-        max_distance_(max_distance) {
+        max_distance_(max_distance),
+        bound_(bound) {
     heap_.clear();
     for (const VertexId source : sources) {
       if (distances_[source] != 0.0) touched_.push_back(source);
@@ -64,6 +66,7 @@ class ShortestFirstQueue {
   // before queueing it once: lower() returns whether v's distance dropped.
   bool lower(VertexId v, double candidate) {
     if (accepted_[v] || candidate >= distances_[v]) return false;
+    if (!bound_.empty() && candidate >= double(bound_[v])) return false;  // no nearer than the bound says
     if (distances_[v] == std::numeric_limits<double>::infinity()) touched_.push_back(v);
     distances_[v] = candidate;
     return true;
@@ -82,6 +85,7 @@ class ShortestFirstQueue {
   std::vector<unsigned char>& accepted_;
   std::vector<VertexId>& touched_;
   double max_distance_;
+  std::span<const float> bound_;
 };
 
 }  // namespace meshparticles

@@ -50,7 +50,7 @@ BenchCase bench_case(const std::string& mesh_name, const SurfaceMesh& mesh, cons
                      const BenchSettings& settings, const std::function<void(const std::string&)>& on_row) {
   BenchCase result{mesh_name, mesh.vertex_count(), particles, {}};
   const EnergyParams energy{Potential::exp, default_sigma(Potential::exp, mesh.area(), particles)};
-  const std::vector<VertexId> start = place_particles(distances, {Init::farthest, particles, 1, std::nullopt});
+  const std::vector<VertexId> start = place_particles(mesh, {Init::farthest, particles, 1, std::nullopt});
   for (const CheckedBackend& checked : backends) {
     on_row(mesh_name + " n=" + std::to_string(particles) + " " + checked.name());
     BenchRow row;

@@ -17,8 +17,11 @@ QualityCase quality_case(const BenchRequest& bench, const PlannedCase& planned, 
 
   const auto add_start = [&](const std::string& method, Init init) {
     on_row(title + method);
-    const auto start = place_particles(distances, {init, particles, 1, std::nullopt});
-    result.rows.push_back({method, "", 0, false, measure_quality(mesh, distances, start, energy), std::nullopt});
+    const auto start = place_particles(mesh, {init, particles, 1, std::nullopt});
+    result.rows.push_back({method, "", 0, false,
+                           measure_quality(mesh, distances, start, energy,
+                                           distance_to_nearest_particle(mesh, GeodesicMethod::fast_marching, start)),
+                           std::nullopt});
   };
   const auto add_run = [&](const std::string& method, const std::string& backend, Init init, Scheme scheme) {
     on_row(title + method + " on " + backend);

@@ -145,7 +145,7 @@ SweepPlan plan_sweep(const SurfaceMesh& mesh, const SweepRequest& request) {
 SweepOutcome run_sweep(const SurfaceMesh& mesh, const SweepPlan& plan) {
   const ObtainedDistances distances = obtain_distances(mesh, plan.request.geodesics);
   const std::vector<VertexId> positions = place_particles(
-      *distances.store, {plan.request.init, plan.request.particles, plan.request.seed, std::nullopt});
+      mesh, {plan.request.init, plan.request.particles, plan.request.seed, std::nullopt, plan.request.geodesics.method});
   return {plan, measure_configurations(plan.device, mesh, *distances.store, plan.energy, positions,
                                        plan.configurations, plan.request.settings)};
 }

@@ -1,8 +1,11 @@
 #include "particles/initial_placement.hpp"
 
+#include <algorithm>
+#include <cstring>
 #include <limits>
 #include <numeric>
 
+#include "common/progress.hpp"
 #include "common/random.hpp"
 
 namespace meshparticles {
@@ -21,33 +24,59 @@ std::vector<VertexId> distinct_random_vertices(std::size_t vertex_count, std::si
 
 // Each new sample is the vertex farthest from all samples so far (ties: the
 // smaller id). Another component is infinitely far, so each gets a sample
-// before any gets a second.
-std::vector<VertexId> farthest_point_samples(const DistanceStore& distances, std::size_t count, VertexId first) {
-  const std::size_t vertex_count = distances.vertex_count();
+// before any gets a second. The farthest vertex comes from a max-heap of
+// (distance, vertex) entries: a vertex is pushed again whenever a sample
+// lowers its distance, and an entry that no longer matches is skipped.
+std::vector<VertexId> farthest_point_samples(const SurfaceMesh& mesh, GeodesicMethod method, std::size_t count,
+                                             VertexId first, bool quiet) {
+  const std::size_t vertex_count = mesh.vertex_count();
+  const auto solver = make_geodesic_solver(mesh, method);
+  SolverScratch scratch;
   std::vector<float> nearest(vertex_count, std::numeric_limits<float>::infinity());
   std::vector<bool> taken(vertex_count, false);
-  std::vector<VertexId> samples;
+  // Non-negative floats order like their bits; the complement of the id
+  // puts the smaller id first among equal distances.
+  const auto entry = [&](VertexId v) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &nearest[v], sizeof bits);
+    return (std::uint64_t(bits) << 32) | (0xFFFFFFFFu - v);
+  };
+  std::vector<std::uint64_t> farthest(vertex_count);
+  for (VertexId v = 0; v < vertex_count; ++v) farthest[v] = entry(v);
+  std::make_heap(farthest.begin(), farthest.end());
+  std::vector<VertexId> samples, lowered;
   samples.reserve(count);
+  ProgressLine progress("farthest-point start", count, quiet || count < 2000);
   VertexId next = first;
   while (true) {
     samples.push_back(next);
     taken[next] = true;
     if (samples.size() == count) break;
-    distances.for_each_within(next, std::numeric_limits<float>::infinity(),
-                              [&](VertexId v, float d) { nearest[v] = std::min(nearest[v], d); });
-    std::size_t best = vertex_count;
-    for (std::size_t v = 0; v < vertex_count; ++v) {
-      if (!taken[v] && (best == vertex_count || nearest[v] > nearest[best])) best = v;
+    solver->lower_nearest(next, nearest, scratch, lowered);
+    for (const VertexId v : lowered) {
+      farthest.push_back(entry(v));
+      std::push_heap(farthest.begin(), farthest.end());
     }
-    next = VertexId(best);
+    while (true) {
+      std::pop_heap(farthest.begin(), farthest.end());
+      const std::uint64_t top = farthest.back();
+      farthest.pop_back();
+      const auto v = VertexId(0xFFFFFFFFu - (top & 0xFFFFFFFFu));
+      if (!taken[v] && top == entry(v)) {
+        next = v;
+        break;
+      }
+    }
+    progress.update(samples.size());
   }
+  progress.finish();
   return samples;
 }
 
 }  // namespace
 
-std::vector<VertexId> place_particles(const DistanceStore& distances, const PlacementRequest& request) {
-  const std::size_t vertex_count = distances.vertex_count();
+std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const PlacementRequest& request, bool quiet) {
+  const std::size_t vertex_count = mesh.vertex_count();
   switch (request.init) {
     case Init::v0:
       return std::vector<VertexId>(request.particle_count, request.start_vertex.value_or(0));
@@ -56,7 +85,7 @@ std::vector<VertexId> place_particles(const DistanceStore& distances, const Plac
     case Init::farthest: {
       const VertexId first = request.start_vertex ? *request.start_vertex
                                                   : VertexId(SplitMix64(request.seed).below(vertex_count));
-      return farthest_point_samples(distances, request.particle_count, first);
+      return farthest_point_samples(mesh, request.method, request.particle_count, first, quiet);
     }
   }
   return {};

@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "geodesics/distance_store.hpp"
+#include "geodesics/geodesic_solver.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "particles/particle_params.hpp"
 
@@ -17,8 +17,12 @@ struct PlacementRequest {
   std::uint64_t seed = 0;
   // v0: the vertex; farthest: the first sample (else a seeded random vertex).
   std::optional<VertexId> start_vertex;
+  GeodesicMethod method = GeodesicMethod::fast_marching;  // farthest: the solver that measures
 };
 
-std::vector<VertexId> place_particles(const DistanceStore& distances, const PlacementRequest& request);
+// Farthest-point sampling marches from each new sample only over the region
+// it takes over (GeodesicSolver::lower_nearest): no distance table needed.
+// `quiet`: no progress line.
+std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const PlacementRequest& request, bool quiet = true);
 
 }  // namespace meshparticles

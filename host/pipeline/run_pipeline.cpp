@@ -36,7 +36,7 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   if (request.start_vertex && request.init == Init::random) {
     throw UserError("--start-vertex applies to --init v0 and farthest, not random");
   }
-  plan.placement = {request.init, request.particles, request.seed, std::nullopt};
+  plan.placement = {request.init, request.particles, request.seed, std::nullopt, request.geodesics.method};
   if (request.start_vertex) {
     plan.placement.start_vertex = surface_vertex_for_option(mesh, *request.start_vertex, "--start-vertex");
   }
@@ -58,13 +58,14 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
   const auto particles_started = std::chrono::steady_clock::now();
   const std::unique_ptr<ParticleBackend> backend = make_backend(plan.backend, mesh, distances, plan.energy);
   result.device = backend->device_name();
-  result.start = place_particles(distances, plan.placement);
+  result.start = place_particles(mesh, plan.placement, plan.request.quiet);
   result.outcome = run_particles(
       *backend, result.start, {plan.scheme, plan.colors, plan.request.max_iterations, plan.request.quiet});
   result.seconds.particles = seconds_since(particles_started);
 
   const auto quality_started = std::chrono::steady_clock::now();
-  result.distance_to_nearest = distance_to_nearest_particle(distances, result.outcome.positions);
+  result.distance_to_nearest =
+      distance_to_nearest_particle(mesh, plan.request.geodesics.method, result.outcome.positions);
   result.quality =
       measure_quality(mesh, distances, result.outcome.positions, plan.energy, result.distance_to_nearest);
   result.seconds.quality = seconds_since(quality_started);

@@ -15,19 +15,47 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-std::vector<float> distance_to_nearest_particle(const DistanceStore& distances, std::span<const VertexId> positions) {
-  std::vector<float> nearest(distances.vertex_count(), std::numeric_limits<float>::infinity());
-  for (const VertexId p : positions) {
-    distances.for_each_within(p, std::numeric_limits<float>::infinity(),
-                              [&](VertexId v, float d) { nearest[v] = std::min(nearest[v], d); });
-  }
-  return nearest;
+std::vector<float> distance_to_nearest_particle(const SurfaceMesh& mesh, GeodesicMethod method,
+                                                std::span<const VertexId> positions) {
+  std::vector<double> distances(mesh.vertex_count());
+  SolverScratch scratch;
+  make_geodesic_solver(mesh, method)->solve(positions, distances, scratch);
+  return std::vector<float>(distances.begin(), distances.end());
 }
 
-DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
-                                    std::span<const VertexId> positions, const EnergyParams& energy) {
-  return measure_quality(mesh, distances, positions, energy, distance_to_nearest_particle(distances, positions));
+namespace {
+
+// Calls pair(i, j, d) for every pair i < j of particles within the store's
+// reach: all pairs from a complete table (one batched query per particle),
+// the pairs in each other's balls from a local store (only particles near
+// each one are looked at).
+template <typename Pair>
+void for_each_pair_within_reach(const DistanceStore& distances, std::span<const VertexId> positions, Pair pair) {
+  const std::size_t n = positions.size();
+  if (std::isinf(distances.reach())) {
+    std::vector<float> from_i(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      distances.distances_from(positions[i], positions, from_i);
+      for (std::size_t j = i + 1; j < n; ++j) pair(i, j, double(from_i[j]));
+    }
+    return;
+  }
+  std::vector<std::uint8_t> occupied(distances.vertex_count(), 0);
+  std::vector<std::vector<std::size_t>> on_vertex(distances.vertex_count());  // particles by vertex
+  for (std::size_t i = 0; i < n; ++i) {
+    occupied[positions[i]] = 1;
+    on_vertex[positions[i]].push_back(i);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    distances.for_each_marked_within(positions[i], distances.reach(), occupied, [&](VertexId v, float d) {
+      for (const std::size_t j : on_vertex[v]) {
+        if (j > i) pair(i, j, double(d));
+      }
+    });
+  }
 }
+
+}  // namespace
 
 DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy,
@@ -39,20 +67,18 @@ DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore
 
   std::vector<double> nearest(n, kInfinity);
   const double inv_two_sigma_sq = energy.inv_two_sigma_sq();
-  std::vector<float> from_i(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    distances.distances_from(positions[i], positions, from_i);
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const double d = from_i[j];
-      nearest[i] = std::min(nearest[i], d);
-      nearest[j] = std::min(nearest[j], d);
-      quality.energy += pair_weight(energy.potential, d, inv_two_sigma_sq);
-    }
-  }
+  for_each_pair_within_reach(distances, positions, [&](std::size_t i, std::size_t j, double d) {
+    nearest[i] = std::min(nearest[i], d);
+    nearest[j] = std::min(nearest[j], d);
+    quality.energy += pair_weight(energy.potential, d, inv_two_sigma_sq);
+  });
   double sum = 0, sum_sq = 0, minimum = kInfinity;
   std::size_t counted = 0;
   for (const double d : nearest) {
-    if (std::isinf(d)) continue;  // alone in its component
+    if (std::isinf(d)) {  // alone in its component, or no other within reach
+      ++quality.alone;
+      continue;
+    }
     sum += d;
     sum_sq += d * d;
     minimum = std::min(minimum, d);

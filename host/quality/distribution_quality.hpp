@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geodesics/distance_store.hpp"
+#include "geodesics/geodesic_solver.hpp"
 #include "particles/particle_params.hpp"
 
 namespace meshparticles {
@@ -15,26 +16,32 @@ namespace meshparticles {
 struct DistributionQuality {
   std::size_t particles = 0;
   // Nearest-neighbour geodesic distance of each particle (another particle on
-  // its vertex: 0; none in its component: left out). Absent with < 2 particles.
+  // its vertex: 0). A particle with no other within the store's reach (in
+  // its component, or within a local store's cutoff) is left out and counted
+  // in `alone`. Absent when every particle is alone.
   std::optional<double> nn_min, nn_mean, nn_std, nn_cv;
+  std::size_t alone = 0;
   double d_hex = 0;             // sqrt(2A / (sqrt(3) n)), the hexagonal spacing
   std::optional<double> rho;    // nn_min / d_hex: the normalized packing radius
   std::optional<double> cover;  // max over vertices of the distance to the nearest particle, / d_hex;
                                 // absent when a component holds no particle
-  double energy = 0;            // sum_{i<j} w(d(p_i, p_j)) at the given sigma, in double
+  double energy = 0;            // sum_{i<j} w(d(p_i, p_j)) at the given sigma, in double, over the pairs
+                                // within the store's reach
   std::size_t stacked = 0;      // particles on a vertex a lower-index particle occupies
 };
 
 // The geodesic distance from every vertex to its nearest particle (+inf in a
-// component without particles): the covering radius is its maximum.
-std::vector<float> distance_to_nearest_particle(const DistanceStore& distances, std::span<const VertexId> positions);
+// component without particles), by one solve from all particles at once:
+// the covering radius is its maximum.
+std::vector<float> distance_to_nearest_particle(const SurfaceMesh& mesh, GeodesicMethod method,
+                                                std::span<const VertexId> positions);
 
-// `to_nearest`: distance_to_nearest_particle of these positions, for a
-// caller that also writes it out; the shorter form computes it.
+// `to_nearest`: distance_to_nearest_particle of these positions (the
+// covering radius comes from it). Nearest neighbours and the energy come
+// from `distances`: all pairs from a complete table, the pairs within reach
+// from a local store.
 DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy,
                                     std::span<const float> to_nearest);
-DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
-                                    std::span<const VertexId> positions, const EnergyParams& energy);
 
 }  // namespace meshparticles

@@ -19,12 +19,14 @@ struct MeasuredSet {
 
 // `points`: read_particle_points(path), read by the caller before the
 // distances so that a bad file fails fast.
-MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceStore& distances, const std::string& path,
-                                  const std::vector<Vec3>& points, Potential potential, std::optional<double> sigma);
+MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceStore& distances, GeodesicMethod method,
+                                  const std::string& path, const std::vector<Vec3>& points, Potential potential,
+                                  std::optional<double> sigma);
 
 // The mean over the particles of `from` of the geodesic distance to the
-// nearest particle of `to` (+inf when some particle has none in its component).
-double mean_distance_to_nearest(const DistanceStore& distances, const std::vector<VertexId>& from,
+// nearest particle of `to` (+inf when some particle has none in its
+// component), by one solve from all of `to`.
+double mean_distance_to_nearest(const SurfaceMesh& mesh, GeodesicMethod method, const std::vector<VertexId>& from,
                                 const std::vector<VertexId>& to);
 
 }  // namespace meshparticles

@@ -24,6 +24,7 @@ nlohmann::json quality_json(const DistributionQuality& quality) {
           {"cover", optional_json(quality.cover)},
           {"energy", quality.energy},
           {"stacked", quality.stacked},
+          {"alone", quality.alone},
           {"d_hex", quality.d_hex}};
 }
 

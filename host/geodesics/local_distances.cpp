@@ -1,0 +1,175 @@
+#include "geodesics/local_distances.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <limits>
+#include <thread>
+
+#include "common/progress.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// Below this many missing balls a prefetch computes them on the calling
+// thread: starting threads would cost more than it saves.
+constexpr std::size_t kParallelBatch = 64;
+// Batches this large show a progress line.
+constexpr std::size_t kProgressBatch = 2000;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+std::optional<float> distance_in_ball(const Ball& ball, VertexId v) {
+  const auto it = std::lower_bound(ball.vertices.begin(), ball.vertices.end(), v);
+  if (it == ball.vertices.end() || *it != v) return std::nullopt;
+  return ball.distances[std::size_t(it - ball.vertices.begin())];
+}
+
+float LocalDistances::symmetric_distance(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) {
+  const auto there = distance_in_ball(from_u, v);
+  if (!there) return kInfinity;
+  const auto back = distance_in_ball(from_v, u);
+  if (!back) return kInfinity;
+  return 0.5f * (*there + *back);  // as symmetrize_by_averaging: the same bits as the dense table
+}
+
+LocalDistances::LocalDistances(const SurfaceMesh& mesh, const Settings& settings)
+    : vertex_count_(mesh.vertex_count()),
+      settings_(settings),
+      solver_(make_geodesic_solver(mesh, settings.method)),
+      balls_(mesh.vertex_count()),
+      last_used_(mesh.vertex_count(), 0) {}
+
+float LocalDistances::distance(VertexId u, VertexId v) const {
+  const auto from_u = ball(u);
+  const auto from_v = ball(v);
+  return symmetric_distance(*from_u, u, *from_v, v);
+}
+
+void LocalDistances::distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const {
+  prefetch(targets);
+  const auto from_u = ball(u);
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    // Only targets in u's ball can be near: the rest need no ball of their own.
+    out[k] = distance_in_ball(*from_u, targets[k]) ? symmetric_distance(*from_u, u, *ball(targets[k]), targets[k])
+                                                    : kInfinity;
+  }
+}
+
+void LocalDistances::for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
+                                            const std::function<void(VertexId, float)>& visit) const {
+  const auto from_u = ball(u);
+  std::vector<VertexId> near;
+  for (const VertexId v : from_u->vertices) {
+    if (marked[v]) near.push_back(v);
+  }
+  prefetch(near);
+  for (const VertexId v : near) {
+    const float d = symmetric_distance(*from_u, u, *ball(v), v);
+    if (d <= radius) visit(v, d);
+  }
+}
+
+std::shared_ptr<const Ball> LocalDistances::ball(VertexId u) const {
+  const std::lock_guard lock(mutex_);
+  last_used_[u] = ++clock_;
+  if (balls_[u]) return balls_[u];
+  const auto started = std::chrono::steady_clock::now();
+  auto computed = std::make_shared<const Ball>(solver_->solve_ball(u, settings_.radius, scratch_));
+  statistics_.seconds += seconds_since(started);
+  insert(u, computed);
+  evict_to_budget();
+  return computed;
+}
+
+void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
+  std::vector<VertexId> missing;
+  {
+    const std::lock_guard lock(mutex_);
+    for (const VertexId v : vertices) {
+      last_used_[v] = ++clock_;  // wanted now: not the next to go
+      if (!balls_[v]) missing.push_back(v);
+    }
+  }
+  std::sort(missing.begin(), missing.end());
+  missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
+  if (missing.empty()) return;
+  const auto started = std::chrono::steady_clock::now();
+  unsigned threads = settings_.threads ? settings_.threads : std::max(1u, std::thread::hardware_concurrency());
+  if (missing.size() < kParallelBatch) threads = 1;
+  ProgressLine progress("distance balls", missing.size(), settings_.quiet || missing.size() < kProgressBatch);
+  std::atomic<std::size_t> next{0}, done{0};
+  std::exception_ptr failure;
+  const auto work = [&] {
+    try {
+      SolverScratch scratch;
+      for (std::size_t k = next++; k < missing.size(); k = next++) {
+        auto computed = std::make_shared<const Ball>(solver_->solve_ball(missing[k], settings_.radius, scratch));
+        const std::lock_guard lock(mutex_);
+        insert(missing[k], std::move(computed));
+        ++done;
+      }
+    } catch (...) {  // out of memory: rethrown on the calling thread, the others stop
+      const std::lock_guard lock(mutex_);
+      if (!failure) failure = std::current_exception();
+      next = missing.size();
+    }
+  };
+  if (threads == 1) {
+    work();
+  } else {
+    std::vector<std::thread> workers;
+    for (unsigned t = 0; t < threads; ++t) workers.emplace_back(work);
+    while (done < missing.size() && next < missing.size()) {
+      progress.update(done);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    for (auto& worker : workers) worker.join();
+  }
+  progress.update(done);
+  progress.finish();
+  if (failure) std::rethrow_exception(failure);
+  const std::lock_guard lock(mutex_);
+  statistics_.seconds += seconds_since(started);
+  evict_to_budget();
+}
+
+void LocalDistances::insert(VertexId u, std::shared_ptr<const Ball> ball) const {
+  if (balls_[u]) return;
+  cached_bytes_ += ball->bytes();
+  statistics_.peak_bytes = std::max(statistics_.peak_bytes, cached_bytes_);
+  ++statistics_.balls_computed;
+  statistics_.entries_computed += ball->vertices.size();
+  balls_[u] = std::move(ball);
+  cached_.push_back(u);
+}
+
+// Evicts the least recently used balls until the cache is a quarter under
+// its budget, so that evictions come in batches rather than one per ball.
+void LocalDistances::evict_to_budget() const {
+  if (cached_bytes_ <= settings_.cache_bytes) return;
+  std::sort(cached_.begin(), cached_.end(), [&](VertexId a, VertexId b) { return last_used_[a] < last_used_[b]; });
+  const std::uint64_t target = settings_.cache_bytes / 4 * 3;
+  std::size_t evicted = 0;
+  while (evicted < cached_.size() && cached_bytes_ > target) {
+    const VertexId u = cached_[evicted++];
+    cached_bytes_ -= balls_[u]->bytes();
+    balls_[u].reset();
+  }
+  cached_.erase(cached_.begin(), cached_.begin() + std::ptrdiff_t(evicted));
+  statistics_.balls_evicted += evicted;
+}
+
+LocalDistances::Statistics LocalDistances::statistics() const {
+  const std::lock_guard lock(mutex_);
+  return statistics_;
+}
+
+}  // namespace meshparticles

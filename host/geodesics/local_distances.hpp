@@ -1,0 +1,86 @@
+#pragma once
+// The local store: distances only between vertices near each other, for
+// meshes whose V x V table would not fit. Each vertex's ball - the vertices
+// within the store's radius and their distances from it - is computed on
+// demand by a solve stopped at the radius, on all cores, and kept in a
+// cache bounded in bytes.
+//
+// The distance between two vertices is the mean of the two one-sided
+// values, each read from the other's ball: exactly what the dense table
+// holds (its rows are the same solves, averaged the same way), wherever each
+// vertex lies in the other's ball. Beyond that the store answers +inf:
+// symmetric, like every distance the particle system reads.
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "geodesics/distance_store.hpp"
+#include "geodesics/geodesic_solver.hpp"
+
+namespace meshparticles {
+
+class LocalDistances final : public DistanceStore {
+ public:
+  struct Settings {
+    double radius = 0;          // mesh units
+    GeodesicMethod method = GeodesicMethod::fast_marching;
+    std::uint64_t cache_bytes = 0;  // balls kept at most; the least recently used go first
+    unsigned threads = 0;           // 0: all cores
+    bool quiet = false;             // no progress line
+  };
+
+  struct Statistics {
+    std::size_t balls_computed = 0;
+    std::uint64_t entries_computed = 0;  // over all balls computed: their mean size is this / balls_computed
+    double seconds = 0;                  // spent computing balls
+    std::size_t balls_evicted = 0;
+    std::uint64_t peak_bytes = 0;  // of the cache
+  };
+
+  LocalDistances(const SurfaceMesh& mesh, const Settings& settings);
+
+  std::size_t vertex_count() const override { return vertex_count_; }
+  float distance(VertexId u, VertexId v) const override;
+  void distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const override;
+  void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
+                              const std::function<void(VertexId, float)>& visit) const override;
+  float reach() const override { return float(settings_.radius); }
+
+  // Computes the balls of `vertices` the cache does not hold, on all cores
+  // (with a progress line when there are many), and keeps them.
+  void prefetch(std::span<const VertexId> vertices) const;
+
+  // u's ball (computed now if the cache does not hold it). Holding the
+  // pointer keeps the ball alive whatever the cache evicts meanwhile.
+  std::shared_ptr<const Ball> ball(VertexId u) const;
+
+  // d(u, v) from u's and v's balls: the mean of the one-sided values, +inf
+  // unless each lies in the other's ball.
+  static float symmetric_distance(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v);
+
+  Statistics statistics() const;
+
+ private:
+  void insert(VertexId u, std::shared_ptr<const Ball> ball) const;  // with the mutex held
+  void evict_to_budget() const;                                      // with the mutex held
+
+  std::size_t vertex_count_;
+  Settings settings_;
+  std::unique_ptr<GeodesicSolver> solver_;
+
+  mutable std::mutex mutex_;
+  mutable std::vector<std::shared_ptr<const Ball>> balls_;  // per vertex; null when not held
+  mutable std::vector<std::uint64_t> last_used_;            // per vertex: the access clock when last read
+  mutable std::uint64_t clock_ = 0;
+  mutable std::uint64_t cached_bytes_ = 0;
+  mutable std::vector<VertexId> cached_;  // the vertices whose ball is held
+  mutable SolverScratch scratch_;         // for balls computed one at a time
+  mutable Statistics statistics_;
+};
+
+// The one-sided distance from the ball's source to v, if v is in the ball.
+std::optional<float> distance_in_ball(const Ball& ball, VertexId v);
+
+}  // namespace meshparticles
