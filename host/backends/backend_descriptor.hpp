@@ -59,10 +59,11 @@ struct BackendDescriptor {
   std::string name;     // --backend NAME
   std::string summary;  // one line for --help and the docs
   bool field_method = false;  // takes --weights and --rebuild-every; its work follows the moves
+  bool needs_dense_table = false;  // streams whole rows of the V x V table: no local distances
   Scheme default_scheme = Scheme::sequential;
   PaperRow paper_row = PaperRow::cpu;
-  // Host memory beyond the distance table, per table entry (serial-field's
-  // weight table).
+  // Host memory beyond the dense distance table, per table entry
+  // (serial-field's weight table; none on local distances).
   std::size_t extra_host_bytes_per_entry = 0;
   // Host backends.
   std::function<std::unique_ptr<ParticleBackend>(const BackendInputs& inputs)> make_host;

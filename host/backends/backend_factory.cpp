@@ -81,17 +81,24 @@ const DistanceTable& dense_table_for(const DistanceStore& distances, const std::
   throw UserError("the " + backend + " backend needs the complete distance table");
 }
 
-CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& mesh, std::size_t particles) {
+CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& mesh, std::size_t particles,
+                             bool dense_distances) {
   CheckedBackend checked;
   checked.descriptor = &find_backend(request.name);
   const BackendDescriptor& backend = *checked.descriptor;
   check_options_apply(request, backend);
   checked.weights = request.weights.value_or(WeightFormat::float32);
   checked.rebuild_every = request.rebuild_every.value_or(kDefaultRebuildEvery);
-  check_table_fits(mesh.vertex_count(), sizeof(float) + backend.extra_host_bytes_per_entry,
-                   usable_host_memory_bytes(),
-                   backend.extra_host_bytes_per_entry ? "distance and weight tables" : "distance table",
-                   "host memory");
+  if (!dense_distances && backend.needs_dense_table) {
+    throw UserError("the " + backend.name + " backend streams rows of the dense distance table: use --distances "
+                    "dense (if the table fits), or serial-field or serial with local distances");
+  }
+  if (dense_distances) {
+    check_table_fits(mesh.vertex_count(), sizeof(float) + backend.extra_host_bytes_per_entry,
+                     usable_host_memory_bytes(),
+                     backend.extra_host_bytes_per_entry ? "distance and weight tables" : "distance table",
+                     "host memory");
+  }
   if (!backend.on_device()) return checked;
 
   checked.device = select_device(request.device);

@@ -46,9 +46,11 @@ struct CheckedBackend {
 inline constexpr std::size_t kDefaultRebuildEvery = 0;
 
 // Throws UserError for an unknown name, options the backend does not take,
-// sizes the device refuses, and a table the host or the device cannot hold.
+// sizes the device refuses, a table the host or the device cannot hold, and
+// a backend that needs the dense table when `dense_distances` is false.
 // `particles` picks the tuning entry and sizes the per-particle buffers.
-CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& mesh, std::size_t particles);
+CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& mesh, std::size_t particles,
+                             bool dense_distances = true);
 
 // Throws UserError for a kernel that does not build or buffers the device refuses.
 std::unique_ptr<ParticleBackend> make_backend(const CheckedBackend& checked, const SurfaceMesh& mesh,

@@ -91,6 +91,7 @@ const BackendDescriptor& naive_backend() {
     d.name = "naive";
     d.summary = "the paper's GPU1: one work-group per particle, each candidate summed over all particles (OpenCL)";
     d.default_scheme = Scheme::monotone;
+    d.needs_dense_table = true;
     d.paper_row = PaperRow::gpu1_naive;
     d.device = direct_sum_spec("naive_update");
     // One work-item per candidate, rounded up to a multiple of 8.
@@ -107,6 +108,7 @@ const BackendDescriptor& tiled_backend() {
     d.name = "tiled";
     d.summary = "the paper's GPU2: positions staged in local memory, tile by tile (OpenCL)";
     d.default_scheme = Scheme::monotone;
+    d.needs_dense_table = true;
     d.paper_row = PaperRow::gpu2_tiled;
     d.device = direct_sum_spec("tiled_update");
     d.device->takes_tile = true;

@@ -176,6 +176,7 @@ const BackendDescriptor& field_backend() {
     d.summary = "candidate energies from an accumulated field: the same choices, two reads per candidate (OpenCL)";
     d.field_method = true;
     d.default_scheme = Scheme::monotone;
+    d.needs_dense_table = true;
     d.paper_row = PaperRow::gpu2_tiled;  // beside the paper's fastest
     DeviceKernelSpec& spec = d.device.emplace();
     spec.update_function = "field_update";

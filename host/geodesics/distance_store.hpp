@@ -16,6 +16,7 @@
 namespace meshparticles {
 
 class DistanceTable;
+class LocalDistances;
 
 class DistanceStore {
  public:
@@ -43,6 +44,9 @@ class DistanceStore {
   // The complete table, for the consumers that stream whole rows (the
   // device kernels, the field's weight table); nullptr when there is none.
   virtual const DistanceTable* dense_table() const { return nullptr; }
+  // The local balls, for the consumers that read them directly (the field
+  // backends keep F from them); nullptr for another store.
+  virtual const LocalDistances* local_balls() const { return nullptr; }
 };
 
 }  // namespace meshparticles

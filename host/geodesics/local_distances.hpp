@@ -47,6 +47,7 @@ class LocalDistances final : public DistanceStore {
   void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
                               const std::function<void(VertexId, float)>& visit) const override;
   float reach() const override { return float(settings_.radius); }
+  const LocalDistances* local_balls() const override { return this; }
 
   // Computes the balls of `vertices` the cache does not hold, on all cores
   // (with a progress line when there are many), and keeps them.

@@ -32,6 +32,7 @@ QualityCase quality_case(const BenchRequest& bench, const PlannedCase& planned, 
     request.backend.name = backend;
     request.backend.device = bench.device;
     request.backend.tuning_file = bench.tuning_file;  // the sizes `run` would take
+    request.distances.kind = StoreKind::dense;         // the table the bench holds
     request.scheme = scheme;
     request.init = init;
     if (init == Init::v0) request.start_vertex = 0;

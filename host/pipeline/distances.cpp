@@ -1,13 +1,92 @@
 #include "pipeline/distances.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "common/text_format.hpp"
+#include "common/user_error.hpp"
+#include "geodesics/memory_guard.hpp"
+#include "particles/particle_params.hpp"
 
 namespace meshparticles {
 
-ObtainedDistances obtain_distances(const SurfaceMesh& mesh, const GeodesicsRequest& request) {
+namespace {
+
+// A ball of radius r holds about pi r^2 / (A / V) vertices; a run holds the
+// balls of the particles' vertices and one-rings (at most 7 per particle, at
+// most every vertex), each entry a vertex id and a float.
+std::uint64_t estimated_ball_bytes(const SurfaceMesh& mesh, double radius, std::size_t particles) {
+  const double per_ball = std::min(double(mesh.vertex_count()),
+                                   std::numbers::pi * radius * radius * double(mesh.vertex_count()) / mesh.area());
+  const double balls = std::min(double(mesh.vertex_count()), 7.0 * double(particles));
+  return std::uint64_t(balls * per_ball * double(sizeof(VertexId) + sizeof(float)));
+}
+
+}  // namespace
+
+StoreKind parse_store_kind(const std::string& name) {
+  if (name == "dense") return StoreKind::dense;
+  if (name == "local") return StoreKind::local;
+  if (name == "auto") return StoreKind::automatic;
+  throw UserError("unknown distance store '" + name + "' (choose dense, local or auto)");
+}
+
+std::string store_kind_name(StoreKind kind) {
+  switch (kind) {
+    case StoreKind::dense: return "dense";
+    case StoreKind::local: return "local";
+    case StoreKind::automatic: return "auto";
+  }
+  return "?";
+}
+
+DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& request, std::size_t particles,
+                             bool backend_needs_dense) {
+  DistancesPlan plan;
+  const std::uint64_t usable = usable_host_memory_bytes();
+  const double table_bytes = double(mesh.vertex_count()) * double(mesh.vertex_count()) * sizeof(float);
+  plan.kind = request.kind;
+  if (plan.kind == StoreKind::automatic) {
+    const bool small = mesh.vertex_count() <= kAutoDenseVertices && table_bytes <= 0.25 * double(usable);
+    plan.kind = backend_needs_dense || small ? StoreKind::dense : StoreKind::local;
+  }
+  if (plan.kind == StoreKind::dense) {
+    check_table_fits(mesh.vertex_count(), sizeof(float), usable, "distance table", "host memory");
+    return plan;
+  }
+  if (request.cutoff < 1) {
+    throw UserError("--cutoff " + format_number("%g", request.cutoff) +
+                    " is under one hexagonal spacing: particles would not see their neighbours");
+  }
+  plan.radius = request.cutoff * hexagonal_spacing(mesh.area(), particles);
+  plan.ball_budget_bytes = usable / 2;
+  const std::uint64_t needed = estimated_ball_bytes(mesh, plan.radius, particles);
+  if (needed > plan.ball_budget_bytes) {
+    throw UserError("the local distances of " + std::to_string(particles) + " particles on " +
+                    std::to_string(mesh.vertex_count()) + " vertices with --cutoff " +
+                    std::to_string(request.cutoff) + " need about " + gibibytes(double(needed)) +
+                    " of balls at once but " + gibibytes(double(plan.ball_budget_bytes)) +
+                    " is their budget here: more particles (smaller balls) or a smaller --cutoff");
+  }
+  return plan;
+}
+
+ObtainedDistances obtain_distances(const SurfaceMesh& mesh, const GeodesicsRequest& geodesics,
+                                   const DistancesPlan& plan) {
+  if (plan.kind == StoreKind::dense) return obtain_distances(mesh, geodesics);
+  ObtainedDistances obtained;
+  obtained.kind = StoreKind::local;
+  obtained.store = std::make_unique<LocalDistances>(
+      mesh, LocalDistances::Settings{plan.radius, geodesics.method, plan.ball_budget_bytes, geodesics.threads,
+                                     geodesics.quiet});
+  return obtained;
+}
+
+ObtainedDistances obtain_distances(const SurfaceMesh& mesh, const GeodesicsRequest& geodesics) {
   const auto started = std::chrono::steady_clock::now();
   ObtainedDistances obtained;
-  obtained.store = std::make_unique<DistanceTable>(load_or_compute_distances(mesh, request, obtained.source));
+  obtained.store = std::make_unique<DistanceTable>(load_or_compute_distances(mesh, geodesics, obtained.source));
   obtained.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return obtained;
 }

@@ -22,7 +22,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   RunPlan plan;
   plan.request = request;
-  plan.request.geodesics.quiet = request.quiet;
+  plan.request.distances.geodesics.quiet = request.quiet;
   if (request.particles == 0) throw UserError("-n must be at least 1");
   if (request.particles > mesh.vertex_count()) {
     throw UserError("-n " + std::to_string(request.particles) + " is more particles than the " +
@@ -36,11 +36,14 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   if (request.start_vertex && request.init == Init::random) {
     throw UserError("--start-vertex applies to --init v0 and farthest, not random");
   }
-  plan.placement = {request.init, request.particles, request.seed, std::nullopt, request.geodesics.method};
+  plan.placement = {request.init, request.particles, request.seed, std::nullopt,
+                    request.distances.geodesics.method};
   if (request.start_vertex) {
     plan.placement.start_vertex = surface_vertex_for_option(mesh, *request.start_vertex, "--start-vertex");
   }
-  plan.backend = check_backend(request.backend, mesh, request.particles);
+  plan.distances = plan_distances(mesh, request.distances, request.particles,
+                                  find_backend(request.backend.name).needs_dense_table);
+  plan.backend = check_backend(request.backend, mesh, request.particles, plan.distances.kind == StoreKind::dense);
   plan.energy = {request.potential,
                  request.sigma.value_or(default_sigma(request.potential, mesh.area(), request.particles))};
   check_sigma_computable(plan.energy);
@@ -65,7 +68,7 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
 
   const auto quality_started = std::chrono::steady_clock::now();
   result.distance_to_nearest =
-      distance_to_nearest_particle(mesh, plan.request.geodesics.method, result.outcome.positions);
+      distance_to_nearest_particle(mesh, plan.request.distances.geodesics.method, result.outcome.positions);
   result.quality =
       measure_quality(mesh, distances, result.outcome.positions, plan.energy, result.distance_to_nearest);
   result.seconds.quality = seconds_since(quality_started);
@@ -74,11 +77,15 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
 }
 
 RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan) {
-  const ObtainedDistances distances = obtain_distances(mesh, plan.request.geodesics);
+  const ObtainedDistances distances = obtain_distances(mesh, plan.request.distances.geodesics, plan.distances);
   RunResult result = execute_run(mesh, plan, *distances.store);
-  result.distances = distances.kind;
-  result.distances_source = distances.source;
+  result.distances.kind = distances.kind;
+  result.distances.table_source = distances.source;
   result.seconds.geodesics = distances.seconds;
+  if (const LocalDistances* balls = distances.store->local_balls()) {
+    result.distances.balls = balls->statistics();
+    result.seconds.geodesics += result.distances.balls.seconds;  // computed during the run, on demand
+  }
   result.seconds.total += distances.seconds;
   return result;
 }

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "backends/backend_factory.hpp"
-#include "geodesics/distance_cache.hpp"
+#include "pipeline/distances.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
 #include "quality/distribution_quality.hpp"
@@ -32,7 +32,7 @@ struct RunRequest {
   std::uint64_t seed = 1;
   Potential potential = Potential::exp;
   std::optional<double> sigma;  // default: the rule of default_sigma
-  GeodesicsRequest geodesics;   // solver, cache, threads
+  DistancesRequest distances;   // the store (dense, local, auto), solver, cache, threads
   bool quiet = false;           // no progress lines or warnings on stderr
 };
 
@@ -43,6 +43,7 @@ struct RunPlan {
   unsigned colors = kDefaultColors;
   EnergyParams energy;
   CheckedBackend backend;
+  DistancesPlan distances;     // the store decided, and its radius when local
   PlacementRequest placement;  // start_vertex as a surface vertex
 };
 
@@ -50,11 +51,18 @@ struct RunTimes {
   double geodesics = 0, particles = 0, quality = 0, total = 0;  // seconds
 };
 
+// What the distance step did: where the table came from, or what the local
+// store computed over the run.
+struct DistancesUsed {
+  StoreKind kind = StoreKind::dense;
+  TableSource table_source;              // dense
+  LocalDistances::Statistics balls;      // local
+};
+
 struct RunResult {
   RunPlan plan;
   std::string device;      // "serial" or the OpenCL device's name
-  std::string distances;   // the store's kind: "dense"
-  TableSource distances_source;
+  DistancesUsed distances;
   std::vector<VertexId> start;
   RunOutcome outcome;      // the trace and the final positions
   std::vector<float> distance_to_nearest;  // per vertex, to the nearest final particle
@@ -67,7 +75,7 @@ struct RunResult {
 // device refuses, tables the host or the device cannot hold.
 RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request);
 
-// Runs a plan: obtains the distances (cache or solver), or uses `distances`.
+// Runs a plan: obtains the distances (the planned store), or uses `distances`.
 RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan);
 RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const DistanceStore& distances);
 

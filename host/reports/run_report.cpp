@@ -24,7 +24,7 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                            {"sigma", plan.energy.sigma},
                            {"sigma_from", request.sigma ? "--sigma" : "default rule"},
                            {"potential", potential_name(plan.energy.potential)},
-                           {"geodesic", method_name(request.geodesics.method)},
+                           {"geodesic", method_name(request.distances.geodesics.method)},
                            {"out", out.string()}};
   if (uses_colors(plan.scheme)) params["colors"] = plan.colors;
   if (plan.backend.descriptor->field_method) {
@@ -39,6 +39,27 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
     if (!plan.backend.sizes_note.empty()) params["sizes_note"] = plan.backend.sizes_note;
   }
   return params;
+}
+
+// The store and what it cost: where the table came from, or the balls the
+// local store computed during the run.
+nlohmann::json distances_json(const RunResult& result) {
+  const DistancesUsed& used = result.distances;
+  nlohmann::json distances = {{"store", store_kind_name(used.kind)}};
+  if (used.kind == StoreKind::dense) {
+    distances["from_cache"] = used.table_source.from_cache;
+    return distances;
+  }
+  const auto& balls = used.balls;
+  distances["cutoff"] = result.plan.request.distances.cutoff;
+  distances["radius"] = result.plan.distances.radius;
+  distances["balls_computed"] = balls.balls_computed;
+  distances["mean_ball_size"] =
+      balls.balls_computed ? double(balls.entries_computed) / double(balls.balls_computed) : 0.0;
+  distances["ball_seconds"] = balls.seconds;
+  distances["balls_evicted"] = balls.balls_evicted;
+  distances["peak_ball_bytes"] = balls.peak_bytes;
+  return distances;
 }
 
 }  // namespace
@@ -65,7 +86,7 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
                 {"area", mesh.area()}}},
       {"params", run_parameters(result.plan, out)},
       {"device", result.device},
-      {"distances", {{"store", result.distances}, {"from_cache", result.distances_source.from_cache}}},
+      {"distances", distances_json(result)},
       {"iterations_run", outcome.trace.size()},
       {"stopped", outcome.converged ? "converged" : "max_iterations"},
       {"initial_energy", outcome.initial_energy},

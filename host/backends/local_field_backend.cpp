@@ -1,0 +1,105 @@
+#include "backends/local_field_backend.hpp"
+
+#include <cmath>
+
+#include "particles/field_units.hpp"
+
+namespace meshparticles {
+
+LocalFieldBackend::LocalFieldBackend(const SurfaceMesh& mesh, const LocalDistances& balls, const EnergyParams& energy,
+                                     WeightFormat weights, std::size_t rebuild_every)
+    : SerialFieldMethod(mesh, rebuild_every),
+      balls_(balls),
+      potential_(energy.potential),
+      inv_two_sigma_sq_(float(energy.inv_two_sigma_sq())),
+      weights_(weights),
+      field_(mesh.vertex_count(), 0),
+      candidate_count_(mesh.vertex_count(), 0),
+      held_(mesh.vertex_count()) {}
+
+std::int64_t LocalFieldBackend::units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const {
+  const float d = LocalDistances::symmetric_distance(from_u, u, from_v, v);
+  if (std::isinf(d)) return 0;  // beyond reach: the weight the store cuts off
+  return field_units(stored_weight(weights_, pair_weight_float(potential_, d, inv_two_sigma_sq_)));
+}
+
+// u is a particle's vertex and v one of its candidates: both held.
+std::int64_t LocalFieldBackend::weight_units(VertexId u, VertexId v) const {
+  return units_between(*held_[u], u, *held_[v], v);
+}
+
+// Every particle's vertex is a candidate (its index 0), so its ball is held.
+std::int64_t LocalFieldBackend::field_from_scratch(VertexId x) const {
+  const Ball& from_x = *held_[x];
+  std::int64_t sum = 0;
+  for (const VertexId u : from_x.vertices) {
+    if (occupancy_[u] > 0) sum += std::int64_t(occupancy_[u]) * units_between(*held_[u], u, from_x, x);
+  }
+  return sum;
+}
+
+void LocalFieldBackend::spread_weight(VertexId from, int delta) {
+  const Ball& from_ball = *held_[from];  // from is a candidate of the moving particle either side of the move
+  for (const VertexId x : from_ball.vertices) {
+    if (candidate_count_[x] > 0) field_[x] += delta * units_between(from_ball, from, *held_[x], x);
+  }
+}
+
+void LocalFieldBackend::count_candidates(VertexId vertex, int delta) {
+  const auto count = [&](VertexId v) {
+    if (delta > 0 && candidate_count_[v]++ == 0) {  // newly read: held, and F summed afresh
+      held_[v] = balls_.ball(v);
+      field_[v] = field_from_scratch(v);
+    }
+    if (delta < 0 && --candidate_count_[v] == 0) held_[v].reset();
+  };
+  count(vertex);
+  for (const VertexId v : mesh_.one_ring(vertex)) count(v);
+}
+
+// The particle already stands at `to` in positions_ and occupancy_: its
+// weight moves from `from` to `to` at every candidate, then its own
+// candidates follow it (new ones see the particle at `to`).
+void LocalFieldBackend::field_after_move(std::size_t /*c*/, VertexId from, VertexId to) {
+  spread_weight(from, -1);
+  spread_weight(to, +1);
+  count_candidates(to, +1);
+  count_candidates(from, -1);
+}
+
+void LocalFieldBackend::before_moves(std::span<const VertexId> targets) {
+  std::vector<VertexId> needed;
+  for (const VertexId t : targets) {
+    needed.push_back(t);
+    for (const VertexId v : mesh_.one_ring(t)) needed.push_back(v);
+  }
+  balls_.prefetch(needed);
+}
+
+void LocalFieldBackend::rebuild_field() {
+  std::fill(candidate_count_.begin(), candidate_count_.end(), 0);
+  std::fill(held_.begin(), held_.end(), nullptr);
+  std::vector<VertexId> wanted;
+  for (const VertexId p : positions_) {
+    ++candidate_count_[p];
+    wanted.push_back(p);
+    for (const VertexId v : mesh_.one_ring(p)) {
+      ++candidate_count_[v];
+      wanted.push_back(v);
+    }
+  }
+  balls_.prefetch(wanted);  // on all cores, before the sums read them one by one
+  const std::vector<VertexId> all = candidates();
+  for (const VertexId x : all) held_[x] = balls_.ball(x);
+  for (const VertexId x : all) field_[x] = field_from_scratch(x);
+}
+
+std::vector<VertexId> LocalFieldBackend::candidates() const {
+  std::vector<VertexId> list;
+  for (VertexId v = 0; v < candidate_count_.size(); ++v) {
+    if (candidate_count_[v] > 0) list.push_back(v);
+  }
+  return list;
+}
+
+}  // namespace meshparticles

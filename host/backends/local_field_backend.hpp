@@ -1,0 +1,58 @@
+#pragma once
+// The field method on local balls (`--backend serial-field` with
+// `--distances local`): no V x V table anywhere. The weight between two
+// vertices is w of their symmetric local distance (zero beyond the store's
+// reach), exactly the dense twin's weight wherever both are within reach.
+//
+// F is kept only where the candidate rule reads it: at the candidates of
+// the particles (each particle's vertex and one-ring), counted per vertex.
+// A move from a to b subtracts a's weight from every candidate in a's ball
+// and adds b's to every candidate in b's ball; a vertex that becomes a
+// candidate gets F summed afresh from the particles in its ball. All sums
+// are in the same fixed-point units as the dense field, so they are exact:
+// following the moves leaves exactly what a rebuild gives.
+#include "backends/serial_field_method.hpp"
+#include "geodesics/local_distances.hpp"
+#include "particles/particle_params.hpp"
+
+namespace meshparticles {
+
+class LocalFieldBackend final : public SerialFieldMethod {
+ public:
+  LocalFieldBackend(const SurfaceMesh& mesh, const LocalDistances& balls, const EnergyParams& energy,
+                    WeightFormat weights, std::size_t rebuild_every);
+
+  void rebuild_field() override;
+  // For tests: F(v) in field units at a candidate v.
+  std::int64_t field(VertexId v) const { return field_at(v); }
+  // For tests: the vertices where F is kept (each particle's vertex and one-ring).
+  std::vector<VertexId> candidates() const;
+
+ private:
+  std::int64_t field_at(VertexId v) const override { return field_[v]; }
+  std::int64_t weight_units(VertexId u, VertexId v) const override;
+  void field_after_move(std::size_t c, VertexId from, VertexId to) override;
+  void before_moves(std::span<const VertexId> targets) override;
+
+  // The weight between u and v in field units, from their balls.
+  std::int64_t units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const;
+  // F(x) from the particles in x's ball.
+  std::int64_t field_from_scratch(VertexId x) const;
+  // Adds `delta` times `from`'s weight to F at every candidate in its ball.
+  void spread_weight(VertexId from, int delta);
+  // Counts `vertex` and its one-ring as candidates once more (+1) or less (-1).
+  void count_candidates(VertexId vertex, int delta);
+
+  const LocalDistances& balls_;
+  Potential potential_;
+  float inv_two_sigma_sq_;  // in float, as the device computes weights
+  WeightFormat weights_;
+  std::vector<std::int64_t> field_;             // F(v) in field units, where candidate_count_[v] > 0
+  std::vector<std::uint32_t> candidate_count_;  // particles that have v among their candidates
+  // The balls of the candidates, held while they are candidates: every ball
+  // the field reads is one of these (a particle's vertex is its own first
+  // candidate), so the hot loops need neither the store's lock nor its cache.
+  std::vector<std::shared_ptr<const Ball>> held_;
+};
+
+}  // namespace meshparticles
