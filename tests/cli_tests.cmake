@@ -223,3 +223,8 @@ set_tests_properties(cli.bench_quality_small PROPERTIES LABELS fast)
 # --strict refuses what is kept by default, with the old one-line messages.
 expect_exit(strict_nonmanifold_edge 2 "nonmanifold_edge\\.off: non-manifold edge 0-1 is shared by more than two faces" info ${DATA}/nonmanifold_edge.off --strict)
 expect_exit(strict_nonmanifold_vertex 2 "nonmanifold_vertex\\.off: non-manifold vertex 0" run ${DATA}/nonmanifold_vertex.off -n 2 --strict --out ${RUN_OUT})
+# Local distances: the backends that stream table rows say what works instead.
+expect_exit(local_on_field 2 "the field backend streams rows of the dense distance table: use --distances dense" run ${TORUS} -n 8 --backend field --distances local --out ${RUN_OUT})
+expect_exit(cutoff_under_one 2 "--cutoff 0.5 is under one hexagonal spacing" run ${TORUS} -n 8 --backend serial-field --distances local --cutoff 0.5 --out ${RUN_OUT})
+expect_exit(cutoff_with_dense 2 "--cutoff applies to --distances local and auto" run ${TORUS} -n 8 --distances dense --cutoff 6 --out ${RUN_OUT})
+expect_exit(run_local 0 "particles: [0-9]+ done in .*converged" run ${TORUS} -n 64 --backend serial-field --distances local --out ${RUN_OUT}_local)

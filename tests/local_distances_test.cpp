@@ -1,0 +1,189 @@
+// The local store against the dense table, and the field method on it
+// against the field method on the table: within the store's reach every
+// distance is the table's, bit for bit; beyond it, +inf; the local field
+// follows the moves exactly; and at the default cutoff the committed meshes
+// make exactly the dense moves.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "backends/local_field_backend.hpp"
+#include "backends/serial_backend.hpp"
+#include "backends/serial_field_backend.hpp"
+#include "geodesics/local_distances.hpp"
+#include "particle_test_support.hpp"
+#include "particles/initial_placement.hpp"
+#include "particles/particle_run.hpp"
+#include "particles/scheme_step.hpp"
+#include "pipeline/distances.hpp"
+#include "quality/distribution_quality.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+LocalDistances local_store(const SurfaceMesh& mesh, double radius, std::uint64_t budget = std::uint64_t{1} << 30) {
+  return LocalDistances(mesh, {radius, GeodesicMethod::fast_marching, budget, 0, true});
+}
+
+double cutoff_radius(const SurfaceMesh& mesh, std::size_t particles, double cutoff = kDefaultCutoff) {
+  return cutoff * hexagonal_spacing(mesh.area(), particles);
+}
+
+TEST(LocalDistances, WithinReachEveryDistanceIsTheTablesBitForBit) {
+  const MeshWithDistances m("torus.off");
+  const double radius = 0.5;
+  const LocalDistances local = local_store(m.mesh, radius);
+  std::size_t within = 0, beyond = 0;
+  for (VertexId u = 0; u < m.mesh.vertex_count(); u += 7) {
+    for (VertexId v = 0; v < m.mesh.vertex_count(); ++v) {
+      const float dense = m.distances.distance(u, v);
+      const float near = local.distance(u, v);
+      if (std::isinf(near)) {
+        // Out of reach: farther than the radius (up to the solvers' asymmetry).
+        EXPECT_GT(dense, 0.98 * radius) << u << "-" << v;
+        ++beyond;
+      } else {
+        ASSERT_EQ(near, dense) << u << "-" << v;
+        EXPECT_LE(near, radius);
+        ++within;
+      }
+    }
+  }
+  EXPECT_GT(within, 10000u);
+  EXPECT_GT(beyond, within);
+  EXPECT_EQ(local.reach(), float(radius));
+}
+
+TEST(LocalDistances, BatchedAndMarkedQueriesAgreeWithPointQueries) {
+  const MeshWithDistances m("patch.off");
+  const LocalDistances local = local_store(m.mesh, 0.3);
+  const std::vector<VertexId> targets = {0, 5, 17, 200, 399, 5};
+  std::vector<float> batched(targets.size());
+  local.distances_from(17, targets, batched);
+  for (std::size_t k = 0; k < targets.size(); ++k) EXPECT_EQ(batched[k], local.distance(17, targets[k]));
+  std::vector<std::uint8_t> marked(m.mesh.vertex_count(), 0);
+  for (const VertexId t : targets) marked[t] = 1;
+  std::vector<VertexId> seen;
+  local.for_each_marked_within(17, 0.2f, marked, [&](VertexId v, float d) {
+    seen.push_back(v);
+    EXPECT_EQ(d, local.distance(17, v));
+    EXPECT_LE(d, 0.2f);
+  });
+  for (const VertexId t : targets) {
+    const bool expected = local.distance(17, t) <= 0.2f;
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), t) > 0, expected) << t;
+  }
+}
+
+// A budget smaller than the balls in use evicts the least recently used;
+// answers stay the same.
+TEST(LocalDistances, ASmallCacheEvictsAndRecomputesTheSameBalls) {
+  const MeshWithDistances m("torus.off");
+  const LocalDistances roomy = local_store(m.mesh, 0.5);
+  const LocalDistances tight = local_store(m.mesh, 0.5, 16 * 1024);  // about 25 balls
+  for (int round = 0; round < 2; ++round) {
+    for (VertexId u = 0; u < m.mesh.vertex_count(); u += 50) {
+      for (const VertexId v : {VertexId(3), VertexId(700), VertexId(u + 1)}) {
+        ASSERT_EQ(tight.distance(u, v), roomy.distance(u, v));
+      }
+    }
+  }
+  EXPECT_GT(tight.statistics().balls_evicted, 0u);
+  EXPECT_LE(tight.statistics().peak_bytes, 16 * 1024 + 4 * 1024);
+  EXPECT_EQ(roomy.statistics().balls_evicted, 0u);
+}
+
+// The local field follows the moves exactly: after many iterations it holds
+// what a rebuild gives, at every candidate.
+TEST(LocalField, IncrementalUpdatesMatchARebuild) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 200;
+  const EnergyParams energy = m.default_energy(particles);
+  const LocalDistances local = local_store(m.mesh, cutoff_radius(m.mesh, particles));
+  LocalFieldBackend field(m.mesh, local, energy, WeightFormat::float32, 0);
+  const auto start = place_particles(m.mesh, {Init::random, particles, 3, std::nullopt});
+  const RunOutcome outcome = run_particles(field, start, {Scheme::colored, 2, 200, true});
+  ASSERT_EQ(outcome.trace.size(), 200u) << "colored K=2 keeps moving here";
+  std::vector<std::int64_t> incremental;
+  const std::vector<VertexId> candidates = field.candidates();
+  for (const VertexId v : candidates) incremental.push_back(field.field(v));
+  field.rebuild_field();
+  ASSERT_EQ(field.candidates(), candidates);
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    ASSERT_EQ(field.field(candidates[k]), incremental[k]) << "vertex " << candidates[k];
+  }
+}
+
+// The same moves as the field method on the table, step for step, on every
+// committed mesh at its benchmark n, at the default cutoff.
+class LocalAgreesWithDense : public ::testing::TestWithParam<std::pair<const char*, std::size_t>> {};
+
+TEST_P(LocalAgreesWithDense, SameMovesAtTheDefaultCutoff) {
+  const auto [name, particles] = GetParam();
+  const MeshWithDistances m(name);
+  const EnergyParams energy = m.default_energy(particles);
+  const LocalDistances local = local_store(m.mesh, cutoff_radius(m.mesh, particles));
+  const auto start = place_particles(m.mesh, {Init::farthest, particles, 1, std::nullopt});
+  for (const Scheme scheme : {Scheme::sequential, Scheme::monotone}) {
+    SCOPED_TRACE(scheme_name(scheme));
+    SerialFieldBackend dense(m.mesh, m.distances, energy, WeightFormat::float32, 0);
+    LocalFieldBackend near(m.mesh, local, energy, WeightFormat::float32, 0);
+    const RunOutcome expected = run_particles(dense, start, {scheme, kDefaultColors, 500, true});
+    const RunOutcome got = run_particles(near, start, {scheme, kDefaultColors, 500, true});
+    EXPECT_TRUE(got.converged);
+    EXPECT_EQ(got.positions, expected.positions);
+    ASSERT_EQ(got.trace.size(), expected.trace.size());
+    for (std::size_t i = 0; i < got.trace.size(); ++i) {
+      EXPECT_EQ(got.trace[i].moved, expected.trace[i].moved) << "iteration " << i;
+      // The local energy leaves out the pairs beyond the cutoff (w < 1e-6 each).
+      EXPECT_NEAR(got.trace[i].energy, expected.trace[i].energy, 2e-5 * expected.trace[i].energy);
+      EXPECT_LE(got.trace[i].energy, expected.trace[i].energy);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CommittedMeshes, LocalAgreesWithDense,
+                         ::testing::Values(std::pair{"torus.off", std::size_t{512}},
+                                           std::pair{"sphere.off", std::size_t{1024}},
+                                           std::pair{"patch.off", std::size_t{100}},
+                                           std::pair{"atrium.off", std::size_t{1024}}),
+                         [](const auto& param_info) {
+                           const std::string name = param_info.param.first;
+                           return name.substr(0, name.find('.'));
+                         });
+
+// The serial reference reads the same truncated distances through the store
+// interface: on local balls it makes the local field's choices.
+TEST(LocalField, TheReferenceOnLocalBallsMakesTheSameRun) {
+  const MeshWithDistances m("patch.off");
+  const std::size_t particles = 60;
+  const EnergyParams energy = m.default_energy(particles);
+  const LocalDistances local = local_store(m.mesh, cutoff_radius(m.mesh, particles, 3.0));
+  const auto start = place_particles(m.mesh, {Init::farthest, particles, 2, std::nullopt});
+  SerialBackend reference(m.mesh, local, energy);
+  LocalFieldBackend field(m.mesh, local, energy, WeightFormat::float32, 0);
+  const RunOutcome expected = run_particles(reference, start, {Scheme::sequential, 1, 100, true});
+  const RunOutcome got = run_particles(field, start, {Scheme::sequential, 1, 100, true});
+  EXPECT_EQ(got.positions, expected.positions);
+  EXPECT_NEAR(got.trace.back().energy, expected.trace.back().energy, 1e-5 * expected.trace.back().energy);
+}
+
+// Quality through a local store: the pairs within reach, and particles with
+// no neighbour within reach counted as alone.
+TEST(LocalField, QualityCountsParticlesAloneWithinTheCutoff) {
+  const MeshWithDistances m("patch.off");
+  const std::vector<VertexId> positions = {0, 1, 399};  // two neighbours in a corner, one far away
+  const EnergyParams energy{Potential::exp, 1.0};  // the far pair still weighs exp(-0.7)
+  const LocalDistances local = local_store(m.mesh, 0.2);
+  const auto to_nearest = distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions);
+  const DistributionQuality near = measure_quality(m.mesh, local, positions, energy, to_nearest);
+  const DistributionQuality dense = measure_quality(m.mesh, m.distances, positions, energy, to_nearest);
+  EXPECT_EQ(near.alone, 1u);
+  EXPECT_EQ(dense.alone, 0u);
+  EXPECT_EQ(near.nn_min, dense.nn_min);
+  EXPECT_LT(near.energy, dense.energy);
+  EXPECT_EQ(near.cover, dense.cover);
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
