@@ -15,7 +15,8 @@
 namespace meshparticles {
 
 struct BackendRequest {
-  // field: the fastest, with the same choices as the others (docs/PERFORMANCE.md).
+  // A backend of the table (backend_table.hpp). Empty in a RunRequest: the
+  // default, which the run's distance store decides (plan_run).
   std::string name = "field";
   std::string device;                          // --device (device backends)
   std::optional<std::size_t> work_group_size;  // --wg

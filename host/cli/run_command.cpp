@@ -94,9 +94,10 @@ void add_run_command(CLI::App& app) {
   for (const BackendDescriptor* backend : backend_table()) {
     backends_help += (backends_help.empty() ? "" : "; ") + backend->name + ": " + backend->summary;
   }
+  request.backend.name.clear();  // the default follows the distance store (plan_run)
   run->add_option("--backend", request.backend.name, backends_help)
       ->check(CLI::IsMember(backend_names()))
-      ->capture_default_str();
+      ->default_str("field on a dense table, serial-field on local distances");
   run->add_option("--scheme", options->scheme,
                   "sequential, synchronous, colored or monotone (colored, with every iteration lowering the energy; "
                   "default: sequential on serial and serial-field, monotone on the OpenCL backends)")

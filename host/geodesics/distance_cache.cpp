@@ -130,11 +130,11 @@ std::filesystem::path CacheKey::file_in(const std::filesystem::path& directory) 
   return directory / name;
 }
 
-std::optional<DistanceTable> load_cached_table(const std::filesystem::path& file, const CacheKey& key,
-                                               std::string& problem) {
-  problem.clear();
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::nullopt;  // not cached yet
+namespace {
+
+// Reads the header and checks it and the file's size against the key.
+std::optional<CacheHeader> matching_header(std::ifstream& in, const std::filesystem::path& file, const CacheKey& key,
+                                           std::string& problem) {
   CacheHeader header;
   if (!in.read(reinterpret_cast<char*>(&header), sizeof header) || header.magic != kMagic) {
     problem = "not a distance cache file";
@@ -151,13 +151,25 @@ std::optional<DistanceTable> load_cached_table(const std::filesystem::path& file
     problem = "truncated or overlong";
     return std::nullopt;
   }
+  return header;
+}
+
+}  // namespace
+
+std::optional<DistanceTable> load_cached_table(const std::filesystem::path& file, const CacheKey& key,
+                                               std::string& problem) {
+  problem.clear();
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;  // not cached yet
+  const auto header = matching_header(in, file, key, problem);
+  if (!header) return std::nullopt;
   check_table_fits(key.vertex_count, sizeof(float), usable_host_memory_bytes(), "distance table", "host memory");
   DistanceTable table(key.vertex_count);
   if (!in.read(reinterpret_cast<char*>(table.values().data()), std::streamsize(table.byte_size()))) {
     problem = "unreadable";
     return std::nullopt;
   }
-  if (checksum(table.values().data(), table.byte_size()) != header.values_checksum) {
+  if (checksum(table.values().data(), table.byte_size()) != header->values_checksum) {
     problem = "corrupt (checksum mismatch)";
     return std::nullopt;
   }
@@ -177,6 +189,17 @@ void store_cached_table(const std::filesystem::path& file, const CacheKey& key, 
         out.write(reinterpret_cast<const char*>(table.values().data()), std::streamsize(table.byte_size()));
       },
       true);
+}
+
+bool table_is_cached(const SurfaceMesh& mesh, const GeodesicsRequest& request) {
+  if (!request.cache_directory || cache_directory_problem(*request.cache_directory)) return false;
+  const CacheKey key{mesh_content_hash(mesh), std::uint32_t(mesh.vertex_count()), request.method};
+  const std::filesystem::path file = key.file_in(*request.cache_directory);
+  std::error_code error;
+  if (!std::filesystem::exists(file, error) || cache_file_problem(file)) return false;
+  std::ifstream in(file, std::ios::binary);
+  std::string problem;
+  return in && matching_header(in, file, key, problem).has_value();
 }
 
 DistanceTable load_or_compute_distances(const SurfaceMesh& mesh, const GeodesicsRequest& request,

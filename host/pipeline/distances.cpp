@@ -48,8 +48,9 @@ DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& re
   const double table_bytes = double(mesh.vertex_count()) * double(mesh.vertex_count()) * sizeof(float);
   plan.kind = request.kind;
   if (plan.kind == StoreKind::automatic) {
-    const bool small = mesh.vertex_count() <= kAutoDenseVertices && table_bytes <= 0.25 * double(usable);
-    plan.kind = backend_needs_dense || small ? StoreKind::dense : StoreKind::local;
+    const bool fits = table_bytes <= 0.25 * double(usable);
+    const bool cheap = mesh.vertex_count() <= kAutoDenseVertices || table_is_cached(mesh, request.geodesics);
+    plan.kind = backend_needs_dense || (fits && cheap) ? StoreKind::dense : StoreKind::local;
   }
   if (plan.kind == StoreKind::dense) {
     check_table_fits(mesh.vertex_count(), sizeof(float), usable, "distance table", "host memory");

@@ -25,8 +25,10 @@ std::string store_kind_name(StoreKind kind);
 // docs/PERFORMANCE.md.
 inline constexpr double kDefaultCutoff = 7.0;
 
-// At or below this many vertices `auto` takes the dense table (when the
-// backend and the memory allow); above, local balls. Measured: docs/PERFORMANCE.md.
+// `auto` takes the dense table when the backend streams its rows, or when
+// it fits in a quarter of the memory and is cheap: at most this many
+// vertices, or already in the cache. Else local balls. Measured:
+// docs/PERFORMANCE.md.
 inline constexpr std::size_t kAutoDenseVertices = 6000;
 
 struct DistancesRequest {

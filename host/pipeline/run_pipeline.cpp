@@ -28,7 +28,22 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
     throw UserError("-n " + std::to_string(request.particles) + " is more particles than the " +
                     std::to_string(mesh.vertex_count()) + " vertices of " + request.mesh_label);
   }
-  plan.scheme = request.scheme.value_or(find_backend(request.backend.name).default_scheme);
+  // The default backend follows the store: the device's field method on a
+  // table, its serial twin on local balls (the device streams table rows).
+  const bool default_backend = request.backend.name.empty();
+  plan.distances = plan_distances(mesh, request.distances, request.particles,
+                                  !default_backend && find_backend(request.backend.name).needs_dense_table);
+  BackendRequest backend = request.backend;
+  if (default_backend) {
+    const bool dense = plan.distances.kind == StoreKind::dense;
+    backend.name = dense ? "field" : "serial-field";
+    plan.backend_from = dense ? "default: field on the dense table"
+                              : "default: serial-field on local distances (field needs the dense table)";
+  } else {
+    plan.backend_from = "--backend";
+  }
+  plan.request.backend.name = backend.name;
+  plan.scheme = request.scheme.value_or(find_backend(backend.name).default_scheme);
   if (request.colors && !uses_colors(plan.scheme)) {
     throw UserError("--colors applies to --scheme colored and monotone, not " + scheme_name(plan.scheme));
   }
@@ -41,9 +56,7 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   if (request.start_vertex) {
     plan.placement.start_vertex = surface_vertex_for_option(mesh, *request.start_vertex, "--start-vertex");
   }
-  plan.distances = plan_distances(mesh, request.distances, request.particles,
-                                  find_backend(request.backend.name).needs_dense_table);
-  plan.backend = check_backend(request.backend, mesh, request.particles, plan.distances.kind == StoreKind::dense);
+  plan.backend = check_backend(backend, mesh, request.particles, plan.distances.kind == StoreKind::dense);
   plan.energy = {request.potential,
                  request.sigma.value_or(default_sigma(request.potential, mesh.area(), request.particles))};
   check_sigma_computable(plan.energy);

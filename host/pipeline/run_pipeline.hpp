@@ -24,7 +24,7 @@ struct RunRequest {
   std::string mesh_label;  // names the mesh in messages and reports: its path
   std::size_t particles = 1024;
   std::size_t max_iterations = kDefaultMaxIterations;  // 0: the start alone, measured
-  BackendRequest backend;
+  BackendRequest backend;  // name empty: the default for the store (field on a table, serial-field on balls)
   std::optional<Scheme> scheme;    // default: the backend's
   std::optional<unsigned> colors;  // colored only; default kDefaultColors
   Init init = Init::farthest;
@@ -43,6 +43,7 @@ struct RunPlan {
   unsigned colors = kDefaultColors;
   EnergyParams energy;
   CheckedBackend backend;
+  std::string backend_from;    // "--backend", or why the default is what it is
   DistancesPlan distances;     // the store decided, and its radius when local
   PlacementRequest placement;  // start_vertex as a surface vertex
 };

@@ -18,6 +18,7 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
   nlohmann::json params = {{"n", request.particles},
                            {"iterations", request.max_iterations},
                            {"backend", plan.backend.name()},
+                           {"backend_from", plan.backend_from},
                            {"scheme", scheme_name(plan.scheme)},
                            {"init", init_name(request.init)},
                            {"seed", request.seed},
