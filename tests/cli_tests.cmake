@@ -228,3 +228,4 @@ expect_exit(local_on_field 2 "the field backend streams rows of the dense distan
 expect_exit(cutoff_under_one 2 "--cutoff 0.5 is under one hexagonal spacing" run ${TORUS} -n 8 --backend serial-field --distances local --cutoff 0.5 --out ${RUN_OUT})
 expect_exit(cutoff_with_dense 2 "--cutoff applies to --distances local and auto" run ${TORUS} -n 8 --distances dense --cutoff 6 --out ${RUN_OUT})
 expect_exit(run_local 0 "particles: [0-9]+ done in .*converged" run ${TORUS} -n 64 --backend serial-field --distances local --out ${RUN_OUT}_local)
+expect_exit(quality_cutoff_with_dense 2 "--cutoff applies to --distances local and auto" quality ${TORUS} ${PARTICLES_DATA}/blank_lines.particles --distances dense --cutoff 6)

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "geodesics/distance_cache.hpp"
+#include "pipeline/distances.hpp"
 #include "mesh/mesh_checks.hpp"
 
 namespace meshparticles {
@@ -26,6 +27,16 @@ struct DistanceTableOptions {
   GeodesicsRequest request(GeodesicMethod method) const;
 };
 void add_distance_table_options(CLI::App& command, DistanceTableOptions& options);
+
+// --distances dense|local|auto and --cutoff, for the commands that can run
+// on local distances (run, quality, compare).
+struct DistanceStoreOptions {
+  std::string store = "auto";
+  std::optional<double> cutoff;
+  // Throws UserError for --cutoff with --distances dense.
+  DistancesRequest request(const GeodesicsRequest& geodesics) const;
+};
+void add_distance_store_options(CLI::App& command, DistanceStoreOptions& options);
 
 void add_info_command(CLI::App& app);
 void add_devices_command(CLI::App& app);

@@ -2,6 +2,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -30,6 +31,30 @@ void add_distance_table_options(CLI::App& command, DistanceTableOptions& options
   add_whole_number_option(command, "--threads", options.threads, kThreadRange,
                           "Threads for all-pairs distances (0: all cores)");
   command.add_flag("-q,--quiet", options.quiet, "No progress or warnings on stderr");
+}
+
+DistancesRequest DistanceStoreOptions::request(const GeodesicsRequest& geodesics) const {
+  DistancesRequest distances;
+  distances.geodesics = geodesics;
+  distances.kind = parse_store_kind(store);
+  if (cutoff) {
+    if (distances.kind == StoreKind::dense) throw UserError("--cutoff applies to --distances local and auto");
+    distances.cutoff = *cutoff;
+  }
+  return distances;
+}
+
+void add_distance_store_options(CLI::App& command, DistanceStoreOptions& options) {
+  command
+      .add_option("--distances", options.store,
+                  "dense (the V x V table, cached on disk), local (each vertex's ball within --cutoff, computed on "
+                  "demand) or auto (dense up to " + std::to_string(kAutoDenseVertices) +
+                  " vertices, when cached, or when the backend needs it; else local)")
+      ->check(CLI::IsMember({"dense", "local", "auto"}))
+      ->capture_default_str();
+  add_positive_number_option(command, "--cutoff", options.cutoff,
+                             "Local distances: the balls' radius in hexagonal spacings d_hex (default " +
+                                 format_number("%g", kDefaultCutoff) + ")");
 }
 
 }  // namespace meshparticles

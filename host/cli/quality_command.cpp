@@ -26,6 +26,7 @@ struct QualityOptions {
   std::string geodesic = "fmm";
   bool json = false;
   DistanceTableOptions table;
+  DistanceStoreOptions store;
 };
 
 void run_quality(const QualityOptions& options) {
@@ -35,7 +36,13 @@ void run_quality(const QualityOptions& options) {
   for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
   if (options.sigma) check_sigma_computable({parse_potential(options.potential), *options.sigma});
   const GeodesicMethod method = parse_method(options.geodesic);
-  const ObtainedDistances obtained = obtain_distances(mesh, options.table.request(method));
+  // A local store's cutoff scales with the spacing of the set with the fewest particles (the widest).
+  std::size_t fewest = points.front().size();
+  for (const auto& set : points) fewest = std::min(fewest, set.size());
+  const GeodesicsRequest geodesics = options.table.request(method);
+  const DistancesRequest request = options.store.request(geodesics);
+  const ObtainedDistances obtained =
+      obtain_distances(mesh, geodesics, plan_distances(mesh, request, std::min(fewest, mesh.vertex_count()), false));
   const DistanceStore& distances = *obtained.store;
   const Potential potential = parse_potential(options.potential);
   std::vector<MeasuredSet> sets;
@@ -84,6 +91,7 @@ void add_shared_options(CLI::App& command, QualityOptions& options) {
       ->capture_default_str();
   command.add_flag("--json", options.json, "Machine-readable output");
   add_strict_option(command, options.read);
+  add_distance_store_options(command, options.store);
   add_distance_table_options(command, options.table);
 }
 

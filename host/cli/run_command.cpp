@@ -7,8 +7,6 @@
 #include "backends/backend_table.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
-#include "common/text_format.hpp"
-#include "common/user_error.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "reports/quality_report.hpp"
@@ -30,8 +28,7 @@ struct RunOptions {
   std::string potential = "exp";
   std::string geodesic = "fmm";
   std::string weights;
-  std::string store = "auto";
-  std::optional<double> cutoff;
+  DistanceStoreOptions store;
   std::string tuning_file;
   std::string out = "out";
   DistanceTableOptions table;
@@ -61,12 +58,7 @@ void run_run(RunOptions options) {
   request.potential = parse_potential(options.potential);
   if (!options.weights.empty()) request.backend.weights = parse_weight_format(options.weights);
   request.backend.tuning_file = tuning_file_or_default(options.tuning_file);
-  request.distances.geodesics = options.table.request(parse_method(options.geodesic));
-  request.distances.kind = parse_store_kind(options.store);
-  if (options.cutoff) {
-    if (request.distances.kind == StoreKind::dense) throw UserError("--cutoff applies to --distances local and auto");
-    request.distances.cutoff = *options.cutoff;
-  }
+  request.distances = options.store.request(options.table.request(parse_method(options.geodesic)));
   request.quiet = options.table.quiet;
 
   const SurfaceMesh mesh = load_mesh_or_default(options.mesh, request.quiet, options.read);
@@ -118,15 +110,7 @@ void add_run_command(CLI::App& app) {
   run->add_option("--geodesic", options->geodesic, "Distance solver: fmm or dijkstra")
       ->check(CLI::IsMember({"fmm", "dijkstra"}))
       ->capture_default_str();
-  run->add_option("--distances", options->store,
-                  "dense (the V x V table, cached on disk), local (each vertex's ball within --cutoff, computed on "
-                  "demand) or auto (dense up to " + std::to_string(kAutoDenseVertices) +
-                  " vertices or when the backend needs it, else local)")
-      ->check(CLI::IsMember({"dense", "local", "auto"}))
-      ->capture_default_str();
-  add_positive_number_option(*run, "--cutoff", options->cutoff,
-                             "Local distances: the balls' radius in hexagonal spacings d_hex (default " +
-                                 format_number("%g", kDefaultCutoff) + ")");
+  add_distance_store_options(*run, options->store);
   add_device_option(*run, request.backend.device);
   add_whole_number_option(*run, "--wg", request.backend.work_group_size, kWorkGroupRange,
                           "Work-group size of the kernel");
