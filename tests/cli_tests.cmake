@@ -229,3 +229,7 @@ expect_exit(cutoff_under_one 2 "--cutoff 0.5 is under one hexagonal spacing" run
 expect_exit(cutoff_with_dense 2 "--cutoff applies to --distances local and auto" run ${TORUS} -n 8 --distances dense --cutoff 6 --out ${RUN_OUT})
 expect_exit(run_local 0 "particles: [0-9]+ done in .*converged" run ${TORUS} -n 64 --backend serial-field --distances local --out ${RUN_OUT}_local)
 expect_exit(quality_cutoff_with_dense 2 "--cutoff applies to --distances local and auto" quality ${TORUS} ${PARTICLES_DATA}/blank_lines.particles --distances dense --cutoff 6)
+# Large meshes for benchmarks: made at about a given size, never under a committed mesh's name.
+expect_exit(generate_vertices 0 "wrote .*sphere_1002\\.off \\(1002 vertices, 2000 triangles\\)" generate sphere --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)
+expect_exit(generate_vertices_torus 2 "--vertices applies to sphere and atrium, not torus" generate torus --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)
+expect_exit(generate_vertices_no_name 2 "--vertices needs the meshes to make at that size" generate --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)

@@ -17,10 +17,18 @@ LocalFieldBackend::LocalFieldBackend(const SurfaceMesh& mesh, const LocalDistanc
       candidate_count_(mesh.vertex_count(), 0),
       held_(mesh.vertex_count()) {}
 
-std::int64_t LocalFieldBackend::units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const {
-  const float d = LocalDistances::symmetric_distance(from_u, u, from_v, v);
+std::int64_t LocalFieldBackend::units_of_distance(float d) const {
   if (std::isinf(d)) return 0;  // beyond reach: the weight the store cuts off
   return field_units(stored_weight(weights_, pair_weight_float(potential_, d, inv_two_sigma_sq_)));
+}
+
+std::int64_t LocalFieldBackend::units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const {
+  return units_of_distance(LocalDistances::symmetric_distance(from_u, u, from_v, v));
+}
+
+std::int64_t LocalFieldBackend::units_with(float from_u_to_v, VertexId u, const Ball& from_v) const {
+  const auto back = distance_in_ball(from_v, u);
+  return back ? units_of_distance(0.5f * (from_u_to_v + *back)) : 0;  // the store's symmetric mean
 }
 
 // u is a particle's vertex and v one of its candidates: both held.
@@ -32,16 +40,18 @@ std::int64_t LocalFieldBackend::weight_units(VertexId u, VertexId v) const {
 std::int64_t LocalFieldBackend::field_from_scratch(VertexId x) const {
   const Ball& from_x = *held_[x];
   std::int64_t sum = 0;
-  for (const VertexId u : from_x.vertices) {
-    if (occupancy_[u] > 0) sum += std::int64_t(occupancy_[u]) * units_between(*held_[u], u, from_x, x);
+  for (std::size_t k = 0; k < from_x.vertices.size(); ++k) {
+    const VertexId u = from_x.vertices[k];
+    if (occupancy_[u] > 0) sum += std::int64_t(occupancy_[u]) * units_with(from_x.distances[k], x, *held_[u]);
   }
   return sum;
 }
 
 void LocalFieldBackend::spread_weight(VertexId from, int delta) {
   const Ball& from_ball = *held_[from];  // from is a candidate of the moving particle either side of the move
-  for (const VertexId x : from_ball.vertices) {
-    if (candidate_count_[x] > 0) field_[x] += delta * units_between(from_ball, from, *held_[x], x);
+  for (std::size_t k = 0; k < from_ball.vertices.size(); ++k) {
+    const VertexId x = from_ball.vertices[k];
+    if (candidate_count_[x] > 0) field_[x] += delta * units_with(from_ball.distances[k], from, *held_[x]);
   }
 }
 

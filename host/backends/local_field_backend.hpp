@@ -36,6 +36,9 @@ class LocalFieldBackend final : public SerialFieldMethod {
 
   // The weight between u and v in field units, from their balls.
   std::int64_t units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const;
+  // The same, with d_u(v) already known (v found in u's ball): one search fewer.
+  std::int64_t units_with(float from_u_to_v, VertexId u, const Ball& from_v) const;
+  std::int64_t units_of_distance(float d) const;
   // F(x) from the particles in x's ball.
   std::int64_t field_from_scratch(VertexId x) const;
   // Adds `delta` times `from`'s weight to F at every candidate in its ball.

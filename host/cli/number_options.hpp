@@ -39,6 +39,9 @@ inline constexpr WholeRange kTimedIterationRange{1, 100000};
 inline constexpr WholeRange kRebuildRange{0, 1000000};
 inline constexpr WholeRange kThreadRange{0, 1024};
 inline constexpr WholeRange kSeedRange{0, std::numeric_limits<std::uint64_t>::max()};
+// Generated meshes: from the smallest sphere to what 32-bit vertex ids and
+// this machine's memory allow to build.
+inline constexpr WholeRange kLargeMeshRange{12, 100000000};
 
 // `text` as a decimal whole number within `range`; throws UserError naming
 // `option` otherwise.

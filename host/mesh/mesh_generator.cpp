@@ -195,13 +195,6 @@ SurfaceMesh to_surface_mesh(const WorkMesh& mesh) {
   return SurfaceMesh(std::move(positions), std::move(triangles));
 }
 
-SurfaceMesh sphere() {
-  const Projection onto_sphere = [](Vec3 p) { return normalized(p); };
-  WorkMesh mesh = geodesic_sphere(19);  // 3,612 vertices, refined to the paper's ~4k
-  split_longest_edges(mesh, 4000, onto_sphere);
-  improve(mesh, onto_sphere);
-  return to_surface_mesh(mesh);
-}
 
 SurfaceMesh torus() {
   constexpr double R = 1.0, r = 0.4;
@@ -234,7 +227,7 @@ SurfaceMesh torus() {
 // A closed, star-shaped, organ-like surface: an ellipsoid body with bulges of
 // different sizes (an appendage, four vein stubs, one broad bump), standing in
 // for the paper's left-atrium mesh.
-SurfaceMesh atrium() {
+Projection onto_atrium() {
   struct Bulge {
     Vec3 direction;
     double height, width;
@@ -247,17 +240,37 @@ SurfaceMesh atrium() {
       {normalized({-0.7, -0.55, -0.45}), 0.25, 0.015},
       {normalized({0.8, -0.3, -0.5}), 0.15, 0.25},   // broad bump
   };
-  const Projection onto_atrium = [bulges](Vec3 p) {
+  return [bulges](Vec3 p) {
     const Vec3 d = normalized(p);
     double radius = 1.0 / std::sqrt(d.x * d.x / (1.25 * 1.25) + d.y * d.y + d.z * d.z / (0.85 * 0.85));
     for (const Bulge& b : bulges) radius += b.height * std::exp(-(1.0 - dot(d, b.direction)) / b.width);
     return radius * d;
   };
-  WorkMesh mesh = geodesic_sphere(29);  // 8,412 vertices, refined to 10,500
-  for (auto v : mesh.vertices()) mesh.point(v) = to_point(onto_atrium(to_vec(mesh.point(v))));
-  split_longest_edges(mesh, 10500, onto_atrium);
-  improve(mesh, onto_atrium);
+}
+
+Projection onto_sphere() {
+  return [](Vec3 p) { return normalized(p); };
+}
+
+// The geodesic sphere of `frequency` on `shape` (nothing to project for the
+// sphere itself: projecting again would change the committed file's last
+// digits), refined to `target` vertices (none when 0) and improved.
+SurfaceMesh sphere_like(int frequency, const Projection& shape, std::size_t target, bool on_sphere) {
+  WorkMesh mesh = geodesic_sphere(frequency);
+  if (!on_sphere) {
+    for (auto v : mesh.vertices()) mesh.point(v) = to_point(shape(to_vec(mesh.point(v))));
+  }
+  if (target > 0) split_longest_edges(mesh, target, shape);
+  improve(mesh, shape);
   return to_surface_mesh(mesh);
+}
+
+SurfaceMesh atrium() {
+  return sphere_like(29, onto_atrium(), 10500, false);  // 8,412 vertices, refined to 10,500
+}
+
+SurfaceMesh sphere() {
+  return sphere_like(19, onto_sphere(), 4000, true);  // 3,612 vertices, refined to the paper's ~4k
 }
 
 // An open, flat, jittered 20 x 20 grid on [0,1]^2: a boundary, and a plane
@@ -333,6 +346,21 @@ SurfaceMesh generate_mesh(const std::string& name) {
   const auto it = generators().find(name);
   if (it == generators().end()) throw UserError("unknown mesh '" + name + "' to generate");
   return it->second();
+}
+
+const std::vector<std::string>& scalable_mesh_names() {
+  static const std::vector<std::string> names = {"sphere", "atrium"};
+  return names;
+}
+
+SurfaceMesh generate_mesh_at(const std::string& name, std::size_t vertices) {
+  if (name != "sphere" && name != "atrium") {
+    throw UserError("--vertices applies to sphere and atrium, not " + name);
+  }
+  if (vertices < 12) throw UserError("--vertices " + std::to_string(vertices) + ": a sphere needs at least 12");
+  const int frequency = std::max(1, int(std::lround(std::sqrt(double(vertices - 2) / 10.0))));
+  return name == "sphere" ? sphere_like(frequency, onto_sphere(), 0, true)
+                          : sphere_like(frequency, onto_atrium(), 0, false);
 }
 
 }  // namespace meshparticles

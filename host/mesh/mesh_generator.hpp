@@ -17,4 +17,15 @@ const std::vector<std::string>& generated_mesh_names();
 // Throws UserError for an unknown name.
 SurfaceMesh generate_mesh(const std::string& name);
 
+// The meshes that come at any size, for benchmarks on large meshes (not
+// committed): "sphere" and "atrium".
+const std::vector<std::string>& scalable_mesh_names();
+
+// `name` with about `vertices` vertices: the geodesic sphere of the nearest
+// frequency f (10 f^2 + 2 vertices), projected onto the shape and improved
+// like the committed meshes, without their final refinement to an exact
+// count (which costs a pass over all edges per vertex added). Throws
+// UserError for a name that does not scale or fewer than 12 vertices.
+SurfaceMesh generate_mesh_at(const std::string& name, std::size_t vertices);
+
 }  // namespace meshparticles
