@@ -21,7 +21,7 @@ if(MESHPARTICLES_FUZZ)
     host/mesh/mesh_reader.cpp
     host/mesh/mesh_checks.cpp
     host/mesh/surface_mesh.cpp
-    host/geodesics/single_source.cpp
+    host/geodesics/geodesic_solver.cpp
     host/geodesics/dijkstra.cpp
     host/geodesics/triangle_stencils.cpp
     host/geodesics/fast_marching.cpp
