@@ -69,6 +69,13 @@ std::optional<nlohmann::json> reusable_report(const std::filesystem::path& direc
   if (without_out(report.value("params", nlohmann::json::object())) != without_out(run_parameters(plan, directory))) {
     return std::nullopt;
   }
+  // The store is no parameter of report.json's, but a run on local balls may
+  // stop elsewhere than one on the dense table.
+  const nlohmann::json distances = report.value("distances", nlohmann::json::object());
+  if (distances.value("store", "") != store_kind_name(plan.distances.kind)) return std::nullopt;
+  if (plan.distances.kind == StoreKind::local && distances.value("radius", -1.0) != plan.distances.radius) {
+    return std::nullopt;
+  }
   if (!rows_match(directory, plan.request.particles, mesh)) return std::nullopt;
   try {
     finished_row(plan.request.mesh_label, directory.filename().string(), report);  // every figure the summary reads

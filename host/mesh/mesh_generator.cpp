@@ -280,7 +280,6 @@ SurfaceMesh atrium() {
 SurfaceMesh sphere() {
   return sphere_like(19, onto_sphere(), 4000, true);  // 3,612 vertices, refined to the paper's ~4k
 }
-}
 
 // An open, flat, jittered 20 x 20 grid on [0,1]^2: a boundary, and a plane
 // where geodesic distance is Euclidean distance.
