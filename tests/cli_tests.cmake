@@ -253,4 +253,4 @@ endif()
 expect_exit(batch_no_mesh 2 "folder .*holds no mesh file" batch ${CMAKE_CURRENT_SOURCE_DIR}/data/particles --out ${CMAKE_CURRENT_BINARY_DIR}/batch_no_mesh)
 expect_exit(batch_n_and_spacing 2 "--particles excludes --spacing" batch ${TORUS} -n 8 --spacing 0.1 --out ${CMAKE_CURRENT_BINARY_DIR}/batch_excludes)
 # n from a density: the torus's area (15.73) over the spacing gives n; the summary records it.
-expect_exit(batch_spacing 0 "\\[1/1\\] torus: ok, 1500 vertices, n 202, " batch ${TORUS} --spacing 0.3 --iterations 3 --out ${CMAKE_CURRENT_BINARY_DIR}/batch_spacing)
+expect_exit(batch_spacing 0 "\\[1/1\\] torus: ok, 1500 vertices, n 202, " batch ${TORUS} --spacing 0.3 --iterations 3 --force --out ${CMAKE_CURRENT_BINARY_DIR}/batch_spacing)

@@ -19,8 +19,9 @@ std::string duration_text(double seconds) {
 std::string mesh_line(const nlohmann::json& row, bool reused) {
   const std::string status = row.at("status");
   if (status != "ok") return status + ": " + row.at("reason").get<std::string>();
-  if (reused) return "ok, kept from an earlier batch (complete and valid)";
-  return "ok, " + std::to_string(row.at("vertices").get<std::size_t>()) + " vertices, n " +
+  // A kept output's figures are its earlier run's, seconds included.
+  const std::string kept = reused ? " (kept: an earlier output, complete and valid)" : "";
+  return "ok" + kept + ", " + std::to_string(row.at("vertices").get<std::size_t>()) + " vertices, n " +
          std::to_string(row.at("n").get<std::size_t>()) + ", " +
          std::to_string(row.at("iterations").get<std::size_t>()) + " iterations" +
          (row.at("converged").get<bool>() ? " (converged)" : " (iteration limit)") + ", " +
