@@ -23,6 +23,7 @@ LAYERS = [
     ["pipeline"],
     ["measurement"],
     ["reports"],
+    ["batch"],
     ["cli"],
 ]
 

@@ -5,7 +5,7 @@ set(DATA ${CMAKE_CURRENT_SOURCE_DIR}/data)
 # the end-to-end scripts below are `slow`.
 function(expect_exit_of name code pattern)
   add_test(NAME cli.${name} COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.sh ${code} ${pattern} ${ARGN})
-  if(ARGN MATCHES "(^|;)(run|sweep|bench|devices)(;|$)")
+  if(ARGN MATCHES "(^|;)(run|batch|sweep|bench|devices)(;|$)")
     set_tests_properties(cli.${name} PROPERTIES LABELS "fast;device")
   else()
     set_tests_properties(cli.${name} PROPERTIES LABELS fast)
@@ -233,3 +233,24 @@ expect_exit(quality_cutoff_with_dense 2 "--cutoff applies to --distances local a
 expect_exit(generate_vertices 0 "wrote .*sphere_1002\\.off \\(1002 vertices, 2000 triangles\\)" generate sphere --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)
 expect_exit(generate_vertices_torus 2 "--vertices applies to sphere and atrium, not torus" generate torus --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)
 expect_exit(generate_vertices_no_name 2 "--vertices needs the meshes to make at that size" generate --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)
+# batch: a population with a broken file, a resume after kill -9, and (when
+# built with MPI) three ranks equal to one process, a rank killed then resumed
+# (tests/batch_outputs.sh says what each checks).
+function(batch_test mode labels)
+  add_test(NAME cli.batch_${mode}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/batch_outputs.sh ${mode} $<TARGET_FILE:meshparticles>
+                   ${PROJECT_SOURCE_DIR}/meshes ${DATA} ${CMAKE_CURRENT_BINARY_DIR}/batch_${mode} ${ARGN})
+  set_tests_properties(cli.batch_${mode} PROPERTIES LABELS "${labels}" PROCESSORS 2)
+endfunction()
+batch_test(broken "fast;device")
+batch_test(resume "slow;device")
+if(MPI_CXX_FOUND)
+  batch_test(mpi "slow;device" ${MPIEXEC_EXECUTABLE})
+  batch_test(mpi_kill "slow;device" ${MPIEXEC_EXECUTABLE})
+else()
+  message(STATUS "MPI not found: cli.batch_mpi and cli.batch_mpi_kill are not registered")
+endif()
+expect_exit(batch_no_mesh 2 "folder .*holds no mesh file" batch ${CMAKE_CURRENT_SOURCE_DIR}/data/particles --out ${CMAKE_CURRENT_BINARY_DIR}/batch_no_mesh)
+expect_exit(batch_n_and_spacing 2 "--particles excludes --spacing" batch ${TORUS} -n 8 --spacing 0.1 --out ${CMAKE_CURRENT_BINARY_DIR}/batch_excludes)
+# n from a density: the torus's area (15.73) over the spacing gives n; the summary records it.
+expect_exit(batch_spacing 0 "\\[1/1\\] torus: ok, 1500 vertices, n 202, " batch ${TORUS} --spacing 0.3 --iterations 3 --force --out ${CMAKE_CURRENT_BINARY_DIR}/batch_spacing)

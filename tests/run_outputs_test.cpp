@@ -44,7 +44,7 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
 
   const auto directory = std::filesystem::temp_directory_path() / ("mp_outputs_" + std::to_string(::getpid()));
   prepare_output_directory(directory / "nested");
-  const nlohmann::json report = run_report(mesh, result, directory / "nested");
+  const nlohmann::json report = run_report(mesh, result, directory / "nested", "made-up digest");
   write_run_outputs(directory / "nested", mesh, result, report);
 
   const std::string csv = slurp(directory / "nested" / "particles.csv");

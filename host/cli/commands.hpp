@@ -43,6 +43,7 @@ void add_devices_command(CLI::App& app);
 void add_generate_command(CLI::App& app);
 void add_geodesics_command(CLI::App& app);
 void add_run_command(CLI::App& app);
+void add_batch_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_quality_command(CLI::App& app);

@@ -3,9 +3,8 @@
 // codes: 0 success, 2 bad input or arguments, 3 no OpenCL runtime, 1 a bug.
 #include <iostream>
 
+#include "batch/failure.hpp"
 #include "cli/commands.hpp"
-#include "common/user_error.hpp"
-#include "opencl/opencl.hpp"
 
 namespace meshparticles {
 
@@ -32,6 +31,7 @@ int main(int argc, char** argv) {
   add_generate_command(app);
   add_geodesics_command(app);
   add_run_command(app);
+  add_batch_command(app);
   add_sweep_command(app);
   add_bench_command(app);
   add_quality_command(app);
@@ -45,25 +45,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     std::cerr << "meshparticles: error: " << error.what() << " (see --help)\n";
     return 2;
-  } catch (const UserError& error) {
-    std::cerr << "meshparticles: error: " << error.what() << "\n";
-    return error.exit_code();
-  } catch (const cl::Error& error) {
-    // Devices allocate lazily: a buffer they cannot hold may be refused at
-    // the first launch that uses it. That is the input's size, not a bug.
-    const bool out_of_memory = error.err() == CL_MEM_OBJECT_ALLOCATION_FAILURE ||
-                               error.err() == CL_OUT_OF_RESOURCES || error.err() == CL_OUT_OF_HOST_MEMORY;
-    std::cerr << "meshparticles: error: OpenCL call " << error.what() << " failed: "
-              << opencl_error_text(error.err())
-              << (out_of_memory ? " (the device ran out of memory or resources: try fewer vertices or particles)" : "")
-              << "\n";
-    return out_of_memory ? 2 : 1;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "meshparticles: error: out of memory\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "meshparticles: internal error: " << error.what() << "\n";
-    return 1;
+  } catch (...) {
+    const Failure failure = describe_failure(std::current_exception());
+    std::cerr << "meshparticles: " << (failure.internal ? "internal error: " : "error: ") << failure.message << "\n";
+    return failure.exit_code;
   }
   return 0;
 }

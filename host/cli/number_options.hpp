@@ -42,6 +42,8 @@ inline constexpr WholeRange kSeedRange{0, std::numeric_limits<std::uint64_t>::ma
 // Generated meshes: from the smallest sphere to what 32-bit vertex ids and
 // this machine's memory allow to build.
 inline constexpr WholeRange kLargeMeshRange{12, 100000000};
+// generate --population: up to 100,000 shapes.
+inline constexpr WholeRange kPopulationRange{1, 100000};
 
 // `text` as a decimal whole number within `range`; throws UserError naming
 // `option` otherwise.

@@ -224,26 +224,34 @@ SurfaceMesh torus() {
   return to_surface_mesh(mesh);
 }
 
-// A closed, star-shaped, organ-like surface: an ellipsoid body with bulges of
-// different sizes (an appendage, four vein stubs, one broad bump), standing in
-// for the paper's left-atrium mesh.
-Projection onto_atrium() {
-  struct Bulge {
-    Vec3 direction;
-    double height, width;
-  };
-  const std::vector<Bulge> bulges = {
-      {normalized({0.3, 0.8, 0.5}), 0.45, 0.05},     // appendage
-      {normalized({-0.6, 0.5, 0.6}), 0.3, 0.015},    // vein stubs
-      {normalized({-0.6, -0.5, 0.6}), 0.3, 0.015},
-      {normalized({-0.7, 0.55, -0.45}), 0.25, 0.015},
-      {normalized({-0.7, -0.55, -0.45}), 0.25, 0.015},
-      {normalized({0.8, -0.3, -0.5}), 0.15, 0.25},   // broad bump
-  };
-  return [bulges](Vec3 p) {
+// A closed, star-shaped, organ-like surface: an ellipsoid body with bulges.
+struct Bulge {
+  Vec3 direction;
+  double height, width;
+};
+struct AtriumShape {
+  Vec3 axes;  // of the ellipsoid body
+  std::vector<Bulge> bulges;
+};
+
+// The committed atrium, standing in for the paper's left-atrium mesh: bulges
+// of different sizes (an appendage, four vein stubs, one broad bump).
+const AtriumShape kAtrium = {{1.25, 1.0, 0.85},
+                             {
+                                 {normalized({0.3, 0.8, 0.5}), 0.45, 0.05},  // appendage
+                                 {normalized({-0.6, 0.5, 0.6}), 0.3, 0.015},  // vein stubs
+                                 {normalized({-0.6, -0.5, 0.6}), 0.3, 0.015},
+                                 {normalized({-0.7, 0.55, -0.45}), 0.25, 0.015},
+                                 {normalized({-0.7, -0.55, -0.45}), 0.25, 0.015},
+                                 {normalized({0.8, -0.3, -0.5}), 0.15, 0.25},  // broad bump
+                             }};
+
+Projection onto_atrium(const AtriumShape& shape = kAtrium) {
+  return [shape](Vec3 p) {
     const Vec3 d = normalized(p);
-    double radius = 1.0 / std::sqrt(d.x * d.x / (1.25 * 1.25) + d.y * d.y + d.z * d.z / (0.85 * 0.85));
-    for (const Bulge& b : bulges) radius += b.height * std::exp(-(1.0 - dot(d, b.direction)) / b.width);
+    const Vec3& a = shape.axes;
+    double radius = 1.0 / std::sqrt(d.x * d.x / (a.x * a.x) + d.y * d.y / (a.y * a.y) + d.z * d.z / (a.z * a.z));
+    for (const Bulge& b : shape.bulges) radius += b.height * std::exp(-(1.0 - dot(d, b.direction)) / b.width);
     return radius * d;
   };
 }
@@ -334,6 +342,13 @@ const std::map<std::string, std::function<SurfaceMesh()>>& generators() {
   return table;
 }
 
+// The frequency f whose geodesic sphere (10 f^2 + 2 vertices) comes nearest
+// to `vertices`. Throws UserError under 12.
+int frequency_for(std::size_t vertices) {
+  if (vertices < 12) throw UserError("--vertices " + std::to_string(vertices) + ": a sphere needs at least 12");
+  return std::max(1, int(std::lround(std::sqrt(double(vertices - 2) / 10.0))));
+}
+
 }  // namespace
 
 const std::vector<std::string>& generated_mesh_names() {
@@ -357,10 +372,26 @@ SurfaceMesh generate_mesh_at(const std::string& name, std::size_t vertices) {
   if (name != "sphere" && name != "atrium") {
     throw UserError("--vertices applies to sphere and atrium, not " + name);
   }
-  if (vertices < 12) throw UserError("--vertices " + std::to_string(vertices) + ": a sphere needs at least 12");
-  const int frequency = std::max(1, int(std::lround(std::sqrt(double(vertices - 2) / 10.0))));
+  const int frequency = frequency_for(vertices);
   return name == "sphere" ? sphere_like(frequency, onto_sphere(), 0, true)
                           : sphere_like(frequency, onto_atrium(), 0, false);
+}
+
+SurfaceMesh generate_atrium_variant(std::uint64_t seed, std::size_t vertices) {
+  SplitMix64 random(seed);
+  const auto around = [&random](double value, double spread) {
+    return value * (1.0 + spread * (2 * random.uniform() - 1));
+  };
+  // The whole shape scaled too: a population's areas differ, as patients' do.
+  const double scale = around(1.0, 0.2);
+  AtriumShape shape{
+      scale * Vec3{around(kAtrium.axes.x, 0.15), around(kAtrium.axes.y, 0.15), around(kAtrium.axes.z, 0.15)}, {}};
+  for (const Bulge& bulge : kAtrium.bulges) {
+    const Vec3 tilt{around(0.15, 1.0), around(0.15, 1.0), around(0.15, 1.0)};
+    shape.bulges.push_back(
+        {normalized(bulge.direction + tilt), scale * around(bulge.height, 0.4), around(bulge.width, 0.3)});
+  }
+  return sphere_like(frequency_for(vertices), onto_atrium(shape), 0, false);
 }
 
 }  // namespace meshparticles

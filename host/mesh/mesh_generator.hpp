@@ -4,6 +4,7 @@
 // imitate the output of an FEM mesher: a coarse base mesh refined by splitting
 // its longest edges, then Delaunay edge flips and smoothing with projection
 // back onto the analytic surface, which leaves irregular valences.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,10 @@ const std::vector<std::string>& scalable_mesh_names();
 // count (which costs a pass over all edges per vertex added). Throws
 // UserError for a name that does not scale or fewer than 12 vertices.
 SurfaceMesh generate_mesh_at(const std::string& name, std::size_t vertices);
+
+// An atrium-like shape of a population: the committed atrium's body and
+// bulges, each moved, resized and reshaped at random from `seed`, the whole
+// scaled by 0.8 to 1.2, at about `vertices` vertices as generate_mesh_at.
+SurfaceMesh generate_atrium_variant(std::uint64_t seed, std::size_t vertices);
 
 }  // namespace meshparticles

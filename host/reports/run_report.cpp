@@ -12,7 +12,8 @@ double mean(const std::vector<IterationRecord>& trace, double IterationRecord::*
   return trace.empty() ? 0.0 : sum / double(trace.size());
 }
 
-// Every option in effect, defaults resolved.
+}  // namespace
+
 nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& out) {
   const RunRequest& request = plan.request;
   nlohmann::json params = {{"n", request.particles},
@@ -42,6 +43,8 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
   return params;
 }
 
+namespace {
+
 // The store and what it cost: where the table came from, or the balls the
 // local store computed during the run.
 nlohmann::json distances_json(const RunResult& result) {
@@ -65,7 +68,8 @@ nlohmann::json distances_json(const RunResult& result) {
 
 }  // namespace
 
-nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out) {
+nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
+                          const std::optional<std::string>& mesh_sha256) {
   const RunOutcome& outcome = result.outcome;
   nlohmann::json trace = nlohmann::json::array();
   bool has_kernel_times = false;
@@ -84,7 +88,8 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
       {"mesh", {{"path", result.plan.request.mesh_label},
                 {"vertices", mesh.vertex_count()},
                 {"faces", mesh.triangle_count()},
-                {"area", mesh.area()}}},
+                {"area", mesh.area()},
+                {"sha256", mesh_sha256 ? nlohmann::json(*mesh_sha256) : nlohmann::json(nullptr)}}},
       {"params", run_parameters(result.plan, out)},
       {"device", result.device},
       {"distances", distances_json(result)},

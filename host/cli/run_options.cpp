@@ -1,0 +1,74 @@
+#include "cli/run_options.hpp"
+
+#include "backends/backend_table.hpp"
+#include "cli/number_options.hpp"
+#include "tuning/tuning_store.hpp"
+
+namespace meshparticles {
+
+RunRequest RunOptions::resolved_request() const {
+  RunRequest resolved = request;
+  if (!scheme.empty()) resolved.scheme = parse_scheme(scheme);
+  resolved.init = parse_init(init);
+  resolved.potential = parse_potential(potential);
+  if (!weights.empty()) resolved.backend.weights = parse_weight_format(weights);
+  resolved.backend.tuning_file = tuning_file_or_default(tuning_file);
+  resolved.distances = store.request(table.request(parse_method(geodesic)));
+  resolved.quiet = table.quiet;
+  return resolved;
+}
+
+void add_run_options(CLI::App& command, RunOptions& options) {
+  RunRequest& request = options.request;
+  add_whole_number_option(command, "-n,--particles", request.particles, kParticleRange,
+                          "Number of particles, at most the mesh's vertices");
+  add_whole_number_option(command, "--iterations", request.max_iterations, kRunIterationRange,
+                          "Stop after this many iterations (or when none moves); 0 writes the start and its quality");
+  std::string backends_help;
+  for (const BackendDescriptor* backend : backend_table()) {
+    backends_help += (backends_help.empty() ? "" : "; ") + backend->name + ": " + backend->summary;
+  }
+  request.backend.name.clear();  // the default follows the distance store (plan_run)
+  command.add_option("--backend", request.backend.name, backends_help)
+      ->check(CLI::IsMember(backend_names()))
+      ->default_str("field on a dense table, serial-field on local distances");
+  command.add_option("--scheme", options.scheme,
+                  "sequential, synchronous, colored or monotone (colored, with every iteration lowering the energy; "
+                  "default: sequential on serial and serial-field, monotone on the OpenCL backends)")
+      ->check(CLI::IsMember({"sequential", "synchronous", "colored", "monotone"}));
+  add_whole_number_option(command, "--colors", request.colors, kColorRange,
+                          "Groups of the colored and monotone schemes (default " + std::to_string(kDefaultColors) + ")");
+  command.add_option("--init", options.init, "Start: v0 (all on one vertex), random, farthest (farthest-point sampling)")
+      ->check(CLI::IsMember({"v0", "random", "farthest"}))
+      ->capture_default_str();
+  add_whole_number_option(command, "--start-vertex", request.start_vertex, kVertexIdRange,
+                          "Input vertex id for v0, or the first farthest sample");
+  add_whole_number_option(command, "--seed", request.seed, kSeedRange, "Seed of random and farthest starts");
+  add_positive_number_option(command, "--sigma", request.sigma,
+                             "Sigma in mesh units (default from the particle spacing, see docs)");
+  command.add_option("--potential", options.potential, "exp: exp(-d/(2 sigma^2)); gauss: exp(-d^2/(2 sigma^2))")
+      ->check(CLI::IsMember({"exp", "gauss"}))
+      ->capture_default_str();
+  command.add_option("--geodesic", options.geodesic, "Distance solver: fmm or dijkstra")
+      ->check(CLI::IsMember({"fmm", "dijkstra"}))
+      ->capture_default_str();
+  add_distance_store_options(command, options.store);
+  add_device_option(command, request.backend.device);
+  add_whole_number_option(command, "--wg", request.backend.work_group_size, kWorkGroupRange,
+                          "Work-group size of the kernel");
+  add_whole_number_option(command, "--tile", request.backend.tile_size, kTileRange,
+                          "Tile size (particles staged in local memory; tiled only)");
+  command.add_option("--weights", options.weights,
+                  "Weight table of the field backends: float (float32, default) or half (half the bytes)")
+      ->check(CLI::IsMember({"float", "half"}));
+  add_whole_number_option(command, "--rebuild-every", request.backend.rebuild_every, kRebuildRange,
+                          "Field backends: rebuild the field from scratch every N iterations (default 0: never; it "
+                          "is exact and does not drift)");
+  command.add_option("--tuning-file", options.tuning_file,
+                     "Sizes saved by `sweep --save`, used when --wg and --tile are absent "
+                     "(default: $XDG_CONFIG_HOME/meshparticles/tuning.json)");
+  add_strict_option(command, options.read);
+  add_distance_table_options(command, options.table);
+}
+
+}  // namespace meshparticles

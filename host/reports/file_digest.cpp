@@ -1,0 +1,65 @@
+#include "reports/file_digest.hpp"
+
+#include <openssl/evp.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+#include "common/user_error.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+class Sha256 {
+ public:
+  Sha256() : context_(EVP_MD_CTX_new(), EVP_MD_CTX_free) {
+    if (!context_ || EVP_DigestInit_ex(context_.get(), EVP_sha256(), nullptr) != 1) {
+      throw std::runtime_error("OpenSSL cannot start a SHA-256 digest");
+    }
+  }
+  void add(const char* data, std::size_t bytes) {
+    if (EVP_DigestUpdate(context_.get(), data, bytes) != 1) throw std::runtime_error("OpenSSL SHA-256 update failed");
+  }
+  std::string hex() {
+    std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
+    unsigned int length = 0;
+    if (EVP_DigestFinal_ex(context_.get(), digest.data(), &length) != 1) {
+      throw std::runtime_error("OpenSSL SHA-256 final step failed");
+    }
+    static const char digits[] = "0123456789abcdef";
+    std::string text;
+    for (unsigned int i = 0; i < length; ++i) {
+      text += digits[digest[i] >> 4];
+      text += digits[digest[i] & 15];
+    }
+    return text;
+  }
+
+ private:
+  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context_;
+};
+
+}  // namespace
+
+std::string file_sha256(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw UserError(file.string() + ": cannot read: " + std::strerror(errno));
+  Sha256 digest;
+  std::array<char, 1 << 16> buffer;
+  while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0) digest.add(buffer.data(), std::size_t(in.gcount()));
+  if (in.bad()) throw UserError(file.string() + ": cannot read: " + std::strerror(errno));
+  return digest.hex();
+}
+
+std::string text_sha256(const std::string& text) {
+  Sha256 digest;
+  digest.add(text.data(), text.size());
+  return digest.hex();
+}
+
+}  // namespace meshparticles
