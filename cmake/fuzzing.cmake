@@ -11,21 +11,7 @@ if(MESHPARTICLES_FUZZ)
   # libstdc++'s own bounds checks (vector and span indexing) catch what ASan
   # cannot see inside an allocation.
   add_compile_definitions(_GLIBCXX_ASSERTIONS)
-  add_library(fuzzed_mesh_input STATIC
-    host/mesh/byte_cursor.cpp
-    host/mesh/mesh_file.cpp
-    host/mesh/off_reader.cpp
-    host/mesh/ply_reader.cpp
-    host/mesh/obj_reader.cpp
-    host/mesh/stl_reader.cpp
-    host/mesh/mesh_reader.cpp
-    host/mesh/mesh_checks.cpp
-    host/mesh/surface_mesh.cpp
-    host/geodesics/geodesic_solver.cpp
-    host/geodesics/dijkstra.cpp
-    host/geodesics/triangle_stencils.cpp
-    host/geodesics/fast_marching.cpp
-  )
+  add_library(fuzzed_mesh_input STATIC ${MESH_INPUT_SOURCES} ${GEODESIC_SOLVER_SOURCES})
   target_include_directories(fuzzed_mesh_input PUBLIC host)
   target_compile_options(fuzzed_mesh_input PUBLIC -g -O1 ${SANITIZERS} -fsanitize=fuzzer-no-link)
   target_link_options(fuzzed_mesh_input PUBLIC ${SANITIZERS})
