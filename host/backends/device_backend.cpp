@@ -127,7 +127,9 @@ void DeviceBackend::set_positions(std::span<const VertexId> positions) {
     positions_ = allocate(CL_MEM_READ_WRITE, slots * sizeof(cl_uint), "the positions");
     chosen_ = allocate(CL_MEM_READ_WRITE, slots * sizeof(cl_uint), "the choices");
     move_counts_ = allocate(CL_MEM_READ_WRITE, slots * sizeof(cl_uint), "the move counts");  // at most n colours move
-    moves_ = allocate(CL_MEM_READ_WRITE, slots * sizeof(cl_uint2), "the move lists");
+    // Colour k's list starts at k * ceil(n / K) (apply_moves.cl): the last
+    // colour's list may end past n, never past 2n.
+    moves_ = allocate(CL_MEM_READ_WRITE, 2 * slots * sizeof(cl_uint2), "the move lists");
     apply_moves_.setArg(0, positions_);
     apply_moves_.setArg(1, chosen_);
     apply_moves_.setArg(2, particle_count_);
