@@ -91,7 +91,7 @@ CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& m
   checked.rebuild_every = request.rebuild_every.value_or(kDefaultRebuildEvery);
   if (!dense_distances && backend.needs_dense_table) {
     throw UserError("the " + backend.name + " backend streams rows of the dense distance table: use --distances "
-                    "dense (if the table fits), or serial-field or serial with local distances");
+                    "dense (if the table fits), or field, serial-field or serial with local distances");
   }
   if (dense_distances) {
     check_table_fits(mesh.vertex_count(), sizeof(float) + backend.extra_host_bytes_per_entry,

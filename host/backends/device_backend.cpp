@@ -20,7 +20,8 @@ void check_device_limits(const DeviceDescription& device, const UpdateKernel& ke
 }
 
 void check_device_memory(const DeviceDescription& device, const UpdateKernel& kernel, std::size_t vertex_count,
-                         std::size_t edge_count, std::size_t particle_count) {
+                         std::size_t edge_count, std::size_t particle_count, bool dense_table) {
+  if (!dense_table) return;
   const std::string backend = "the " + kernel.name() + " backend's ";
   check_table_fits(vertex_count, sizeof(float), device.max_allocation_bytes, "table on the device",
                    "the largest buffer " + device.name + " allows");
@@ -53,10 +54,11 @@ double total_milliseconds(const std::vector<cl::Event>& events) {
 
 }  // namespace
 
-DeviceBackend::DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel)
+DeviceBackend::DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel,
+                             bool dense_table)
     : device_(device), kernel_(kernel), vertex_count_(cl_uint(mesh.vertex_count())) {
   check_device_limits(device, kernel);
-  check_device_memory(device, kernel, mesh.vertex_count(), mesh.edge_count(), 0);
+  check_device_memory(device, kernel, mesh.vertex_count(), mesh.edge_count(), 0, dense_table);
   context_ = device_context(device.device);
   queue_ = cl::CommandQueue(context_, device.device, CL_QUEUE_PROFILING_ENABLE);
   auto read_only = [&](const std::vector<VertexId>& values, const std::string& what) {
@@ -70,7 +72,12 @@ DeviceBackend::DeviceBackend(const DeviceDescription& device, const SurfaceMesh&
 }
 
 cl::Program DeviceBackend::program(const DeviceDescription& device, Potential potential) {
-  const cl::Program built = cached_program(device.device, kernel_.spec().program_files, kernel_.defines(potential));
+  return program(device, potential, kernel_.spec().program_files);
+}
+
+cl::Program DeviceBackend::program(const DeviceDescription& device, Potential potential,
+                                   const std::vector<std::string>& files) {
+  const cl::Program built = cached_program(device.device, files, kernel_.defines(potential));
   apply_moves_ = cl::Kernel(built, "apply_moves");
   return built;
 }

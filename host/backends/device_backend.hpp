@@ -31,9 +31,11 @@ void check_device_limits(const DeviceDescription& device, const UpdateKernel& ke
 // the vertices that would fit) when the backend's buffers for this mesh and
 // n cannot fit on the device: its V x V table against the largest buffer,
 // everything against the global memory. Checked before any distance is
-// computed and again before anything is allocated.
+// computed and again before anything is allocated. Without `dense_table`
+// (the field backend on local distances) there is no table to check here:
+// check_local_field_device checks its balls.
 void check_device_memory(const DeviceDescription& device, const UpdateKernel& kernel, std::size_t vertex_count,
-                         std::size_t edge_count, std::size_t particle_count);
+                         std::size_t edge_count, std::size_t particle_count, bool dense_table = true);
 
 class DeviceBackend : public ParticleBackend {
  public:
@@ -57,10 +59,13 @@ class DeviceBackend : public ParticleBackend {
   double time_update_kernels(Scheme scheme, unsigned colors);
 
  protected:
-  DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel);
-  // The backend's one program (its descriptor's files, apply_moves.cl among
-  // them), from the process's program cache; the commit kernel is taken from it.
+  DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel,
+                bool dense_table = true);
+  // The backend's one program (its descriptor's files, or `files`;
+  // apply_moves.cl among them), from the process's program cache; the
+  // commit kernel is taken from it.
   cl::Program program(const DeviceDescription& device, Potential potential);
+  cl::Program program(const DeviceDescription& device, Potential potential, const std::vector<std::string>& files);
   // Refuses sizes the compiled kernel cannot take: its work-group limit and
   // its local memory (CL_KERNEL_WORK_GROUP_SIZE, CL_KERNEL_LOCAL_MEM_SIZE).
   void check_kernel_limits(const cl::Kernel& kernel, const DeviceDescription& device) const;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "backends/local_device_field_backend.hpp"
 #include "particles/field_units.hpp"
 
 namespace meshparticles {
@@ -176,7 +177,6 @@ const BackendDescriptor& field_backend() {
     d.summary = "candidate energies from an accumulated field: the same choices, two reads per candidate (OpenCL)";
     d.field_method = true;
     d.default_scheme = Scheme::monotone;
-    d.needs_dense_table = true;
     d.paper_row = PaperRow::gpu2_tiled;  // beside the paper's fastest
     DeviceKernelSpec& spec = d.device.emplace();
     spec.update_function = "field_update";
@@ -196,6 +196,9 @@ const BackendDescriptor& field_backend() {
     };
     spec.make = [](const DeviceDescription& device, const UpdateKernel& kernel,
                    const BackendInputs& inputs) -> std::unique_ptr<DeviceBackend> {
+      if (const LocalDistances* balls = inputs.distances.local_balls()) {
+        return std::make_unique<LocalDeviceFieldBackend>(device, kernel, inputs, *balls);
+      }
       return std::make_unique<FieldBackend>(device, kernel, inputs);
     };
     return d;

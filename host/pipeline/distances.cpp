@@ -11,8 +11,6 @@
 
 namespace meshparticles {
 
-namespace {
-
 // A ball of radius r holds about pi r^2 / (A / V) vertices; a run holds the
 // balls of the particles' vertices and one-rings (at most 7 per particle, at
 // most every vertex), each entry a vertex id and a float.
@@ -22,8 +20,6 @@ std::uint64_t estimated_ball_bytes(const SurfaceMesh& mesh, double radius, std::
   const double balls = std::min(double(mesh.vertex_count()), 7.0 * double(particles));
   return std::uint64_t(balls * per_ball * double(sizeof(VertexId) + sizeof(float)));
 }
-
-}  // namespace
 
 StoreKind parse_store_kind(const std::string& name) {
   if (name == "dense") return StoreKind::dense;

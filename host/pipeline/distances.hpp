@@ -45,6 +45,10 @@ struct DistancesPlan {
   std::uint64_t ball_budget_bytes = 0;
 };
 
+// The bytes of the balls a run on local distances holds at once, estimated
+// from the mesh's area before any is computed.
+std::uint64_t estimated_ball_bytes(const SurfaceMesh& mesh, double radius, std::size_t particles);
+
 // Decides auto and checks that the store fits before anything is computed:
 // the table against host memory (dense), the balls the run will hold at once
 // against their budget (local). `backend_needs_dense`: the backend streams

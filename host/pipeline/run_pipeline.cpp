@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "backends/backend_table.hpp"
+#include "backends/local_device_field_backend.hpp"
 #include "common/user_error.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
@@ -37,8 +38,7 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   if (default_backend) {
     const bool dense = plan.distances.kind == StoreKind::dense;
     backend.name = dense ? "field" : "serial-field";
-    plan.backend_from = dense ? "default: field on the dense table"
-                              : "default: serial-field on local distances (field needs the dense table)";
+    plan.backend_from = dense ? "default: field on the dense table" : "default: serial-field on local distances";
   } else {
     plan.backend_from = "--backend";
   }
@@ -57,6 +57,9 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
     plan.placement.start_vertex = surface_vertex_for_option(mesh, *request.start_vertex, "--start-vertex");
   }
   plan.backend = check_backend(backend, mesh, request.particles, plan.distances.kind == StoreKind::dense);
+  if (plan.backend.device && plan.distances.kind == StoreKind::local) {  // field on balls: before any is computed
+    check_local_field_device(*plan.backend.device, estimated_ball_bytes(mesh, plan.distances.radius, request.particles));
+  }
   plan.energy = {request.potential,
                  request.sigma.value_or(default_sigma(request.potential, mesh.area(), request.particles))};
   check_sigma_computable(plan.energy);

@@ -1,0 +1,356 @@
+#include "backends/local_device_field_backend.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "geodesics/memory_guard.hpp"
+#include "opencl/program_cache.hpp"
+#include "particles/field_units.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+constexpr std::uint32_t kNoRow = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint64_t kEntryBytes = sizeof(VertexId) + sizeof(float);  // a row entry: vertex and distance
+
+// Arguments, in the order of kernels/local_field.cl; kRows is the first of
+// the four pool arguments.
+enum UpdateArg : cl_uint {
+  kUpdateField, kUpdateRows, kUpdateInverse = kUpdateRows + 4, kUpdateRingOffsets, kUpdateRingNeighbors,
+  kUpdateOccupancy, kUpdatePositions, kUpdateParticleCount, kUpdateColor
+  // then colors, rank_stacks, chosen, claims
+};
+constexpr cl_uint kUpdateChosen = kUpdateColor + 3, kUpdateClaims = kUpdateColor + 4;
+enum ScatterArg : cl_uint { kScatterMoves, kScatterFirst, kScatterRows, kScatterInverse = kScatterRows + 4,
+                            kScatterCandidate, kScatterField, kScatterOccupancy };
+enum SumArg : cl_uint { kSumVertices, kSumCount, kSumRows, kSumInverse = kSumRows + 4, kSumOccupancy, kSumField };
+enum MarkArg : cl_uint { kMarkChanges, kMarkCount, kMarkStart, kMarkLength, kMarkCandidate };
+enum EnergyArg : cl_uint { kEnergyPositions, kEnergyCount, kEnergyRows, kEnergyInverse = kEnergyRows + 4,
+                           kEnergyField, kEnergies };
+
+// Per vertex: one-rings (4 + 4 per ring entry, counted as 8 per edge),
+// claims, F, occupancy, the candidate flag, row start and length; per
+// particle: positions, choices, move counts and lists, energies.
+std::uint64_t fixed_device_bytes(std::uint64_t vertices, std::uint64_t edges, std::uint64_t particles) {
+  return 4 * (vertices + 1) + 8 * edges + (4 + 8 + 4 + 1 + 8) * vertices + 28 * particles;
+}
+
+// The row entries the device can hold: three quarters of what its memory
+// leaves beside the fixed buffers (room for the scratch lists and the
+// runtime), each of the two pool buffers within the largest allocation.
+std::uint64_t pool_limit_entries(const DeviceDescription& device, std::uint64_t fixed_bytes) {
+  const std::uint64_t global = device.global_memory_bytes;
+  const std::uint64_t left = global > fixed_bytes ? (global - fixed_bytes) / 4 * 3 : 0;
+  return std::min(left / kEntryBytes, std::uint64_t(device.max_allocation_bytes) / sizeof(VertexId));
+}
+
+}  // namespace
+
+void check_local_field_device(const DeviceDescription& device, std::uint64_t ball_bytes) {
+  const std::uint64_t limit = pool_limit_entries(device, 0) * kEntryBytes;
+  if (ball_bytes > limit) {
+    throw UserError("the field backend on local distances needs about " + gibibytes(double(ball_bytes)) +
+                    " of distance balls on " + device.name + ", which can give them " + gibibytes(double(limit)) +
+                    ": more particles (smaller balls), a smaller --cutoff, or --backend serial-field");
+  }
+}
+
+LocalDeviceFieldBackend::LocalDeviceFieldBackend(const DeviceDescription& device, const UpdateKernel& kernel,
+                                                 const BackendInputs& inputs, const LocalDistances& balls,
+                                                 double pool_headroom)
+    : DeviceBackend(device, inputs.mesh, kernel, /*dense_table=*/false),
+      mesh_(inputs.mesh),
+      balls_(balls),
+      inv_two_sigma_sq_(float(inputs.energy.inv_two_sigma_sq())),
+      rebuild_every_(inputs.rebuild_every),
+      pool_limit_entries_(
+          pool_limit_entries(device, fixed_device_bytes(vertex_count_, inputs.mesh.edge_count(), 0))),
+      pool_headroom_(pool_headroom),
+      candidate_count_(inputs.mesh.vertex_count(), 0),
+      held_(inputs.mesh.vertex_count()),
+      row_start_host_(inputs.mesh.vertex_count(), kNoRow) {
+  if (kernel.weights != WeightFormat::float32) {
+    throw UserError("--weights half applies to the field backend on the dense table; on local distances its "
+                    "weights are float32");
+  }
+  const cl::Program built = program(device, inputs.energy.potential, {"local_field.cl", "apply_moves.cl"});
+  update_ = cl::Kernel(built, "local_field_update");
+  scatter_ = cl::Kernel(built, "local_field_scatter");
+  sum_ = cl::Kernel(built, "local_field_sum");
+  mark_ = cl::Kernel(built, "local_field_mark");
+  energies_kernel_ = cl::Kernel(built, "local_field_energies");
+  for (const cl::Kernel* launched : {&update_, &scatter_}) check_kernel_limits(*launched, device);
+
+  field_ = allocate(CL_MEM_READ_WRITE, vertex_count_ * sizeof(cl_long), "the field");
+  occupancy_ = allocate(CL_MEM_READ_WRITE, vertex_count_ * sizeof(cl_uint), "the occupancy");
+  candidate_flags_ = allocate(CL_MEM_READ_WRITE, vertex_count_, "the candidate flags");
+  row_start_ = allocate(CL_MEM_READ_WRITE, vertex_count_ * sizeof(cl_uint), "the row starts");
+  row_length_ = allocate(CL_MEM_READ_WRITE, vertex_count_ * sizeof(cl_uint), "the row lengths");
+  queue_.enqueueFillBuffer(row_start_, cl_uint{0}, 0, vertex_count_ * sizeof(cl_uint));
+  queue_.enqueueFillBuffer(row_length_, cl_uint{0}, 0, vertex_count_ * sizeof(cl_uint));
+  queue_.enqueueFillBuffer(candidate_flags_, cl_uchar{0}, 0, vertex_count_);
+
+  update_.setArg(kUpdateField, field_);
+  update_.setArg(kUpdateInverse, inv_two_sigma_sq_);
+  update_.setArg(kUpdateRingOffsets, ring_offsets_);
+  update_.setArg(kUpdateRingNeighbors, ring_neighbors_);
+  update_.setArg(kUpdateOccupancy, occupancy_);
+  update_.setArg(kUpdateClaims, claims_);
+  scatter_.setArg(kScatterInverse, inv_two_sigma_sq_);
+  scatter_.setArg(kScatterCandidate, candidate_flags_);
+  scatter_.setArg(kScatterField, field_);
+  scatter_.setArg(kScatterOccupancy, occupancy_);
+  sum_.setArg(kSumInverse, inv_two_sigma_sq_);
+  sum_.setArg(kSumOccupancy, occupancy_);
+  sum_.setArg(kSumField, field_);
+  mark_.setArg(kMarkStart, row_start_);
+  mark_.setArg(kMarkLength, row_length_);
+  mark_.setArg(kMarkCandidate, candidate_flags_);
+  energies_kernel_.setArg(kEnergyInverse, inv_two_sigma_sq_);
+  energies_kernel_.setArg(kEnergyField, field_);
+}
+
+void LocalDeviceFieldBackend::set_row_args(cl::Kernel& kernel, cl_uint first) {
+  kernel.setArg(first, row_start_);
+  kernel.setArg(first + 1, row_length_);
+  kernel.setArg(first + 2, row_vertices_);
+  kernel.setArg(first + 3, row_distances_);
+}
+
+void LocalDeviceFieldBackend::count_candidates(VertexId vertex, int delta, std::vector<VertexId>& changed) {
+  const auto count = [&](VertexId v) {
+    if (delta > 0 && candidate_count_[v]++ == 0) changed.push_back(v);
+    if (delta < 0 && --candidate_count_[v] == 0) changed.push_back(v);
+  };
+  count(vertex);
+  for (const VertexId v : mesh_.one_ring(vertex)) count(v);
+}
+
+std::vector<VertexId> LocalDeviceFieldBackend::candidates() const {
+  std::vector<VertexId> list;
+  for (VertexId v = 0; v < candidate_count_.size(); ++v) {
+    if (candidate_count_[v] > 0) list.push_back(v);
+  }
+  return list;
+}
+
+void LocalDeviceFieldBackend::repack(std::size_t entries_needed) {
+  if (entries_needed > pool_limit_entries_) {
+    throw UserError("the field backend on local distances needs " + gibibytes(double(entries_needed * kEntryBytes)) +
+                    " of distance balls on " + device_.name + ", which can give them " +
+                    gibibytes(double(pool_limit_entries_ * kEntryBytes)) +
+                    ": more particles (smaller balls), a smaller --cutoff, or --backend serial-field");
+  }
+  // Room to grow: the candidates change as the particles move.
+  const auto roomy = std::uint64_t(double(entries_needed) * (1 + pool_headroom_)) + 1;
+  const std::uint64_t wanted = std::min(pool_limit_entries_, roomy);
+  if (wanted > pool_capacity_) {
+    pool_capacity_ = wanted;
+    row_vertices_ = allocate(CL_MEM_READ_ONLY, pool_capacity_ * sizeof(cl_uint), "the distance-ball rows");
+    row_distances_ = allocate(CL_MEM_READ_ONLY, pool_capacity_ * sizeof(cl_float), "the distance-ball rows");
+    set_row_args(update_, kUpdateRows);
+    set_row_args(scatter_, kScatterRows);
+    set_row_args(sum_, kSumRows);
+    set_row_args(energies_kernel_, kEnergyRows);
+  }
+  std::vector<cl_uint> vertices, starts(vertex_count_, 0), lengths(vertex_count_, 0);
+  std::vector<cl_float> distances;
+  std::vector<cl_uchar> flags(vertex_count_, 0);
+  vertices.reserve(entries_needed);
+  distances.reserve(entries_needed);
+  for (VertexId v = 0; v < vertex_count_; ++v) {
+    if (candidate_count_[v] == 0) {
+      held_[v].reset();
+      row_start_host_[v] = kNoRow;
+      continue;
+    }
+    const Ball& ball = *held_[v];
+    row_start_host_[v] = starts[v] = cl_uint(vertices.size());
+    lengths[v] = cl_uint(ball.vertices.size());
+    flags[v] = 1;
+    vertices.insert(vertices.end(), ball.vertices.begin(), ball.vertices.end());
+    distances.insert(distances.end(), ball.distances.begin(), ball.distances.end());
+  }
+  pool_used_ = vertices.size();
+  ++repacks_;
+  if (!vertices.empty()) {
+    queue_.enqueueWriteBuffer(row_vertices_, CL_TRUE, 0, vertices.size() * sizeof(cl_uint), vertices.data());
+    queue_.enqueueWriteBuffer(row_distances_, CL_TRUE, 0, distances.size() * sizeof(cl_float), distances.data());
+  }
+  queue_.enqueueWriteBuffer(row_start_, CL_TRUE, 0, starts.size() * sizeof(cl_uint), starts.data());
+  queue_.enqueueWriteBuffer(row_length_, CL_TRUE, 0, lengths.size() * sizeof(cl_uint), lengths.data());
+  queue_.enqueueWriteBuffer(candidate_flags_, CL_TRUE, 0, flags.size(), flags.data());
+}
+
+void LocalDeviceFieldBackend::upload_list(cl::Buffer& buffer, std::size_t& capacity, const void* initial,
+                                          std::size_t bytes, const std::string& what) {
+  if (bytes > capacity) {
+    capacity = std::max(bytes, 2 * capacity);
+    buffer = allocate(CL_MEM_READ_ONLY, capacity, what);
+  }
+  // Blocking: the list lives on the caller's stack. In order after the
+  // launches before it, so the last reader of the old contents is done.
+  queue_.enqueueWriteBuffer(buffer, CL_TRUE, 0, bytes, initial);
+}
+
+void LocalDeviceFieldBackend::upload_marks(const std::vector<cl_uint4>& changes) {
+  if (changes.empty()) return;
+  upload_list(marks_list_, marks_bytes_, changes.data(), changes.size() * sizeof(cl_uint4), "the candidate changes");
+  mark_.setArg(kMarkChanges, marks_list_);
+  mark_.setArg(kMarkCount, cl_uint(changes.size()));
+  queue_.enqueueNDRangeKernel(mark_, cl::NullRange, cl::NDRange(changes.size()));
+}
+
+void LocalDeviceFieldBackend::enqueue_sums(const std::vector<VertexId>& vertices) {
+  if (vertices.empty()) return;
+  upload_list(sums_list_, sums_bytes_, vertices.data(), vertices.size() * sizeof(cl_uint), "the new candidates");
+  sum_.setArg(kSumVertices, sums_list_);
+  sum_.setArg(kSumCount, cl_uint(vertices.size()));
+  queue_.enqueueNDRangeKernel(sum_, cl::NullRange, cl::NDRange(vertices.size()));
+}
+
+void LocalDeviceFieldBackend::place_rows(const std::vector<VertexId>& arrivals,
+                                         const std::vector<VertexId>& departures) {
+  std::vector<VertexId> missing;
+  for (const VertexId v : arrivals) {
+    if (!held_[v]) missing.push_back(v);
+  }
+  balls_.prefetch(missing);  // on all cores
+  std::uint64_t entries = 0;
+  for (const VertexId v : missing) {
+    held_[v] = balls_.ball(v);
+    entries += held_[v]->vertices.size();
+  }
+  if (pool_used_ + entries > pool_capacity_) {  // rewrite with the current candidates' rows only
+    std::uint64_t needed = 0;
+    for (VertexId v = 0; v < vertex_count_; ++v) {
+      if (candidate_count_[v] > 0) needed += held_[v]->vertices.size();
+    }
+    repack(needed);
+    return;
+  }
+  std::vector<cl_uint> vertices;
+  std::vector<cl_float> distances;
+  for (const VertexId v : missing) {
+    row_start_host_[v] = std::uint32_t(pool_used_ + vertices.size());
+    vertices.insert(vertices.end(), held_[v]->vertices.begin(), held_[v]->vertices.end());
+    distances.insert(distances.end(), held_[v]->distances.begin(), held_[v]->distances.end());
+  }
+  if (!vertices.empty()) {
+    queue_.enqueueWriteBuffer(row_vertices_, CL_TRUE, pool_used_ * sizeof(cl_uint), vertices.size() * sizeof(cl_uint),
+                              vertices.data());
+    queue_.enqueueWriteBuffer(row_distances_, CL_TRUE, pool_used_ * sizeof(cl_float),
+                              distances.size() * sizeof(cl_float), distances.data());
+    pool_used_ += vertices.size();
+  }
+  std::vector<cl_uint4> changes;
+  const auto change = [&](VertexId v, cl_uint candidate) {
+    changes.push_back({{v, row_start_host_[v], cl_uint(held_[v]->vertices.size()), candidate}});
+  };
+  for (const VertexId v : arrivals) change(v, 1);
+  for (const VertexId v : departures) change(v, 0);  // the row stays until the next repack
+  upload_marks(changes);
+}
+
+void LocalDeviceFieldBackend::positions_changed(bool resized) {
+  if (resized) {
+    if (particle_count_ > kMaxFieldParticles) {
+      throw UserError("the field backend takes at most " + std::to_string(kMaxFieldParticles) + " particles (" +
+                      std::to_string(particle_count_) + " asked): its 64-bit field would overflow");
+    }
+    energies_ = allocate(CL_MEM_READ_WRITE, std::max<std::size_t>(1, particle_count_) * sizeof(cl_long),
+                         "the particle energies");
+    update_.setArg(kUpdatePositions, positions_);
+    update_.setArg(kUpdateParticleCount, particle_count_);
+    update_.setArg(kUpdateChosen, chosen_);
+    scatter_.setArg(kScatterMoves, moves_);
+    energies_kernel_.setArg(kEnergyPositions, positions_);
+    energies_kernel_.setArg(kEnergyCount, particle_count_);
+    energies_kernel_.setArg(kEnergies, energies_);
+  }
+  iterations_ = 0;
+  rebuild_field();
+}
+
+// From the positions alone: the candidates, their balls (on all cores),
+// a fresh pool, the occupancy and F at every candidate.
+void LocalDeviceFieldBackend::rebuild_field() {
+  positions_host_ = positions();
+  std::fill(candidate_count_.begin(), candidate_count_.end(), 0);
+  std::vector<VertexId> ignored;
+  std::vector<cl_uint> occupancy(vertex_count_, 0);
+  for (const VertexId p : positions_host_) {
+    count_candidates(p, +1, ignored);
+    ++occupancy[p];
+  }
+  const std::vector<VertexId> all = candidates();
+  balls_.prefetch(all);
+  std::uint64_t needed = 0;
+  for (const VertexId v : all) {
+    if (!held_[v]) held_[v] = balls_.ball(v);
+    needed += held_[v]->vertices.size();
+  }
+  repack(needed);
+  queue_.enqueueWriteBuffer(occupancy_, CL_TRUE, 0, occupancy.size() * sizeof(cl_uint), occupancy.data());
+  enqueue_sums(all);
+  queue_.finish();
+}
+
+cl::Event LocalDeviceFieldBackend::enqueue_update(cl_uint color, cl_uint colors, cl_uint particles,
+                                                  cl_uint rank_stacks) {
+  return launch_update(update_, kUpdateColor, color, colors, particles, rank_stacks);
+}
+
+// The moves of the colour come back to the host, which needs them for the
+// candidates: the device scatters them into F at the old candidates, then
+// the new candidates get their rows and F summed afresh (with the particles
+// already moved), the old ones that no particle reads any more are unmarked.
+void LocalDeviceFieldBackend::after_commit(cl_uint color, cl_uint colors, std::vector<cl::Event>& events) {
+  cl_uint count = 0;
+  queue_.enqueueReadBuffer(move_counts_, CL_TRUE, color * sizeof(cl_uint), sizeof(cl_uint), &count);
+  if (count == 0) return;
+  const cl_uint first = color * ((particle_count_ + colors - 1) / colors);  // as apply_moves.cl
+  std::vector<cl_uint2> moves(count);
+  queue_.enqueueReadBuffer(moves_, CL_TRUE, first * sizeof(cl_uint2), count * sizeof(cl_uint2), moves.data());
+
+  scatter_.setArg(kScatterFirst, first);
+  const std::size_t group = kernel_.work_group_size;
+  cl::Event event;
+  queue_.enqueueNDRangeKernel(scatter_, cl::NullRange, cl::NDRange(std::size_t(2) * count * group),
+                              cl::NDRange(group), nullptr, &event);
+  events.push_back(event);
+
+  // Every arrival first, then every departure: a vertex that stays a
+  // candidate is never dropped and re-added, so its F stays the scattered one.
+  std::vector<VertexId> arrivals, departures;
+  for (const cl_uint2& move : moves) count_candidates(move.s[1], +1, arrivals);
+  for (const cl_uint2& move : moves) count_candidates(move.s[0], -1, departures);
+  place_rows(arrivals, departures);
+  enqueue_sums(arrivals);
+}
+
+void LocalDeviceFieldBackend::after_iteration(std::vector<cl::Event>& /*events*/) {
+  ++iterations_;
+  if (rebuild_every_ > 0 && iterations_ % rebuild_every_ == 0) rebuild_field();
+}
+
+std::vector<std::int64_t> LocalDeviceFieldBackend::candidate_field() {
+  std::vector<std::int64_t> field(vertex_count_);
+  queue_.enqueueReadBuffer(field_, CL_TRUE, 0, field.size() * sizeof(cl_long), field.data());
+  std::vector<std::int64_t> at_candidates;
+  for (const VertexId v : candidates()) at_candidates.push_back(field[v]);
+  return at_candidates;
+}
+
+double LocalDeviceFieldBackend::total_energy() {
+  std::vector<std::int64_t> energies(particle_count_);
+  if (particle_count_ == 0) return 0;
+  queue_.enqueueNDRangeKernel(energies_kernel_, cl::NullRange, cl::NDRange(particle_count_));
+  queue_.enqueueReadBuffer(energies_, CL_TRUE, 0, energies.size() * sizeof(cl_long), energies.data());
+  double sum = 0;
+  for (const std::int64_t units : energies) sum += double(units);
+  return sum / (2.0 * double(kFieldUnitsPerWeight));  // every pair was counted from both ends
+}
+
+}  // namespace meshparticles

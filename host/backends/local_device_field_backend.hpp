@@ -1,0 +1,84 @@
+#pragma once
+// The field method on the device over local balls (`--backend field` with
+// `--distances local`): the device twin of LocalFieldBackend, with the same
+// sums bit for bit (kernels/local_field.cl).
+//
+// The host keeps the bookkeeping the moves need - which vertices are
+// candidates (each particle's vertex and one-ring, counted), and their balls
+// from the store - and the device the arithmetic: F at the candidates, the
+// decisions and the scatter of each move's two rows. Balls travel as rows of
+// a pool on the device (CSR), appended when a vertex becomes a candidate and
+// repacked, down to the current candidates, when the pool is full. The pool
+// is sized from what the candidates need, never more than the device's
+// memory allows (checked before allocation, a UserError naming the bytes).
+#include "backends/device_backend.hpp"
+#include "geodesics/local_distances.hpp"
+
+namespace meshparticles {
+
+class LocalDeviceFieldBackend final : public DeviceBackend {
+ public:
+  // pool_headroom: the pool holds this fraction more than the candidates
+  // need when it is (re)filled (tests make it small to force repacks).
+  LocalDeviceFieldBackend(const DeviceDescription& device, const UpdateKernel& kernel, const BackendInputs& inputs,
+                          const LocalDistances& balls, double pool_headroom = 1.0);
+
+  double total_energy() override;
+
+  // For tests: F at every candidate (in increasing vertex id) in field
+  // units, and a rebuild of F from the current positions.
+  std::vector<VertexId> candidates() const;
+  std::vector<std::int64_t> candidate_field();
+  void rebuild_field();
+  // For tests: how often the pool was rewritten (the first fill included).
+  std::size_t repacks() const { return repacks_; }
+
+ private:
+  cl::Event enqueue_update(cl_uint color, cl_uint colors, cl_uint particles, cl_uint rank_stacks) override;
+  void positions_changed(bool resized) override;
+  void after_commit(cl_uint color, cl_uint colors, std::vector<cl::Event>& events) override;
+  void after_iteration(std::vector<cl::Event>& events) override;
+
+  // Counts `vertex` and its one-ring as candidates once more or less; notes
+  // the vertices that become or stop being candidates.
+  void count_candidates(VertexId vertex, int delta, std::vector<VertexId>& changed);
+  // Puts the rows of `arrivals` (new candidates) into the pool, repacking it
+  // when they do not fit, and tells the device which vertices are candidates.
+  void place_rows(const std::vector<VertexId>& arrivals, const std::vector<VertexId>& departures);
+  // Rewrites the pool with the rows of the current candidates only.
+  void repack(std::size_t entries_needed);
+  void upload_marks(const std::vector<cl_uint4>& changes);
+  void enqueue_sums(const std::vector<VertexId>& vertices);
+  // `bytes` of `initial` in `buffer`, grown (never shrunk) to hold them.
+  void upload_list(cl::Buffer& buffer, std::size_t& capacity, const void* initial, std::size_t bytes,
+                   const std::string& what);
+  void set_row_args(cl::Kernel& kernel, cl_uint first);
+
+  const SurfaceMesh& mesh_;
+  const LocalDistances& balls_;
+  float inv_two_sigma_sq_;
+  std::size_t rebuild_every_;
+  std::size_t iterations_ = 0;
+  std::uint64_t pool_limit_entries_;  // what the device's memory allows
+
+  cl::Kernel update_, scatter_, sum_, mark_, energies_kernel_;
+  cl::Buffer field_, occupancy_, candidate_flags_, energies_;
+  cl::Buffer row_start_, row_length_, row_vertices_, row_distances_;
+  double pool_headroom_;
+  cl::Buffer marks_list_, sums_list_;  // the changes and new candidates of one colour
+  std::size_t marks_bytes_ = 0, sums_bytes_ = 0;
+
+  // The host's mirror of the pool: where each vertex's row lives, if it does.
+  std::vector<std::uint32_t> candidate_count_;
+  std::vector<std::shared_ptr<const Ball>> held_;  // the balls whose rows are in the pool
+  std::vector<std::uint32_t> row_start_host_;
+  std::uint64_t pool_used_ = 0, pool_capacity_ = 0;
+  std::size_t repacks_ = 0;
+  std::vector<VertexId> positions_host_;
+};
+
+// Throws UserError when the candidates' balls, estimated at `ball_bytes`,
+// would not fit in the device's memory: checked before any ball is computed.
+void check_local_field_device(const DeviceDescription& device, std::uint64_t ball_bytes);
+
+}  // namespace meshparticles

@@ -1,0 +1,102 @@
+// The field backend on the device over local balls against its serial twin
+// (LocalFieldBackend) and against itself: the same moves step for step on
+// the committed meshes, F at the candidates exact after many moves (a
+// rebuild gives the same bits) and within the last bits of the twin's
+// (the device's exp and the host's may differ there), through repacks of
+// the pool of rows.
+#include <gtest/gtest.h>
+
+#include "backends/field_backend.hpp"
+#include "backends/local_device_field_backend.hpp"
+#include "backends/local_field_backend.hpp"
+#include "particle_test_support.hpp"
+#include "particles/initial_placement.hpp"
+#include "particles/particle_run.hpp"
+#include "pipeline/distances.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+LocalDistances local_store(const SurfaceMesh& mesh, std::size_t particles) {
+  const double radius = kDefaultCutoff * hexagonal_spacing(mesh.area(), particles);
+  return LocalDistances(mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, 0, true});
+}
+
+std::unique_ptr<LocalDeviceFieldBackend> device_twin(const SurfaceMesh& mesh, const LocalDistances& balls,
+                                                     const EnergyParams& energy, std::size_t work_group = 32,
+                                                     double pool_headroom = 1.0) {
+  UpdateKernel kernel = default_update_kernel(field_backend(), mesh.max_valence() + 1, 64);
+  kernel.work_group_size = work_group;
+  return std::make_unique<LocalDeviceFieldBackend>(select_device(""), kernel, BackendInputs{mesh, balls, energy},
+                                                   balls, pool_headroom);
+}
+
+class LocalDeviceField : public ::testing::TestWithParam<std::pair<const char*, std::size_t>> {};
+
+TEST_P(LocalDeviceField, MakesTheSerialTwinsMoves) {
+  const auto [name, particles] = GetParam();
+  const MeshWithDistances m(name);
+  const EnergyParams energy = m.default_energy(particles);
+  const LocalDistances balls = local_store(m.mesh, particles);
+  for (const Init init : {Init::farthest, Init::random}) {
+    const auto start = place_particles(m.mesh, {init, particles, 5, std::nullopt});
+    for (const Scheme scheme : {Scheme::sequential, Scheme::monotone, Scheme::colored}) {
+      SCOPED_TRACE(init_name(init) + " " + scheme_name(scheme));
+      LocalFieldBackend twin(m.mesh, balls, energy, WeightFormat::float32, 0);
+      const auto device = device_twin(m.mesh, balls, energy);
+      const RunSettings settings{scheme, kDefaultColors, std::size_t{scheme == Scheme::colored ? 30u : 500u}, true};
+      const RunOutcome expected = run_particles(twin, start, settings);
+      const RunOutcome got = run_particles(*device, start, settings);
+      EXPECT_EQ(got.positions, expected.positions);
+      ASSERT_EQ(got.trace.size(), expected.trace.size());
+      for (std::size_t i = 0; i < got.trace.size(); ++i) {
+        EXPECT_EQ(got.trace[i].moved, expected.trace[i].moved) << "iteration " << i;
+        EXPECT_NEAR(got.trace[i].energy, expected.trace[i].energy, 1e-6 * expected.trace[i].energy);
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CommittedMeshes, LocalDeviceField,
+                         ::testing::Values(std::pair{"torus.off", std::size_t{512}},
+                                           std::pair{"sphere.off", std::size_t{1024}},
+                                           std::pair{"patch.off", std::size_t{100}}),
+                         [](const auto& param_info) {
+                           const std::string name = param_info.param.first;
+                           return name.substr(0, name.find('.'));
+                         });
+
+// Colored K = 2 keeps the torus's particles moving: thousands of moves, the
+// candidates change all the time, and with 2% headroom the pool fills and
+// is repacked again and again. F at
+// every candidate is then what a rebuild gives, bit for bit, and within the
+// last bits of the serial twin's after the same moves.
+TEST(LocalDeviceField, IncrementalUpdatesMatchARebuildThroughRepacks) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 200;
+  const EnergyParams energy = m.default_energy(particles);
+  const LocalDistances balls = local_store(m.mesh, particles);
+  const auto start = place_particles(m.mesh, {Init::random, particles, 3, std::nullopt});
+  LocalFieldBackend twin(m.mesh, balls, energy, WeightFormat::float32, 0);
+  const RunOutcome twin_outcome = run_particles(twin, start, {Scheme::colored, 2, 100, true});
+  for (const std::size_t work_group : {std::size_t{1}, std::size_t{7}, std::size_t{64}}) {
+    SCOPED_TRACE("wg " + std::to_string(work_group));
+    const auto device = device_twin(m.mesh, balls, energy, work_group, 0.02);
+    const RunOutcome outcome = run_particles(*device, start, {Scheme::colored, 2, 100, true});
+    ASSERT_EQ(outcome.trace.size(), 100u) << "the run settled: the test needs moves";
+    ASSERT_EQ(outcome.positions, twin_outcome.positions);
+    EXPECT_GT(device->repacks(), 1u) << "the test needs the pool repacked";
+    const std::vector<VertexId> candidates = device->candidates();
+    ASSERT_EQ(candidates, twin.candidates());
+    const std::vector<std::int64_t> incremental = device->candidate_field();
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const double twin_value = double(twin.field(candidates[k]));
+      ASSERT_NEAR(double(incremental[k]), twin_value, 1e-6 * twin_value) << "vertex " << candidates[k];
+    }
+    device->rebuild_field();
+    EXPECT_EQ(device->candidate_field(), incremental);
+  }
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
