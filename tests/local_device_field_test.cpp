@@ -6,9 +6,13 @@
 // the pool of rows.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "backends/backend_factory.hpp"
 #include "backends/field_backend.hpp"
 #include "backends/local_device_field_backend.hpp"
 #include "backends/local_field_backend.hpp"
+#include "mesh/mesh_generator.hpp"
 #include "particle_test_support.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
@@ -96,6 +100,18 @@ TEST(LocalDeviceField, IncrementalUpdatesMatchARebuildThroughRepacks) {
     device->rebuild_field();
     EXPECT_EQ(device->candidate_field(), incremental);
   }
+}
+
+// A mesh whose table the device could not hold is refused on the dense
+// table and accepted on local distances, before anything is computed.
+TEST(LocalDeviceField, AMeshPastTheDevicesTableIsPlannedOnLocalDistances) {
+  const DeviceDescription device = select_device("");
+  const auto vertices = std::size_t(1.2 * std::sqrt(double(device.max_allocation_bytes) / sizeof(float)));
+  const SurfaceMesh mesh = generate_mesh_at("sphere", vertices);
+  BackendRequest request;
+  request.name = "field";
+  EXPECT_THROW(check_backend(request, mesh, 1000, /*dense_distances=*/true), UserError);
+  EXPECT_NO_THROW(check_backend(request, mesh, 1000, /*dense_distances=*/false));
 }
 
 }  // namespace

@@ -116,7 +116,7 @@ CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& m
     apply_tuned_sizes(*request.tuning_file, *checked.device, particles, kernel, checked);
   }
   check_device_limits(*checked.device, kernel);
-  check_device_memory(*checked.device, kernel, mesh.vertex_count(), mesh.edge_count(), particles);
+  check_device_memory(*checked.device, kernel, mesh.vertex_count(), mesh.edge_count(), particles, dense_distances);
   checked.kernel = kernel;
   return checked;
 }
