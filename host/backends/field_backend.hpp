@@ -5,6 +5,8 @@
 // W = w(d) and afterwards follows the moves: a particle moving from a to b
 // adds row b and subtracts row a, so an iteration costs in proportion to the
 // particles that moved. Contract: docs/ALGORITHM.md, "The field backend".
+// On local distances the descriptor makes LocalDeviceFieldBackend instead
+// (local_device_field_backend.hpp): no table, the balls as rows.
 #include "backends/device_backend.hpp"
 
 namespace meshparticles {
