@@ -77,9 +77,7 @@ void add_geodesics_command(CLI::App& app) {
   auto* source = add_whole_number_option(*geodesics, "--source", options->source, kVertexIdRange,
                                          "Write this vertex's distances (input vertex id)");
   geodesics->add_option("--out", options->out, "File for --source's distances (default: stdout)")->needs(source);
-  geodesics->add_option("--geodesic", options->method, "Solver: fmm (fast marching) or dijkstra (edge graph)")
-      ->check(CLI::IsMember({"fmm", "dijkstra"}))
-      ->capture_default_str();
+  add_geodesic_option(*geodesics, options->method);
   add_strict_option(*geodesics, options->read);
   add_distance_table_options(*geodesics, options->table);
   geodesics->callback([options] { run_geodesics(*options); });

@@ -25,6 +25,18 @@ GeodesicsRequest DistanceTableOptions::request(GeodesicMethod method) const {
   return request;
 }
 
+void add_geodesic_option(CLI::App& command, std::string& method) {
+  command.add_option("--geodesic", method, "Distance solver: fmm (fast marching) or dijkstra (edge graph)")
+      ->check(CLI::IsMember({"fmm", "dijkstra"}))
+      ->capture_default_str();
+}
+
+void add_potential_option(CLI::App& command, std::string& potential) {
+  command.add_option("--potential", potential, "exp: exp(-d/(2 sigma^2)); gauss: exp(-d^2/(2 sigma^2))")
+      ->check(CLI::IsMember({"exp", "gauss"}))
+      ->capture_default_str();
+}
+
 void add_distance_table_options(CLI::App& command, DistanceTableOptions& options) {
   command.add_option("--cache-dir", options.cache_dir, "Distance cache directory (default: $XDG_CACHE_HOME/meshparticles)");
   command.add_flag("--no-cache", options.no_cache, "Neither read nor write the distance cache");

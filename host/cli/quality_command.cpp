@@ -83,12 +83,8 @@ void run_quality(const QualityOptions& options) {
 void add_shared_options(CLI::App& command, QualityOptions& options) {
   add_positive_number_option(command, "--sigma", options.sigma,
                              "Sigma of the energy (default: the run's rule for each set's n)");
-  command.add_option("--potential", options.potential, "exp or gauss")
-      ->check(CLI::IsMember({"exp", "gauss"}))
-      ->capture_default_str();
-  command.add_option("--geodesic", options.geodesic, "Distance solver: fmm or dijkstra")
-      ->check(CLI::IsMember({"fmm", "dijkstra"}))
-      ->capture_default_str();
+  add_potential_option(command, options.potential);
+  add_geodesic_option(command, options.geodesic);
   command.add_flag("--json", options.json, "Machine-readable output");
   add_strict_option(command, options.read);
   add_distance_store_options(command, options.store);

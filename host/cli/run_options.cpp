@@ -46,12 +46,8 @@ void add_run_options(CLI::App& command, RunOptions& options) {
   add_whole_number_option(command, "--seed", request.seed, kSeedRange, "Seed of random and farthest starts");
   add_positive_number_option(command, "--sigma", request.sigma,
                              "Sigma in mesh units (default from the particle spacing, see docs)");
-  command.add_option("--potential", options.potential, "exp: exp(-d/(2 sigma^2)); gauss: exp(-d^2/(2 sigma^2))")
-      ->check(CLI::IsMember({"exp", "gauss"}))
-      ->capture_default_str();
-  command.add_option("--geodesic", options.geodesic, "Distance solver: fmm or dijkstra")
-      ->check(CLI::IsMember({"fmm", "dijkstra"}))
-      ->capture_default_str();
+  add_potential_option(command, options.potential);
+  add_geodesic_option(command, options.geodesic);
   add_distance_store_options(command, options.store);
   add_device_option(command, request.backend.device);
   add_whole_number_option(command, "--wg", request.backend.work_group_size, kWorkGroupRange,

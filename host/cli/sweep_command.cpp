@@ -141,12 +141,8 @@ void add_sweep_command(CLI::App& app) {
       ->check(CLI::IsMember({"v0", "random", "farthest"}))
       ->capture_default_str();
   add_whole_number_option(*sweep, "--seed", request.seed, kSeedRange, "Seed of random and farthest starts");
-  sweep->add_option("--potential", options->potential, "exp or gauss")
-      ->check(CLI::IsMember({"exp", "gauss"}))
-      ->capture_default_str();
-  sweep->add_option("--geodesic", options->geodesic, "Distance solver: fmm or dijkstra")
-      ->check(CLI::IsMember({"fmm", "dijkstra"}))
-      ->capture_default_str();
+  add_potential_option(*sweep, options->potential);
+  add_geodesic_option(*sweep, options->geodesic);
   add_device_option(*sweep, request.device);
   sweep->add_option("--csv", options->csv, "Also write the rows as CSV to this file");
   sweep->add_option("--json", options->json, "Also write the rows and the device's limits as JSON to this file");
