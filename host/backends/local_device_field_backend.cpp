@@ -276,11 +276,11 @@ void LocalDeviceFieldBackend::positions_changed(bool resized) {
 // From the positions alone: the candidates, their balls (on all cores),
 // a fresh pool, the occupancy and F at every candidate.
 void LocalDeviceFieldBackend::rebuild_field() {
-  positions_host_ = positions();
+  const std::vector<VertexId> now = positions();
   std::fill(candidate_count_.begin(), candidate_count_.end(), 0);
   std::vector<VertexId> ignored;
   std::vector<cl_uint> occupancy(vertex_count_, 0);
-  for (const VertexId p : positions_host_) {
+  for (const VertexId p : now) {
     count_candidates(p, +1, ignored);
     ++occupancy[p];
   }

@@ -74,7 +74,6 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   std::vector<std::uint32_t> row_start_host_;
   std::uint64_t pool_used_ = 0, pool_capacity_ = 0;
   std::size_t repacks_ = 0;
-  std::vector<VertexId> positions_host_;
 };
 
 // Throws UserError when the candidates' balls, estimated at `ball_bytes`,
