@@ -4,6 +4,7 @@
 #ifndef FIELD_H
 #define FIELD_H
 
+#include "claims.h"
 #include "particle_energy.h"
 
 // The weight table W[u][v] = w(d(u, v)), row-major, V x V: float32, or half
@@ -41,5 +42,23 @@ static inline long8 field_units8(float8 weights) { return convert_long8(weights 
 // An energy in field units as the float the candidate rule compares: one
 // rounding, to nearest.
 static inline float field_energy(long units) { return convert_float(units) * (1.0f / FIELD_UNITS_PER_WEIGHT); }
+
+// The field kernels' decision once particle c (at `here`) has its
+// candidates' energies and occupancy: occupancy replaces the scan for
+// occupied candidates, so only a particle that shares its vertex scans the
+// positions, for its stack rank. Writes and claims the chosen vertex.
+static inline void choose_and_claim(__private float* energies, __private const uchar* occupied, uint count, uint c,
+                                    uint here, __global const uint* ring_offsets, __global const uint* ring_neighbors,
+                                    __global const uint* occupancy, __global const uint* positions,
+                                    uint rank_stacks, __global uint* chosen, __global uint* claims) {
+  uint stack_rank = 0;
+  if (rank_stacks && occupancy[here] > 1) {
+    for (uint i = 0; i < c; ++i) stack_rank += stacked_before(i, positions[i], c, here);
+  }
+  const uint target =
+      candidate_vertex(ring_offsets, ring_neighbors, here, chosen_candidate(energies, occupied, count, stack_rank));
+  chosen[c] = target;
+  claim_target(claims, c, here, target);
+}
 
 #endif

@@ -5,7 +5,6 @@
 // columns. Occupancy replaces the scan for occupied candidates; only a
 // particle that shares its vertex scans the positions, for its stack rank.
 // Writes and claims the chosen vertex like the other update kernels.
-#include "claims.h"
 #include "field.h"
 
 #ifndef WORK_GROUP_SIZE
@@ -33,12 +32,6 @@ void field_update(__global const long* field, __global const weight_t* weights, 
     occupied[j] = occupancy[v] > (j == 0 ? 1u : 0u);  // c itself sits on candidate 0
   }
 
-  uint stack_rank = 0;
-  if (rank_stacks && occupancy[here] > 1) {
-    for (uint i = 0; i < c; ++i) stack_rank += stacked_before(i, positions[i], c, here);
-  }
-  const uint target =
-      candidate_vertex(ring_offsets, ring_neighbors, here, chosen_candidate(energies, occupied, count, stack_rank));
-  chosen[c] = target;
-  claim_target(claims, c, here, target);
+  choose_and_claim(energies, occupied, count, c, here, ring_offsets, ring_neighbors, occupancy, positions,
+                   rank_stacks, chosen, claims);
 }

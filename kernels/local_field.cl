@@ -15,7 +15,6 @@
 // added to as two 32-bit halves with the carry (core OpenCL 1.1 atomics):
 // sums modulo 2^64, exact in any order, so the result is deterministic.
 
-#include "claims.h"
 #include "field.h"
 
 #ifndef WORK_GROUP_SIZE
@@ -74,14 +73,8 @@ void local_field_update(__global const long* field, ROWS_PARAMS, float inv_two_s
     occupied[j] = occupancy[v] > (j == 0 ? 1u : 0u);  // c itself sits on candidate 0
   }
 
-  uint stack_rank = 0;
-  if (rank_stacks && occupancy[here] > 1) {
-    for (uint i = 0; i < c; ++i) stack_rank += stacked_before(i, positions[i], c, here);
-  }
-  const uint target =
-      candidate_vertex(ring_offsets, ring_neighbors, here, chosen_candidate(energies, occupied, count, stack_rank));
-  chosen[c] = target;
-  claim_target(claims, c, here, target);
+  choose_and_claim(energies, occupied, count, c, here, ring_offsets, ring_neighbors, occupancy, positions,
+                   rank_stacks, chosen, claims);
 }
 
 // F[x] += delta on the halves of the 64-bit F: the low word's atomic add
