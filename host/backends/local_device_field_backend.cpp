@@ -24,6 +24,7 @@ enum UpdateArg : cl_uint {
 constexpr cl_uint kUpdateChosen = kUpdateColor + 3, kUpdateClaims = kUpdateColor + 4;
 enum ScatterArg : cl_uint { kScatterMoves, kScatterFirst, kScatterRows, kScatterInverse = kScatterRows + 4,
                             kScatterCandidate, kScatterField, kScatterOccupancy };
+// mark and sum take their list and its length first (launch_over_list).
 enum SumArg : cl_uint { kSumVertices, kSumCount, kSumRows, kSumInverse = kSumRows + 4, kSumOccupancy, kSumField };
 enum MarkArg : cl_uint { kMarkChanges, kMarkCount, kMarkStart, kMarkLength, kMarkCandidate };
 enum EnergyArg : cl_uint { kEnergyPositions, kEnergyCount, kEnergyRows, kEnergyInverse = kEnergyRows + 4,
@@ -135,7 +136,11 @@ std::vector<VertexId> LocalDeviceFieldBackend::candidates() const {
   return list;
 }
 
-void LocalDeviceFieldBackend::repack(std::size_t entries_needed) {
+void LocalDeviceFieldBackend::repack() {
+  std::uint64_t entries_needed = 0;
+  for (VertexId v = 0; v < vertex_count_; ++v) {
+    if (candidate_count_[v] > 0) entries_needed += held_[v]->vertices.size();
+  }
   if (entries_needed > pool_limit_entries_) {
     throw UserError("the field backend on local distances needs " + gibibytes(double(entries_needed * kEntryBytes)) +
                     " of distance balls on " + device_.name + ", which can give them " +
@@ -183,31 +188,30 @@ void LocalDeviceFieldBackend::repack(std::size_t entries_needed) {
   queue_.enqueueWriteBuffer(candidate_flags_, CL_TRUE, 0, flags.size(), flags.data());
 }
 
-void LocalDeviceFieldBackend::upload_list(cl::Buffer& buffer, std::size_t& capacity, const void* initial,
-                                          std::size_t bytes, const std::string& what) {
-  if (bytes > capacity) {
-    capacity = std::max(bytes, 2 * capacity);
-    buffer = allocate(CL_MEM_READ_ONLY, capacity, what);
+// Kernels over a list (mark, sum) take it and its length as their first two
+// arguments. The list buffer grows, never shrinks.
+void LocalDeviceFieldBackend::launch_over_list(cl::Kernel& kernel, ListBuffer& list, const void* items,
+                                               std::size_t count, std::size_t item_bytes) {
+  if (count == 0) return;
+  const std::size_t bytes = count * item_bytes;
+  if (bytes > list.capacity) {
+    list.capacity = std::max(bytes, 2 * list.capacity);
+    list.buffer = allocate(CL_MEM_READ_ONLY, list.capacity, list.what);
   }
   // Blocking: the list lives on the caller's stack. In order after the
   // launches before it, so the last reader of the old contents is done.
-  queue_.enqueueWriteBuffer(buffer, CL_TRUE, 0, bytes, initial);
+  queue_.enqueueWriteBuffer(list.buffer, CL_TRUE, 0, bytes, items);
+  kernel.setArg(0, list.buffer);
+  kernel.setArg(1, cl_uint(count));
+  queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(count));
 }
 
 void LocalDeviceFieldBackend::upload_marks(const std::vector<cl_uint4>& changes) {
-  if (changes.empty()) return;
-  upload_list(marks_list_, marks_bytes_, changes.data(), changes.size() * sizeof(cl_uint4), "the candidate changes");
-  mark_.setArg(kMarkChanges, marks_list_);
-  mark_.setArg(kMarkCount, cl_uint(changes.size()));
-  queue_.enqueueNDRangeKernel(mark_, cl::NullRange, cl::NDRange(changes.size()));
+  launch_over_list(mark_, marks_list_, changes.data(), changes.size(), sizeof(cl_uint4));
 }
 
 void LocalDeviceFieldBackend::enqueue_sums(const std::vector<VertexId>& vertices) {
-  if (vertices.empty()) return;
-  upload_list(sums_list_, sums_bytes_, vertices.data(), vertices.size() * sizeof(cl_uint), "the new candidates");
-  sum_.setArg(kSumVertices, sums_list_);
-  sum_.setArg(kSumCount, cl_uint(vertices.size()));
-  queue_.enqueueNDRangeKernel(sum_, cl::NullRange, cl::NDRange(vertices.size()));
+  launch_over_list(sum_, sums_list_, vertices.data(), vertices.size(), sizeof(cl_uint));
 }
 
 void LocalDeviceFieldBackend::place_rows(const std::vector<VertexId>& arrivals,
@@ -223,11 +227,7 @@ void LocalDeviceFieldBackend::place_rows(const std::vector<VertexId>& arrivals,
     entries += held_[v]->vertices.size();
   }
   if (pool_used_ + entries > pool_capacity_) {  // rewrite with the current candidates' rows only
-    std::uint64_t needed = 0;
-    for (VertexId v = 0; v < vertex_count_; ++v) {
-      if (candidate_count_[v] > 0) needed += held_[v]->vertices.size();
-    }
-    repack(needed);
+    repack();
     return;
   }
   std::vector<cl_uint> vertices;
@@ -286,12 +286,10 @@ void LocalDeviceFieldBackend::rebuild_field() {
   }
   const std::vector<VertexId> all = candidates();
   balls_.prefetch(all);
-  std::uint64_t needed = 0;
   for (const VertexId v : all) {
     if (!held_[v]) held_[v] = balls_.ball(v);
-    needed += held_[v]->vertices.size();
   }
-  repack(needed);
+  repack();
   queue_.enqueueWriteBuffer(occupancy_, CL_TRUE, 0, occupancy.size() * sizeof(cl_uint), occupancy.data());
   enqueue_sums(all);
   queue_.finish();

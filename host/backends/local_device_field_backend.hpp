@@ -45,13 +45,19 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   // Puts the rows of `arrivals` (new candidates) into the pool, repacking it
   // when they do not fit, and tells the device which vertices are candidates.
   void place_rows(const std::vector<VertexId>& arrivals, const std::vector<VertexId>& departures);
-  // Rewrites the pool with the rows of the current candidates only.
-  void repack(std::size_t entries_needed);
+  // Rewrites the pool with the rows of the current candidates only (their
+  // balls held).
+  void repack();
   void upload_marks(const std::vector<cl_uint4>& changes);
   void enqueue_sums(const std::vector<VertexId>& vertices);
-  // `bytes` of `initial` in `buffer`, grown (never shrunk) to hold them.
-  void upload_list(cl::Buffer& buffer, std::size_t& capacity, const void* initial, std::size_t bytes,
-                   const std::string& what);
+  struct ListBuffer {
+    cl::Buffer buffer;
+    std::size_t capacity = 0;  // bytes
+    std::string what;          // for the allocation's error message
+  };
+  // Uploads `count` items to `list` and launches `kernel` over them.
+  void launch_over_list(cl::Kernel& kernel, ListBuffer& list, const void* items, std::size_t count,
+                        std::size_t item_bytes);
   void set_row_args(cl::Kernel& kernel, cl_uint first);
 
   const SurfaceMesh& mesh_;
@@ -65,8 +71,8 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   cl::Buffer field_, occupancy_, candidate_flags_, energies_;
   cl::Buffer row_start_, row_length_, row_vertices_, row_distances_;
   double pool_headroom_;
-  cl::Buffer marks_list_, sums_list_;  // the changes and new candidates of one colour
-  std::size_t marks_bytes_ = 0, sums_bytes_ = 0;
+  ListBuffer marks_list_{{}, 0, "the candidate changes"};  // of one colour
+  ListBuffer sums_list_{{}, 0, "the new candidates"};
 
   // The host's mirror of the pool: where each vertex's row lives, if it does.
   std::vector<std::uint32_t> candidate_count_;
