@@ -64,8 +64,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, KernelAgreement,
                                            AgreementCase{"torus.off", Potential::gauss},
                                            AgreementCase{"high_valence.off", Potential::gauss}),
                          [](const auto& param_info) {
-                           const std::string name = param_info.param.mesh;
-                           return name.substr(0, name.find('.')) + "_" + potential_name(param_info.param.potential);
+                           return mesh_stem(param_info.param.mesh) + "_" + potential_name(param_info.param.potential);
                          });
 
 // What the sweep relies on: measuring moves nothing, and the choices it

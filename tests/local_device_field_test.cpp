@@ -21,11 +21,6 @@
 namespace meshparticles::testing {
 namespace {
 
-LocalDistances local_store(const SurfaceMesh& mesh, std::size_t particles) {
-  const double radius = kDefaultCutoff * hexagonal_spacing(mesh.area(), particles);
-  return LocalDistances(mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, 0, true});
-}
-
 std::unique_ptr<LocalDeviceFieldBackend> device_twin(const SurfaceMesh& mesh, const LocalDistances& balls,
                                                      const EnergyParams& energy, std::size_t work_group = 32,
                                                      double pool_headroom = 1.0) {
@@ -41,7 +36,7 @@ TEST_P(LocalDeviceField, MakesTheSerialTwinsMoves) {
   const auto [name, particles] = GetParam();
   const MeshWithDistances m(name);
   const EnergyParams energy = m.default_energy(particles);
-  const LocalDistances balls = local_store(m.mesh, particles);
+  const LocalDistances balls = local_store(m.mesh, cutoff_radius(m.mesh, particles));
   for (const Init init : {Init::farthest, Init::random}) {
     const auto start = place_particles(m.mesh, {init, particles, 5, std::nullopt});
     for (const Scheme scheme : {Scheme::sequential, Scheme::monotone, Scheme::colored, Scheme::synchronous}) {
@@ -67,10 +62,7 @@ INSTANTIATE_TEST_SUITE_P(CommittedMeshes, LocalDeviceField,
                          ::testing::Values(std::pair{"torus.off", std::size_t{512}},
                                            std::pair{"sphere.off", std::size_t{1024}},
                                            std::pair{"patch.off", std::size_t{100}}),
-                         [](const auto& param_info) {
-                           const std::string name = param_info.param.first;
-                           return name.substr(0, name.find('.'));
-                         });
+                         [](const auto& param_info) { return mesh_stem(param_info.param.first); });
 
 // Colored K = 2 keeps the torus's particles moving: thousands of moves, the
 // candidates change all the time, and with 2% headroom the pool fills and
@@ -81,7 +73,7 @@ TEST(LocalDeviceField, IncrementalUpdatesMatchARebuildThroughRepacks) {
   const MeshWithDistances m("torus.off");
   const std::size_t particles = 200;
   const EnergyParams energy = m.default_energy(particles);
-  const LocalDistances balls = local_store(m.mesh, particles);
+  const LocalDistances balls = local_store(m.mesh, cutoff_radius(m.mesh, particles));
   const auto start = place_particles(m.mesh, {Init::random, particles, 3, std::nullopt});
   LocalFieldBackend twin(m.mesh, balls, energy, WeightFormat::float32, 0);
   const RunOutcome twin_outcome = run_particles(twin, start, {Scheme::colored, 2, 100, true});

@@ -21,14 +21,6 @@
 namespace meshparticles::testing {
 namespace {
 
-LocalDistances local_store(const SurfaceMesh& mesh, double radius, std::uint64_t budget = std::uint64_t{1} << 30) {
-  return LocalDistances(mesh, {radius, GeodesicMethod::fast_marching, budget, 0, true});
-}
-
-double cutoff_radius(const SurfaceMesh& mesh, std::size_t particles, double cutoff = kDefaultCutoff) {
-  return cutoff * hexagonal_spacing(mesh.area(), particles);
-}
-
 TEST(LocalDistances, WithinReachEveryDistanceIsTheTablesBitForBit) {
   const MeshWithDistances m("torus.off");
   const double radius = 0.5;
@@ -147,10 +139,7 @@ INSTANTIATE_TEST_SUITE_P(CommittedMeshes, LocalAgreesWithDense,
                                            std::pair{"sphere.off", std::size_t{1024}},
                                            std::pair{"patch.off", std::size_t{100}},
                                            std::pair{"atrium.off", std::size_t{1024}}),
-                         [](const auto& param_info) {
-                           const std::string name = param_info.param.first;
-                           return name.substr(0, name.find('.'));
-                         });
+                         [](const auto& param_info) { return mesh_stem(param_info.param.first); });
 
 // The serial reference reads the same truncated distances through the store
 // interface: on local balls it makes the local field's choices.

@@ -10,8 +10,10 @@
 #include "backends/device_backend.hpp"
 #include "backends/serial_backend.hpp"
 #include "geodesics/distance_table.hpp"
+#include "geodesics/local_distances.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "particles/particle_params.hpp"
+#include "pipeline/distances.hpp"
 
 namespace meshparticles::testing {
 
@@ -31,6 +33,20 @@ struct MeshWithDistances {
     return read_mesh(std::string(MESHES_DIR) + "/" + name, warnings);
   }
 };
+
+// A quiet local store with balls of `radius`, on all cores.
+inline LocalDistances local_store(const SurfaceMesh& mesh, double radius,
+                                  std::uint64_t budget = std::uint64_t{1} << 30) {
+  return LocalDistances(mesh, {radius, GeodesicMethod::fast_marching, budget, 0, true});
+}
+
+// The ball radius a run of `particles` takes at `cutoff` hexagonal spacings.
+inline double cutoff_radius(const SurfaceMesh& mesh, std::size_t particles, double cutoff = kDefaultCutoff) {
+  return cutoff * hexagonal_spacing(mesh.area(), particles);
+}
+
+// "torus" for "torus.off": test names from mesh files.
+inline std::string mesh_stem(const std::string& file) { return file.substr(0, file.find('.')); }
 
 inline std::unique_ptr<DeviceBackend> device_backend(const MeshWithDistances& m, const EnergyParams& energy,
                                                      const std::string& kind, std::size_t work_group,
