@@ -47,8 +47,10 @@ std::string BatchLedger::overall_line() const {
 
 void BatchLedger::record(std::size_t index, const MeshOutcome& outcome) {
   const std::lock_guard lock(mutex_);
+  // A mesh recorded twice (lost with a rank taken for dead, then reported
+  // by it after all) counts once.
+  if (row_status(rows_[index]) == MeshStatus::pending) ++done_;
   rows_[index] = outcome.row;
-  ++done_;
   ++(outcome.reused ? reused_ : computed_);
   write_batch_summary(plan_.request.out, rows_);
   if (plan_.request.quiet) return;

@@ -21,6 +21,9 @@ struct BatchRequest {
   MeshReadOptions read;
   bool force = false;  // recompute meshes whose earlier outputs are complete and valid
   bool quiet = false;  // no progress lines or warnings on stderr
+  // Under MPI: a rank not heard from for this long is taken for dead, and
+  // the mesh it was running is marked failed (batch/mpi_work_queue.hpp).
+  double rank_timeout_seconds = 60;
 };
 
 struct BatchItem {

@@ -38,4 +38,9 @@ MeshOutcome run_batch_mesh(const BatchPlan& plan, std::size_t index) {
   }
 }
 
+MeshOutcome lost_mesh_outcome(const BatchPlan& plan, std::size_t index, const std::string& reason) {
+  const BatchItem& item = plan.items[index];
+  return {problem_row(item.input.path.string(), item.output_name, MeshStatus::failed, reason), false};
+}
+
 }  // namespace meshparticles

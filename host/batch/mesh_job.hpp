@@ -19,4 +19,8 @@ struct MeshOutcome {
 // (refused: the user can act on it; failed: a bug).
 MeshOutcome run_batch_mesh(const BatchPlan& plan, std::size_t index);
 
+// The row of a mesh whose run was lost with the process running it: failed,
+// for `reason`; a resume runs it again.
+MeshOutcome lost_mesh_outcome(const BatchPlan& plan, std::size_t index, const std::string& reason);
+
 }  // namespace meshparticles

@@ -4,9 +4,10 @@
 // asks, and works through them itself as well: a thread of rank 0 answers
 // the other ranks while its main thread runs meshes. Each rank writes its
 // meshes' output folders (a file system all ranks share); rank 0 records
-// every row and writes the summary. With OpenMPI, a rank that dies ends the
-// job: what was written stays valid, the summary shows the rest pending, and
-// the same command again finishes them.
+// every row and writes the summary. Ranks send rank 0 a heartbeat; one not
+// heard from for --rank-timeout is taken for dead, its mesh recorded as
+// failed, and the others go on - where the launcher lets them (OpenMPI:
+// mpirun --enable-recovery; else it ends the job, and a resume finishes).
 #include "batch/batch_plan.hpp"
 
 namespace meshparticles {

@@ -18,6 +18,7 @@ struct BatchOptions {
   std::string out;
   RunOptions run;
   std::optional<double> spacing, per_area;
+  std::optional<double> rank_timeout;
   bool force = false;
 };
 
@@ -28,6 +29,7 @@ void run_batch_command(const BatchOptions& options) {
   request.run = options.run.resolved_request();
   request.read = options.run.read;
   request.force = options.force;
+  if (options.rank_timeout) request.rank_timeout_seconds = *options.rank_timeout;
   request.quiet = options.run.table.quiet;
   request.count.value = double(request.run.particles);
   if (options.spacing) request.count = {ParticleCount::Rule::spacing, *options.spacing};
@@ -58,6 +60,9 @@ void add_batch_command(CLI::App& app) {
                              "n per mesh from particles per unit of area D: n = round(D A), within 1..V")
       ->excludes(count)
       ->excludes("--spacing");
+  add_positive_number_option(*batch, "--rank-timeout", options->rank_timeout,
+                             "MPI only: seconds without a word from a rank before it is taken for dead and its mesh "
+                             "marked failed, the others going on (default 60; needs mpirun --enable-recovery)");
   batch->add_flag("--force", options->force,
                   "Recompute every mesh (default: keep each complete, valid output of the same mesh and options)");
   batch->callback([options] { run_batch_command(*options); });
