@@ -73,6 +73,17 @@ mpi_wait() {  # waits for the MPI batch: its exit code in $code
   code=$?
   set -e
 }
+# kill_rank_after_first_mesh RANK OUT: an MPI batch of 3 ranks into OUT
+# (rank timeout 3 s), RANK killed -9 once a first mesh is ok; waits for the end.
+kill_rank_after_first_mesh() {
+  mpi 3 "$2" --rank-timeout 3
+  local victim
+  victim=$(rank_pid "$1" "$2")
+  [ -n "$victim" ] || fail "no rank $1 found"
+  wait_for_ok "$2" 1 $mpi_pid || fail "the MPI batch ended before rank $1 could be killed"
+  kill -9 "$victim"
+  mpi_wait
+}
 # The summary's rows as "column=value" lines, timings left out.
 rows() {
   python3 - "$1" << 'EOF'
@@ -204,12 +215,7 @@ mpi_kill)
   # the summary and rank 0's lines are what tell.
   launcher=(--enable-recovery)
   out="$work/mpi_killed"
-  mpi 3 "$out" --rank-timeout 3
-  victim=$(rank_pid 1 "$out")
-  [ -n "$victim" ] || fail "no rank 1 found"
-  wait_for_ok "$out" 1 $mpi_pid || fail "the MPI batch ended before a rank could be killed"
-  kill -9 "$victim"
-  mpi_wait
+  kill_rank_after_first_mesh 1 "$out"
   grep -q "^meshparticles: no word from rank 1 for 3 s: taken for dead" "$out.log" ||
     { cat "$out.log"; fail "rank 0 did not notice that rank 1 died"; }
   # At most the mesh rank 1 was on is lost; every other one is done as in the reference.
@@ -239,12 +245,7 @@ EOF
 
   # Rank 0 killed: the other ranks notice its silence and stop; nothing hangs.
   out="$work/mpi_root_killed"
-  mpi 3 "$out" --rank-timeout 3
-  victim=$(rank_pid 0 "$out")
-  [ -n "$victim" ] || fail "no rank 0 found"
-  wait_for_ok "$out" 1 $mpi_pid || fail "the MPI batch ended before rank 0 could be killed"
-  kill -9 "$victim"
-  mpi_wait
+  kill_rank_after_first_mesh 0 "$out"
   grep -Eq "rank [12]: rank 0 has not (answered|been heard from) for 3 s; this rank stops" "$out.log" ||
     { cat "$out.log"; fail "no rank noticed that rank 0 died"; }
   mpi 3 "$out" --rank-timeout 3
