@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include <boost/sort/spreadsort/integer_sort.hpp>
+
 #include "common/user_error.hpp"
 #include "geodesics/dijkstra.hpp"
 #include "geodesics/fast_marching.hpp"
@@ -32,6 +34,7 @@ std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh) {
 void SolverScratch::fit(std::size_t vertex_count) {
   if (accepted.size() == vertex_count) return;
   accepted.assign(vertex_count, 0);
+  heap_slot.assign(vertex_count, kNotQueued);
   origin.assign(vertex_count, 0);
   distances.assign(vertex_count, std::numeric_limits<double>::infinity());
   touched.clear();
@@ -58,7 +61,8 @@ Ball GeodesicSolver::solve_ball(VertexId source, double radius, SolverScratch& s
   for (const VertexId v : scratch.touched) {
     if (scratch.accepted[v]) inside.push_back(v);
   }
-  std::sort(inside.begin(), inside.end());
+  // A radix sort: std::sort was a tenth of a ball solve.
+  boost::sort::spreadsort::integer_sort(inside.begin(), inside.end());
   Ball ball;
   ball.vertices = inside;
   ball.distances.reserve(inside.size());

@@ -1,13 +1,13 @@
 #pragma once
-// The acceptance order both solvers share: a binary heap with lazy deletion
-// (stale entries are skipped when popped) over tentative distances. An entry
-// is one 64-bit integer, float32 distance bits above the vertex id: for
-// non-negative floats the bit pattern orders like the value, so the heap
-// compares plain integers. The distances themselves stay double.
-#include <algorithm>
+// The acceptance order both solvers share: a binary heap over tentative
+// distances, one entry per queued vertex (a lowered vertex moves up in
+// place, so the heap stays the size of the front and no stale entry is
+// ever popped). An entry is one 64-bit integer, float32 distance bits above
+// the vertex id: for non-negative floats the bit pattern orders like the
+// value, so the heap compares plain integers, and ties between vertices
+// break by id. The distances themselves stay double.
 #include <cstdint>
 #include <cstring>
-#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -18,15 +18,17 @@ namespace meshparticles {
 
 class ShortestFirstQueue {
  public:
-  // Queues the sources at distance 0. Expects every distance +inf and no
-  // vertex accepted where the march goes (GeodesicSolver::march); records
-  // each vertex given a distance in scratch.touched. Vertices farther than
-  // `max_distance` are never accepted, and none is given a distance of
-  // `bound[v]` or more (no bound when empty).
+  // Queues the sources at distance 0. Expects every distance +inf, no
+  // vertex accepted and none queued where the march goes
+  // (GeodesicSolver::march); records each vertex given a distance in
+  // scratch.touched. Vertices farther than `max_distance` are never
+  // accepted, and none is given a distance of `bound[v]` or more (no bound
+  // when empty).
   ShortestFirstQueue(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
                      double max_distance, std::span<const float> bound)
       : distances_(distances),
         heap_(scratch.heap),
+        slot_(scratch.heap_slot),
         accepted_(scratch.accepted),
         touched_(scratch.touched),
         max_distance_(max_distance),
@@ -38,21 +40,27 @@ class ShortestFirstQueue {
       requeue(source);
     }
   }
+  // Leaves the scratch clean: the vertices still queued (beyond the
+  // stopping distance) are no longer.
+  ~ShortestFirstQueue() {
+    for (const std::uint64_t entry : heap_) slot_[vertex_of(entry)] = kNotQueued;
+    heap_.clear();
+  }
+  ShortestFirstQueue(const ShortestFirstQueue&) = delete;
+  ShortestFirstQueue& operator=(const ShortestFirstQueue&) = delete;
 
   // The closest vertex not yet accepted, now accepted; none when all are
   // done or the next one lies beyond the stopping distance.
   std::optional<VertexId> pop_next() {
-    while (!heap_.empty()) {
-      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
-      const auto vertex = VertexId(heap_.back() & 0xFFFFFFFFu);
-      heap_.pop_back();
-      // A vertex's latest (smallest) entry comes out first; later ones are stale.
-      if (accepted_[vertex]) continue;
-      if (distances_[vertex] > max_distance_) return std::nullopt;
-      accepted_[vertex] = 1;
-      return vertex;
-    }
-    return std::nullopt;
+    if (heap_.empty()) return std::nullopt;
+    const VertexId vertex = vertex_of(heap_.front());
+    if (distances_[vertex] > max_distance_) return std::nullopt;
+    slot_[vertex] = kNotQueued;
+    const std::uint64_t last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) sift_down(0, last);
+    accepted_[vertex] = 1;
+    return vertex;
   }
 
   bool is_accepted(VertexId v) const { return accepted_[v] != 0; }
@@ -71,17 +79,54 @@ class ShortestFirstQueue {
     distances_[v] = candidate;
     return true;
   }
+  // Queues v at its distance, or moves it up to it if queued already (a
+  // distance only ever drops).
   void requeue(VertexId v) {
     const float key = float(distances_[v]);
     std::uint32_t key_bits;
     std::memcpy(&key_bits, &key, sizeof key);
-    heap_.push_back((std::uint64_t(key_bits) << 32) | v);
-    std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+    const std::uint64_t entry = (std::uint64_t(key_bits) << 32) | v;
+    if (slot_[v] == kNotQueued) {
+      heap_.push_back(entry);
+      sift_up(std::uint32_t(heap_.size() - 1), entry);
+    } else {
+      sift_up(slot_[v], entry);
+    }
   }
 
  private:
+  static constexpr std::uint32_t kNotQueued = SolverScratch::kNotQueued;
+  static VertexId vertex_of(std::uint64_t entry) { return VertexId(entry & 0xFFFFFFFFu); }
+
+  void place(std::uint32_t at, std::uint64_t entry) {
+    heap_[at] = entry;
+    slot_[vertex_of(entry)] = at;
+  }
+  void sift_up(std::uint32_t at, std::uint64_t entry) {
+    while (at > 0) {
+      const std::uint32_t parent = (at - 1) / 2;
+      if (heap_[parent] <= entry) break;
+      place(at, heap_[parent]);
+      at = parent;
+    }
+    place(at, entry);
+  }
+  void sift_down(std::uint32_t at, std::uint64_t entry) {
+    const auto size = std::uint32_t(heap_.size());
+    for (;;) {
+      std::uint32_t child = 2 * at + 1;
+      if (child >= size) break;
+      if (child + 1 < size && heap_[child + 1] < heap_[child]) ++child;
+      if (entry <= heap_[child]) break;
+      place(at, heap_[child]);
+      at = child;
+    }
+    place(at, entry);
+  }
+
   std::span<double> distances_;
   std::vector<std::uint64_t>& heap_;
+  std::vector<std::uint32_t>& slot_;
   std::vector<unsigned char>& accepted_;
   std::vector<VertexId>& touched_;
   double max_distance_;
