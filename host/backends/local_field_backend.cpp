@@ -1,5 +1,6 @@
 #include "backends/local_field_backend.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "particles/field_units.hpp"
@@ -15,7 +16,9 @@ LocalFieldBackend::LocalFieldBackend(const SurfaceMesh& mesh, const LocalDistanc
       weights_(weights),
       field_(mesh.vertex_count(), 0),
       candidate_count_(mesh.vertex_count(), 0),
-      held_(mesh.vertex_count()) {}
+      held_(mesh.vertex_count()),
+      ring_units_(mesh.ring_neighbors().size(), kNotYet),
+      units_at_zero_(units_of_distance(0.0f)) {}
 
 std::int64_t LocalFieldBackend::units_of_distance(float d) const {
   if (std::isinf(d)) return 0;  // beyond reach: the weight the store cuts off
@@ -31,9 +34,16 @@ std::int64_t LocalFieldBackend::units_with(float from_u_to_v, VertexId u, const 
   return back ? units_of_distance(0.5f * (from_u_to_v + *back)) : 0;  // the store's symmetric mean
 }
 
-// u is a particle's vertex and v one of its candidates: both held.
+// u is a particle's vertex and v one of its candidates: u itself (at
+// distance 0 in its own ball) or in its one-ring, and both held.
 std::int64_t LocalFieldBackend::weight_units(VertexId u, VertexId v) const {
-  return units_between(*held_[u], u, *held_[v], v);
+  if (u == v) return units_at_zero_;
+  const auto ring = mesh_.one_ring(u);
+  const auto at = std::find(ring.begin(), ring.end(), v);
+  if (at == ring.end()) return units_between(*held_[u], u, *held_[v], v);
+  std::int64_t& units = ring_units_[mesh_.ring_offsets()[u] + std::size_t(at - ring.begin())];
+  if (units == kNotYet) units = units_between(*held_[u], u, *held_[v], v);
+  return units;
 }
 
 // Every particle's vertex is a candidate (its index 0), so its ball is held.

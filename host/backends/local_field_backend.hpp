@@ -56,6 +56,15 @@ class LocalFieldBackend final : public SerialFieldMethod {
   // the field reads is one of these (a particle's vertex is its own first
   // candidate), so the hot loops need neither the store's lock nor its cache.
   std::vector<std::shared_ptr<const Ball>> held_;
+  // The weights the candidate rule reads on every decision, from a vertex
+  // to each of its one-ring neighbours, in field units, parallel to
+  // mesh.ring_neighbors(); each is read from the two balls the first time
+  // (kNotYet before). From the balls, every decision cost two binary
+  // searches per candidate, and on a big mesh each step of those missed
+  // the cache.
+  static constexpr std::int64_t kNotYet = -1;
+  mutable std::vector<std::int64_t> ring_units_;
+  std::int64_t units_at_zero_;  // a vertex's weight with itself
 };
 
 }  // namespace meshparticles
