@@ -85,6 +85,50 @@ TEST(LocalDistances, ASmallCacheEvictsAndRecomputesTheSameBalls) {
   EXPECT_EQ(roomy.statistics().balls_evicted, 0u);
 }
 
+// Balls requested for the helper threads are the balls solved on demand,
+// each solved once, whichever thread gets to it first: the reads below run
+// against the helpers, from the other end of the queue.
+TEST(LocalDistances, RequestedBallsAreSolvedOnceAndAreTheBallsSolvedOnDemand) {
+  const MeshWithDistances m("torus.off");
+  const double radius = 0.5;
+  const LocalDistances on_demand(m.mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, 1, true});
+  const LocalDistances helped(m.mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, 4, true});
+  std::vector<VertexId> wanted;
+  for (VertexId v = 0; v < m.mesh.vertex_count(); v += 2) wanted.push_back(v);
+  helped.request(wanted);
+  helped.request(wanted);  // asked twice: still solved once
+  for (auto v = wanted.rbegin(); v != wanted.rend(); ++v) {
+    const auto got = helped.ball(*v);
+    const auto expected = on_demand.ball(*v);
+    ASSERT_EQ(got->vertices, expected->vertices) << "vertex " << *v;
+    ASSERT_EQ(got->distances, expected->distances) << "vertex " << *v;
+  }
+  EXPECT_EQ(helped.statistics().balls_computed, wanted.size());
+  EXPECT_EQ(on_demand.statistics().background_seconds, 0.0);  // one thread: no helper
+}
+
+// Whether new candidates' balls come from helpers or are solved when read,
+// a run makes the same moves and energies.
+TEST(LocalField, HelperThreadsChangeNothing) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 300;
+  const EnergyParams energy = m.default_energy(particles);
+  const double radius = cutoff_radius(m.mesh, particles);
+  const auto start = place_particles(m.mesh, {Init::random, particles, 5, std::nullopt});
+  std::vector<RunOutcome> outcomes;
+  for (const unsigned threads : {1u, 4u}) {
+    const LocalDistances local(m.mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, threads, true});
+    LocalFieldBackend field(m.mesh, local, energy, WeightFormat::float32, 0);
+    outcomes.push_back(run_particles(field, start, {Scheme::sequential, 1, 100, true}));
+  }
+  EXPECT_GT(outcomes[0].trace.front().moved, 100u);
+  EXPECT_EQ(outcomes[1].positions, outcomes[0].positions);
+  ASSERT_EQ(outcomes[1].trace.size(), outcomes[0].trace.size());
+  for (std::size_t i = 0; i < outcomes[0].trace.size(); ++i) {
+    EXPECT_EQ(outcomes[1].trace[i].energy, outcomes[0].trace[i].energy) << "iteration " << i;
+  }
+}
+
 // The local field follows the moves exactly: after many iterations it holds
 // what a rebuild gives, at every candidate.
 TEST(LocalField, IncrementalUpdatesMatchARebuild) {

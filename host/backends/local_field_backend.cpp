@@ -61,20 +61,31 @@ void LocalFieldBackend::spread_weight(VertexId from, int delta) {
   const Ball& from_ball = *held_[from];  // from is a candidate of the moving particle either side of the move
   for (std::size_t k = 0; k < from_ball.vertices.size(); ++k) {
     const VertexId x = from_ball.vertices[k];
-    if (candidate_count_[x] > 0) field_[x] += delta * units_with(from_ball.distances[k], from, *held_[x]);
+    // A candidate not ready yet gets its whole F when it is.
+    if (held_[x]) field_[x] += delta * units_with(from_ball.distances[k], from, *held_[x]);
   }
 }
 
 void LocalFieldBackend::count_candidates(VertexId vertex, int delta) {
+  std::vector<VertexId> new_candidates;
   const auto count = [&](VertexId v) {
-    if (delta > 0 && candidate_count_[v]++ == 0) {  // newly read: held, and F summed afresh
-      held_[v] = balls_.ball(v);
-      field_[v] = field_from_scratch(v);
-    }
+    if (delta > 0 && candidate_count_[v]++ == 0) new_candidates.push_back(v);
     if (delta < 0 && --candidate_count_[v] == 0) held_[v].reset();
   };
   count(vertex);
   for (const VertexId v : mesh_.one_ring(vertex)) count(v);
+  balls_.request(new_candidates);
+}
+
+void LocalFieldBackend::make_ready(VertexId v) {
+  if (held_[v] || candidate_count_[v] == 0) return;
+  held_[v] = balls_.ball(v);
+  field_[v] = field_from_scratch(v);  // reads the balls of the particles' vertices, all ready
+}
+
+void LocalFieldBackend::before_choice(VertexId vertex) {
+  make_ready(vertex);
+  for (const VertexId v : mesh_.one_ring(vertex)) make_ready(v);
 }
 
 // The particle already stands at `to` in positions_ and occupancy_: its

@@ -7,10 +7,13 @@
 // F is kept only where the candidate rule reads it: at the candidates of
 // the particles (each particle's vertex and one-ring), counted per vertex.
 // A move from a to b subtracts a's weight from every candidate in a's ball
-// and adds b's to every candidate in b's ball; a vertex that becomes a
-// candidate gets F summed afresh from the particles in its ball. All sums
-// are in the same fixed-point units as the dense field, so they are exact:
-// following the moves leaves exactly what a rebuild gives.
+// and adds b's to every candidate in b's ball. A vertex that becomes a
+// candidate has its ball solved by the store's helper threads while the
+// other particles decide, and F summed afresh from the particles in its
+// ball just before its particle reads it; until then the moves pass it by.
+// All sums are in the same fixed-point units as the dense field, so they
+// are exact: following the moves leaves exactly what a rebuild gives,
+// whenever each sum is made.
 #include "backends/serial_field_method.hpp"
 #include "geodesics/local_distances.hpp"
 #include "particles/particle_params.hpp"
@@ -23,8 +26,11 @@ class LocalFieldBackend final : public SerialFieldMethod {
                     WeightFormat weights, std::size_t rebuild_every);
 
   void rebuild_field() override;
-  // For tests: F(v) in field units at a candidate v.
-  std::int64_t field(VertexId v) const { return field_at(v); }
+  // For tests: F(v) in field units at a candidate v (summed now if new).
+  std::int64_t field(VertexId v) {
+    make_ready(v);
+    return field_at(v);
+  }
   // For tests: the vertices where F is kept (each particle's vertex and one-ring).
   std::vector<VertexId> candidates() const;
 
@@ -33,6 +39,7 @@ class LocalFieldBackend final : public SerialFieldMethod {
   std::int64_t weight_units(VertexId u, VertexId v) const override;
   void field_after_move(std::size_t c, VertexId from, VertexId to) override;
   void before_moves(std::span<const VertexId> targets) override;
+  void before_choice(VertexId vertex) override;
 
   // The weight between u and v in field units, from their balls.
   std::int64_t units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const;
@@ -43,8 +50,11 @@ class LocalFieldBackend final : public SerialFieldMethod {
   std::int64_t field_from_scratch(VertexId x) const;
   // Adds `delta` times `from`'s weight to F at every candidate in its ball.
   void spread_weight(VertexId from, int delta);
-  // Counts `vertex` and its one-ring as candidates once more (+1) or less (-1).
+  // Counts `vertex` and its one-ring as candidates once more (+1) or less
+  // (-1); the balls of new ones are requested from the store's helpers.
   void count_candidates(VertexId vertex, int delta);
+  // Holds candidate v's ball and sums F(v), if not done since v became one.
+  void make_ready(VertexId v);
 
   const LocalDistances& balls_;
   Potential potential_;
@@ -52,9 +62,11 @@ class LocalFieldBackend final : public SerialFieldMethod {
   WeightFormat weights_;
   std::vector<std::int64_t> field_;             // F(v) in field units, where candidate_count_[v] > 0
   std::vector<std::uint32_t> candidate_count_;  // particles that have v among their candidates
-  // The balls of the candidates, held while they are candidates: every ball
-  // the field reads is one of these (a particle's vertex is its own first
-  // candidate), so the hot loops need neither the store's lock nor its cache.
+  // The balls of the candidates, held while they are candidates, from the
+  // time they are ready (a new candidate's is null until make_ready): every
+  // ball the field reads is one of these (a particle's vertex is its own
+  // first candidate, ready before the particle moves there), so the hot
+  // loops need neither the store's lock nor its cache.
   std::vector<std::shared_ptr<const Ball>> held_;
   // The weights the candidate rule reads on every decision, from a vertex
   // to each of its one-ring neighbours, in field units, parallel to

@@ -53,6 +53,7 @@ void SerialFieldMethod::move(std::size_t c, VertexId target) {
 std::size_t SerialFieldMethod::sequential_sweep() {
   std::size_t moved = 0;
   for (std::size_t c = 0; c < positions_.size(); ++c) {
+    before_choice(positions_[c]);
     const VertexId target = choice(c, 0);
     if (target != positions_[c]) {
       move(c, target);
@@ -72,6 +73,7 @@ std::size_t SerialFieldMethod::synchronous_step(unsigned color, unsigned colors)
     if (occupancy_[positions_[c]] > 1) {
       for (std::size_t i = 0; i < c; ++i) stack_rank += positions_[i] == positions_[c];
     }
+    before_choice(positions_[c]);
     const VertexId target = choice(c, stack_rank);
     if (target != positions_[c]) {
       movers.push_back(c);

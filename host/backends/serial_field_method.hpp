@@ -37,6 +37,9 @@ class SerialFieldMethod : public ParticleBackend {
   // Before the moves of a sub-step to `targets` are committed (to fetch
   // what they will need at once).
   virtual void before_moves(std::span<const VertexId> /*targets*/) {}
+  // Before the rule reads F at `vertex` and its one-ring (for a store that
+  // makes F ready only when it is read).
+  virtual void before_choice(VertexId /*vertex*/) {}
 
   const SurfaceMesh& mesh_;
   std::vector<std::uint32_t> occupancy_;  // particles on each vertex

@@ -45,7 +45,17 @@ LocalDistances::LocalDistances(const SurfaceMesh& mesh, const Settings& settings
       settings_(settings),
       solver_(make_geodesic_solver(mesh, settings.method)),
       balls_(mesh.vertex_count()),
-      last_used_(mesh.vertex_count(), 0) {}
+      last_used_(mesh.vertex_count(), 0),
+      queued_(mesh.vertex_count(), Queued::no) {}
+
+LocalDistances::~LocalDistances() {
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  work_ready_.notify_all();
+  for (auto& helper : helpers_) helper.join();
+}
 
 float LocalDistances::distance(VertexId u, VertexId v) const {
   const auto from_u = ball(u);
@@ -78,15 +88,84 @@ void LocalDistances::for_each_marked_within(VertexId u, float radius, std::span<
 }
 
 std::shared_ptr<const Ball> LocalDistances::ball(VertexId u) const {
-  const std::lock_guard lock(mutex_);
+  std::unique_lock lock(mutex_);
   last_used_[u] = ++clock_;
   if (balls_[u]) return balls_[u];
   const auto started = std::chrono::steady_clock::now();
-  auto computed = std::make_shared<const Ball>(solver_->solve_ball(u, settings_.radius, scratch_));
+  ball_ready_.wait(lock, [&] { return queued_[u] != Queued::solving; });  // not solved twice
+  if (balls_[u]) {
+    statistics_.seconds += seconds_since(started);
+    return balls_[u];
+  }
+  queued_[u] = Queued::solving;  // a waiting u is ours now: the helpers pass it by
+  lock.unlock();
+  std::shared_ptr<const Ball> computed;
+  try {
+    const std::lock_guard solving(scratch_mutex_);
+    computed = std::make_shared<const Ball>(solver_->solve_ball(u, settings_.radius, scratch_));
+  } catch (...) {  // out of memory: nobody may wait for u forever
+    lock.lock();
+    queued_[u] = Queued::no;
+    ball_ready_.notify_all();
+    throw;
+  }
+  lock.lock();
+  queued_[u] = Queued::no;
   statistics_.seconds += seconds_since(started);
   insert(u, computed);
   evict_to_budget();
+  ball_ready_.notify_all();
   return computed;
+}
+
+unsigned LocalDistances::threads() const {
+  return settings_.threads ? settings_.threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
+void LocalDistances::request(std::span<const VertexId> vertices) const {
+  if (threads() < 2) return;  // no helper: ball() solves each when it is read
+  {
+    const std::lock_guard lock(mutex_);
+    for (const VertexId v : vertices) {
+      if (balls_[v] || queued_[v] != Queued::no) continue;
+      queued_[v] = Queued::waiting;
+      waiting_.push_back(v);
+    }
+    while (helpers_.size() + 1 < threads()) helpers_.emplace_back([this] { help(); });
+  }
+  work_ready_.notify_all();
+}
+
+void LocalDistances::help() const {
+  SolverScratch scratch;
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    work_ready_.wait(lock, [&] { return stopping_ || !waiting_.empty(); });
+    if (stopping_) return;
+    const VertexId u = waiting_.front();
+    waiting_.pop_front();
+    if (queued_[u] != Queued::waiting) continue;  // ball() took it
+    if (balls_[u]) {
+      queued_[u] = Queued::no;
+      continue;
+    }
+    queued_[u] = Queued::solving;
+    lock.unlock();
+    const auto started = std::chrono::steady_clock::now();
+    std::shared_ptr<const Ball> computed;
+    try {
+      computed = std::make_shared<const Ball>(solver_->solve_ball(u, settings_.radius, scratch));
+    } catch (...) {  // out of memory: left to ball(), which rethrows it on the caller's thread
+    }
+    lock.lock();
+    queued_[u] = Queued::no;
+    statistics_.background_seconds += seconds_since(started);
+    if (computed) {
+      insert(u, std::move(computed));
+      evict_to_budget();
+    }
+    ball_ready_.notify_all();
+  }
 }
 
 void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
@@ -102,8 +181,7 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
   if (missing.empty()) return;
   const auto started = std::chrono::steady_clock::now();
-  unsigned threads = settings_.threads ? settings_.threads : std::max(1u, std::thread::hardware_concurrency());
-  if (missing.size() < kParallelBatch) threads = 1;
+  const unsigned threads = missing.size() < kParallelBatch ? 1 : this->threads();
   ProgressLine progress("distance balls", missing.size(), settings_.quiet || missing.size() < kProgressBatch);
   std::atomic<std::size_t> next{0}, done{0};
   std::exception_ptr failure;
@@ -142,11 +220,11 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
 }
 
 void LocalDistances::insert(VertexId u, std::shared_ptr<const Ball> ball) const {
-  if (balls_[u]) return;
+  ++statistics_.balls_computed;  // every solve, one made twice too: the work done
+  statistics_.entries_computed += ball->vertices.size();
+  if (balls_[u]) return;  // a prefetch solved it beside a helper: the first stays
   cached_bytes_ += ball->bytes();
   statistics_.peak_bytes = std::max(statistics_.peak_bytes, cached_bytes_);
-  ++statistics_.balls_computed;
-  statistics_.entries_computed += ball->vertices.size();
   balls_[u] = std::move(ball);
   cached_.push_back(u);
 }

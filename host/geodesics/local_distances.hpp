@@ -11,9 +11,12 @@
 // vertex lies in the other's ball. Beyond that the store answers +inf:
 // symmetric, like every distance the particle system reads.
 #include <atomic>
+#include <condition_variable>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <thread>
 #include <vector>
 
 #include "geodesics/distance_store.hpp"
@@ -34,12 +37,16 @@ class LocalDistances final : public DistanceStore {
   struct Statistics {
     std::size_t balls_computed = 0;
     std::uint64_t entries_computed = 0;  // over all balls computed: their mean size is this / balls_computed
-    double seconds = 0;                  // spent computing balls
+    double seconds = 0;                  // the caller's time on balls: computing them or waiting for them
+    double background_seconds = 0;       // spent by the helpers of request(), beside the caller
     std::size_t balls_evicted = 0;
     std::uint64_t peak_bytes = 0;  // of the cache
   };
 
   LocalDistances(const SurfaceMesh& mesh, const Settings& settings);
+  ~LocalDistances() override;
+  LocalDistances(const LocalDistances&) = delete;
+  LocalDistances& operator=(const LocalDistances&) = delete;
 
   std::size_t vertex_count() const override { return vertex_count_; }
   float distance(VertexId u, VertexId v) const override;
@@ -48,10 +55,19 @@ class LocalDistances final : public DistanceStore {
                               const std::function<void(VertexId, float)>& visit) const override;
   float reach() const override { return float(settings_.radius); }
   const LocalDistances* local_balls() const override { return this; }
+  // The threads it solves balls on (Settings::threads, 0 resolved to the cores).
+  unsigned threads() const;
 
   // Computes the balls of `vertices` the cache does not hold, on all cores
   // (with a progress line when there are many), and keeps them.
   void prefetch(std::span<const VertexId> vertices) const;
+
+  // Queues the balls of `vertices` the cache does not hold for helper
+  // threads (one fewer than the store's threads) and returns at once: the
+  // caller goes on with other work while they are solved. ball() of a
+  // queued vertex takes its ball from a helper, waiting if one is solving
+  // it, or solves it at once if none has begun.
+  void request(std::span<const VertexId> vertices) const;
 
   // u's ball (computed now if the cache does not hold it). Holding the
   // pointer keeps the ball alive whatever the cache evicts meanwhile.
@@ -66,6 +82,9 @@ class LocalDistances final : public DistanceStore {
  private:
   void insert(VertexId u, std::shared_ptr<const Ball> ball) const;  // with the mutex held
   void evict_to_budget() const;                                      // with the mutex held
+  void help() const;                                                 // a helper thread of request()
+
+  enum class Queued : std::uint8_t { no, waiting, solving };
 
   std::size_t vertex_count_;
   Settings settings_;
@@ -77,8 +96,16 @@ class LocalDistances final : public DistanceStore {
   mutable std::uint64_t clock_ = 0;
   mutable std::uint64_t cached_bytes_ = 0;
   mutable std::vector<VertexId> cached_;  // the vertices whose ball is held
-  mutable SolverScratch scratch_;         // for balls computed one at a time
+  mutable std::mutex scratch_mutex_;
+  mutable SolverScratch scratch_;  // for balls computed one at a time, outside mutex_
   mutable Statistics statistics_;
+
+  // request()'s queue: helpers start with the first request and stop with the store.
+  mutable std::vector<Queued> queued_;  // per vertex
+  mutable std::deque<VertexId> waiting_;
+  mutable std::condition_variable work_ready_, ball_ready_;
+  mutable std::vector<std::thread> helpers_;
+  mutable bool stopping_ = false;
 };
 
 // The one-sided distance from the ball's source to v, if v is in the ball.

@@ -61,6 +61,7 @@ nlohmann::json distances_json(const RunResult& result) {
   distances["mean_ball_size"] =
       balls.balls_computed ? double(balls.entries_computed) / double(balls.balls_computed) : 0.0;
   distances["ball_seconds"] = balls.seconds;
+  distances["ball_seconds_background"] = balls.background_seconds;
   distances["balls_evicted"] = balls.balls_evicted;
   distances["peak_ball_bytes"] = balls.peak_bytes;
   return distances;
