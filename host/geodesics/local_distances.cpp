@@ -92,27 +92,55 @@ std::shared_ptr<const Ball> LocalDistances::ball(VertexId u) const {
   last_used_[u] = ++clock_;
   if (balls_[u]) return balls_[u];
   const auto started = std::chrono::steady_clock::now();
-  ball_ready_.wait(lock, [&] { return queued_[u] != Queued::solving; });  // not solved twice
-  if (balls_[u]) {
-    statistics_.seconds += seconds_since(started);
-    return balls_[u];
+  // A helper is solving u: rather than wait idle, solve what is queued after it.
+  while (queued_[u] == Queued::solving) {
+    if (const auto other = take_waiting()) {
+      solve_taken(*other, lock, scratch_, &scratch_mutex_);
+    } else {
+      ball_ready_.wait(lock);
+    }
   }
-  queued_[u] = Queued::solving;  // a waiting u is ours now: the helpers pass it by
+  std::shared_ptr<const Ball> found = balls_[u];
+  if (!found) {
+    queued_[u] = Queued::solving;  // a waiting u is ours now: the helpers pass it by
+    found = solve_taken(u, lock, scratch_, &scratch_mutex_);
+  }
+  statistics_.seconds += seconds_since(started);
+  return found;
+}
+
+std::optional<VertexId> LocalDistances::take_waiting() const {
+  while (!waiting_.empty()) {
+    const VertexId v = waiting_.front();
+    waiting_.pop_front();
+    if (queued_[v] != Queued::waiting) continue;  // ball() took it
+    if (balls_[v]) {  // a prefetch solved it meanwhile
+      queued_[v] = Queued::no;
+      continue;
+    }
+    queued_[v] = Queued::solving;
+    return v;
+  }
+  return std::nullopt;
+}
+
+std::shared_ptr<const Ball> LocalDistances::solve_taken(VertexId v, std::unique_lock<std::mutex>& lock,
+                                                        SolverScratch& scratch, std::mutex* scratch_guard) const {
   lock.unlock();
   std::shared_ptr<const Ball> computed;
   try {
-    const std::lock_guard solving(scratch_mutex_);
-    computed = std::make_shared<const Ball>(solver_->solve_ball(u, settings_.radius, scratch_));
-  } catch (...) {  // out of memory: nobody may wait for u forever
+    std::unique_lock<std::mutex> guard;  // never held together with mutex_
+    if (scratch_guard) guard = std::unique_lock(*scratch_guard);
+    computed = std::make_shared<const Ball>(solver_->solve_ball(v, settings_.radius, scratch));
+  } catch (...) {  // out of memory: nobody may wait for v forever
     lock.lock();
-    queued_[u] = Queued::no;
+    queued_[v] = Queued::no;
     ball_ready_.notify_all();
     throw;
   }
   lock.lock();
-  queued_[u] = Queued::no;
-  statistics_.seconds += seconds_since(started);
-  insert(u, computed);
+  queued_[v] = Queued::no;
+  insert(v, computed);
   evict_to_budget();
   ball_ready_.notify_all();
   return computed;
@@ -142,29 +170,14 @@ void LocalDistances::help() const {
   for (;;) {
     work_ready_.wait(lock, [&] { return stopping_ || !waiting_.empty(); });
     if (stopping_) return;
-    const VertexId u = waiting_.front();
-    waiting_.pop_front();
-    if (queued_[u] != Queued::waiting) continue;  // ball() took it
-    if (balls_[u]) {
-      queued_[u] = Queued::no;
-      continue;
-    }
-    queued_[u] = Queued::solving;
-    lock.unlock();
+    const auto v = take_waiting();
+    if (!v) continue;
     const auto started = std::chrono::steady_clock::now();
-    std::shared_ptr<const Ball> computed;
     try {
-      computed = std::make_shared<const Ball>(solver_->solve_ball(u, settings_.radius, scratch));
-    } catch (...) {  // out of memory: left to ball(), which rethrows it on the caller's thread
+      solve_taken(*v, lock, scratch, nullptr);
+    } catch (...) {  // out of memory: left to ball(), which meets it again on the caller's thread
     }
-    lock.lock();
-    queued_[u] = Queued::no;
     statistics_.background_seconds += seconds_since(started);
-    if (computed) {
-      insert(u, std::move(computed));
-      evict_to_budget();
-    }
-    ball_ready_.notify_all();
   }
 }
 

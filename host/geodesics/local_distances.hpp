@@ -65,8 +65,8 @@ class LocalDistances final : public DistanceStore {
   // Queues the balls of `vertices` the cache does not hold for helper
   // threads (one fewer than the store's threads) and returns at once: the
   // caller goes on with other work while they are solved. ball() of a
-  // queued vertex takes its ball from a helper, waiting if one is solving
-  // it, or solves it at once if none has begun.
+  // queued vertex solves it at once if no helper has begun it; if one has,
+  // it solves the balls queued after it until that one is done.
   void request(std::span<const VertexId> vertices) const;
 
   // u's ball (computed now if the cache does not hold it). Holding the
@@ -83,6 +83,14 @@ class LocalDistances final : public DistanceStore {
   void insert(VertexId u, std::shared_ptr<const Ball> ball) const;  // with the mutex held
   void evict_to_budget() const;                                      // with the mutex held
   void help() const;                                                 // a helper thread of request()
+  // With mutex_ held: the next queued vertex nobody has begun, now marked
+  // as being solved by the caller.
+  std::optional<VertexId> take_waiting() const;
+  // Solves v (marked as being solved) with `lock` on mutex_ released
+  // meanwhile, under `scratch_guard` if given, and keeps it; `lock` is held
+  // again on return, also when the solve throws.
+  std::shared_ptr<const Ball> solve_taken(VertexId v, std::unique_lock<std::mutex>& lock, SolverScratch& scratch,
+                                          std::mutex* scratch_guard) const;
 
   enum class Queued : std::uint8_t { no, waiting, solving };
 
