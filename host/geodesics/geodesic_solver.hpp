@@ -22,12 +22,13 @@ std::string method_name(GeodesicMethod method);
 GeodesicMethod parse_method(const std::string& name);
 
 // Per-thread working memory of solves. Between solves it is clean: every
-// accepted flag 0, no vertex queued and every scratch distance +inf, so a solve that reaches
-// few vertices costs in proportion to them, not to the mesh.
+// accepted flag 0, no vertex queued and every scratch distance +inf, so a
+// solve that reaches few vertices costs in proportion to them, not to the
+// mesh.
 struct SolverScratch {
   static constexpr std::uint32_t kNotQueued = 0xFFFFFFFFu;
   std::vector<std::uint64_t> heap;      // see shortest_first_queue.hpp
-  std::vector<std::uint32_t> heap_slot; // per vertex: its index in heap, or kNotQueued
+  std::vector<std::uint32_t> heap_slot;  // per vertex: its index in heap, or kNotQueued
   std::vector<unsigned char> accepted;  // per vertex
   std::vector<std::uint32_t> origin;    // per vertex: the source its distance comes from (fast marching)
   std::vector<VertexId> touched;        // the vertices the solve in progress gave a distance
