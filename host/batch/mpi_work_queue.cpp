@@ -11,6 +11,7 @@
 #include <iostream>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "batch/failure.hpp"
@@ -33,6 +34,21 @@ constexpr auto kPollInterval = std::chrono::milliseconds(2);
 
 using Clock = std::chrono::steady_clock;
 using Seconds = std::chrono::duration<double>;
+
+// How often a living rank says so: often enough that `timeout` of silence
+// means it is gone.
+Seconds heartbeat_interval(Seconds timeout) { return std::min(Seconds(1), timeout / 5); }
+
+void wait_without_spinning(MPI_Request& request) {
+  for (int done = 0; MPI_Test(&request, &done, MPI_STATUS_IGNORE), !done;) std::this_thread::sleep_for(kPollInterval);
+}
+
+// A rank other than 0 that has given up on rank 0: MPI_Finalize would wait
+// for rank 0 forever, so it leaves without it.
+[[noreturn]] void leave_without_rank_zero(int rank, const std::string& why) {
+  std::cerr << "meshparticles: rank " << rank << ": " << why << std::endl;
+  std::_Exit(1);
+}
 
 class MpiSession {
  public:
@@ -81,7 +97,7 @@ struct RankZeroSilent : std::runtime_error {
 class RemoteQueue : public MeshQueue {
  public:
   explicit RemoteQueue(Seconds timeout)
-      : timeout_(timeout), beat_every_(std::min(Seconds(1), timeout / 5)), heartbeat_([this] { beat(); }) {}
+      : timeout_(timeout), beat_every_(heartbeat_interval(timeout)), heartbeat_([this] { beat(); }) {}
   ~RemoteQueue() override {
     {
       const std::lock_guard lock(stop_mutex_);
@@ -181,7 +197,7 @@ int dispatch(const BatchPlan& plan, LedgerQueue& queue, int ranks, Seconds timeo
   std::vector<Watch> watch(static_cast<std::size_t>(ranks));
   int unfinished = ranks - 1;  // working ranks
   const auto note = [](const std::string& line) { std::cerr << "meshparticles: " << line << "\n"; };
-  const auto beat_every = std::chrono::duration_cast<Clock::duration>(std::min(Seconds(1), timeout / 5));
+  const auto beat_every = std::chrono::duration_cast<Clock::duration>(heartbeat_interval(timeout));
   Clock::time_point last_beat = Clock::now();
   while (unfinished > 0 || !own_work_done) {
     int arrived = 0;
@@ -257,10 +273,8 @@ void wait_for_the_end(int rank, Seconds timeout) {
       MPI_Recv(nullptr, 0, MPI_CHAR, 0, kHeartbeatTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       last_heard = Clock::now();
     } else if (Clock::now() - last_heard > timeout) {
-      // MPI_Finalize would wait for rank 0 forever: leave without it.
-      std::cerr << "meshparticles: rank " << rank << ": rank 0 has not been heard from for " << int(timeout.count())
-                << " s; this rank stops (its outputs stay; run the batch again for the rest)\n";
-      std::_Exit(1);
+      leave_without_rank_zero(rank, "rank 0 has not been heard from for " + std::to_string(int(timeout.count())) +
+                                        " s; this rank stops (its outputs stay; run the batch again for the rest)");
     }
     std::this_thread::sleep_for(kPollInterval);
   }
@@ -338,7 +352,7 @@ int run_batch_across_ranks(const BatchRequest& request) {
     }
     MPI_Request all_done;
     MPI_Ibarrier(MPI_COMM_WORLD, &all_done);
-    for (int done = 0; MPI_Test(&all_done, &done, MPI_STATUS_IGNORE), !done;) std::this_thread::sleep_for(kPollInterval);
+    wait_without_spinning(all_done);
     return exit_code;
   }
   std::string gave_up;
@@ -350,11 +364,7 @@ int run_batch_across_ranks(const BatchRequest& request) {
   } catch (...) {
     abort_batch(mpi.rank);
   }
-  if (!gave_up.empty()) {
-    // MPI_Finalize would wait for rank 0 forever: leave without it.
-    std::cerr << "meshparticles: rank " << mpi.rank << ": " << gave_up << std::endl;
-    std::_Exit(1);
-  }
+  if (!gave_up.empty()) leave_without_rank_zero(mpi.rank, gave_up);
   wait_for_the_end(mpi.rank, timeout);
   return 0;
 }
