@@ -91,8 +91,8 @@ TEST(LocalDistances, ASmallCacheEvictsAndRecomputesTheSameBalls) {
 TEST(LocalDistances, RequestedBallsAreSolvedOnceAndAreTheBallsSolvedOnDemand) {
   const MeshWithDistances m("torus.off");
   const double radius = 0.5;
-  const LocalDistances on_demand(m.mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, 1, true});
-  const LocalDistances helped(m.mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, 4, true});
+  const LocalDistances on_demand = local_store(m.mesh, radius, std::uint64_t{1} << 30, 1);
+  const LocalDistances helped = local_store(m.mesh, radius, std::uint64_t{1} << 30, 4);
   std::vector<VertexId> wanted;
   for (VertexId v = 0; v < m.mesh.vertex_count(); v += 2) wanted.push_back(v);
   helped.request(wanted);
@@ -117,7 +117,7 @@ TEST(LocalField, HelperThreadsChangeNothing) {
   const auto start = place_particles(m.mesh, {Init::random, particles, 5, std::nullopt});
   std::vector<RunOutcome> outcomes;
   for (const unsigned threads : {1u, 4u}) {
-    const LocalDistances local(m.mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, threads, true});
+    const LocalDistances local = local_store(m.mesh, radius, std::uint64_t{1} << 30, threads);
     LocalFieldBackend field(m.mesh, local, energy, WeightFormat::float32, 0);
     outcomes.push_back(run_particles(field, start, {Scheme::sequential, 1, 100, true}));
   }
