@@ -96,6 +96,38 @@ TEST(LocalDeviceField, IncrementalUpdatesMatchARebuildThroughRepacks) {
   }
 }
 
+// The monotone scheme undoes an attempt that raised the energy by setting
+// the positions back. The particles that differ go back as moves, as a
+// colour's commit does, not through a rebuild; F at the candidates is then
+// what a rebuild from those positions gives, bit for bit.
+TEST(LocalDeviceField, PositionsSetBackAreMovedNotRebuilt) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 200;
+  const EnergyParams energy = m.default_energy(particles);
+  const LocalDistances balls = local_store(m.mesh, cutoff_radius(m.mesh, particles));
+  const auto start = place_particles(m.mesh, {Init::farthest, particles, 3, std::nullopt});
+  const auto device = device_twin(m.mesh, balls, energy);
+  device->set_positions(start);
+  for (int i = 0; i < 2; ++i) device->iterate(Scheme::colored, 2);
+  std::size_t differing = 0;
+  const std::vector<VertexId> moved = device->positions();
+  for (std::size_t i = 0; i < particles; ++i) differing += moved[i] != start[i];
+  ASSERT_GT(differing, 0u) << "the test needs moves to undo";
+  ASSERT_LE(2 * differing, particles) << "the test needs few enough moves to undo them as moves";
+
+  const std::size_t rebuilds = device->rebuilds();
+  device->set_positions(start);
+  EXPECT_EQ(device->rebuilds(), rebuilds) << "set back by a rebuild";
+  EXPECT_EQ(device->positions(), start);
+  const auto fresh = device_twin(m.mesh, balls, energy);
+  fresh->set_positions(start);
+  EXPECT_EQ(device->candidates(), fresh->candidates());
+  EXPECT_EQ(device->candidate_field(), fresh->candidate_field());
+  EXPECT_EQ(device->total_energy(), fresh->total_energy());
+  EXPECT_EQ(device->iterate(Scheme::colored, 2).moved, fresh->iterate(Scheme::colored, 2).moved);
+  EXPECT_EQ(device->positions(), fresh->positions());
+}
+
 // A mesh whose table the device could not hold is refused on the dense
 // table and accepted on local distances, before anything is computed.
 TEST(LocalDeviceField, AMeshPastTheDevicesTableIsPlannedOnLocalDistances) {

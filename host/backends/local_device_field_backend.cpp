@@ -293,6 +293,7 @@ void LocalDeviceFieldBackend::rebuild_field() {
   queue_.enqueueWriteBuffer(occupancy_, CL_TRUE, 0, occupancy.size() * sizeof(cl_uint), occupancy.data());
   enqueue_sums(all);
   queue_.finish();
+  ++rebuilds_;
 }
 
 cl::Event LocalDeviceFieldBackend::enqueue_update(cl_uint color, cl_uint colors, cl_uint particles,
@@ -311,11 +312,25 @@ void LocalDeviceFieldBackend::after_commit(cl_uint color, cl_uint colors, std::v
   const cl_uint first = color * ((particle_count_ + colors - 1) / colors);  // as apply_moves.cl
   std::vector<cl_uint2> moves(count);
   queue_.enqueueReadBuffer(moves_, CL_TRUE, first * sizeof(cl_uint2), count * sizeof(cl_uint2), moves.data());
+  apply_moves(first, moves, events);
+}
 
+// Exact in any grouping (F is a fixed-point sum), so the moves back to an
+// earlier set of positions can go as one colour's.
+bool LocalDeviceFieldBackend::moved_by_host(std::span<const cl_uint2> moves) {
+  std::vector<cl::Event> events;
+  apply_moves(0, moves, events);
+  queue_.finish();
+  return true;
+}
+
+void LocalDeviceFieldBackend::apply_moves(cl_uint first, std::span<const cl_uint2> moves,
+                                          std::vector<cl::Event>& events) {
+  if (moves.empty()) return;
   scatter_.setArg(kScatterFirst, first);
   const std::size_t group = kernel_.work_group_size;
   cl::Event event;
-  queue_.enqueueNDRangeKernel(scatter_, cl::NullRange, cl::NDRange(std::size_t(2) * count * group),
+  queue_.enqueueNDRangeKernel(scatter_, cl::NullRange, cl::NDRange(std::size_t(2) * moves.size() * group),
                               cl::NDRange(group), nullptr, &event);
   events.push_back(event);
 

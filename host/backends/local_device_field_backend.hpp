@@ -30,14 +30,21 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   std::vector<VertexId> candidates() const;
   std::vector<std::int64_t> candidate_field();
   void rebuild_field();
-  // For tests: how often the pool was rewritten (the first fill included).
+  // For tests: how often the pool was rewritten (the first fill included),
+  // and how often F was summed from scratch at every candidate.
   std::size_t repacks() const { return repacks_; }
+  std::size_t rebuilds() const { return rebuilds_; }
 
  private:
   cl::Event enqueue_update(cl_uint color, cl_uint colors, cl_uint particles, cl_uint rank_stacks) override;
   void positions_changed(bool resized) override;
   void after_commit(cl_uint color, cl_uint colors, std::vector<cl::Event>& events) override;
   void after_iteration(std::vector<cl::Event>& events) override;
+  bool moved_by_host(std::span<const cl_uint2> moves) override;
+
+  // The moves at `first` of the device's move list (`moves`, their copy on
+  // the host): F scattered at the old candidates, rows and sums for the new.
+  void apply_moves(cl_uint first, std::span<const cl_uint2> moves, std::vector<cl::Event>& events);
 
   // Counts `vertex` and its one-ring as candidates once more or less; notes
   // the vertices that become or stop being candidates.
@@ -79,7 +86,7 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   std::vector<std::shared_ptr<const Ball>> held_;  // the balls whose rows are in the pool
   std::vector<std::uint32_t> row_start_host_;
   std::uint64_t pool_used_ = 0, pool_capacity_ = 0;
-  std::size_t repacks_ = 0;
+  std::size_t repacks_ = 0, rebuilds_ = 0;
 };
 
 // Throws UserError when the candidates' balls, estimated at `ball_bytes`,
