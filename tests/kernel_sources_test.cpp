@@ -51,5 +51,33 @@ TEST(KernelSources, EveryPastedLineKeepsItsFileAndLineNumber) {
   }
 }
 
+// NVIDIA's compiler ignores #line and counts the lines of the whole pasted
+// program ("<kernel>:8:1: error"): the log is given back with each counted
+// line named by its file and line, as PoCL names them itself.
+TEST(KernelSources, ALogThatCountsPastedLinesNamesTheirFiles) {
+  const std::string source = kernel_source("naive_update.cl") + kernel_source("apply_moves.cl");
+  std::istringstream pasted(source);
+  std::string line;
+  std::size_t physical = 0, header_line = 0, second_file_line = 0;
+  const std::vector<std::string> claims = lines_of_kernel_file("claims.h");
+  const std::vector<std::string> apply = lines_of_kernel_file("apply_moves.cl");
+  bool in_apply_moves = false;
+  while (std::getline(pasted, line)) {
+    ++physical;
+    if (line == "#line 1 \"apply_moves.cl\"") in_apply_moves = true;
+    if (header_line == 0 && line == claims[2]) header_line = physical;
+    if (in_apply_moves && second_file_line == 0 && line == apply[3]) second_file_line = physical;
+  }
+  ASSERT_GT(header_line, 0u);
+  ASSERT_GT(second_file_line, 0u);
+  const std::string log = "<kernel>:" + std::to_string(header_line) + ":7: error: one\n" +
+                          "<kernel>:" + std::to_string(second_file_line) + ":1: warning: two\n" +
+                          "<kernel>:99999:1: error: past the end\n";
+  EXPECT_EQ(name_pasted_lines(log, source),
+            "claims.h:3:7: error: one\napply_moves.cl:4:1: warning: two\n<kernel>:99999:1: error: past the end\n");
+  const std::string pocl = "field.h:3:1: error: unknown type name 'this'\n";
+  EXPECT_EQ(name_pasted_lines(pocl, source), pocl);
+}
+
 }  // namespace
 }  // namespace meshparticles::testing

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "common/user_error.hpp"
@@ -56,5 +57,37 @@ std::string expand_includes(const std::string& file_name, int depth) {
 }  // namespace
 
 std::string kernel_source(const std::string& file_name) { return expand_includes(file_name, 0); }
+
+std::string name_pasted_lines(const std::string& log, const std::string& source) {
+  // Where each line of `source` came from; the markers' own lines too (as
+  // the line they announce), so no counted line is left unnamed.
+  const std::regex marker(R"re(#line (\d+) "([^"]+)")re");
+  std::vector<std::string> origin{""};  // 1-based
+  std::istringstream lines(source);
+  std::string line, file = "?";
+  int number = 1;
+  while (std::getline(lines, line)) {
+    std::smatch match;
+    if (std::regex_match(line, match, marker)) {
+      file = match[2];
+      number = std::stoi(match[1]);
+      origin.push_back(file + ":" + std::to_string(number));
+    } else {
+      origin.push_back(file + ":" + std::to_string(number++));
+    }
+  }
+  // "<kernel>:8:" and the like: a name in angle brackets, then the line.
+  const std::regex counted(R"re(<[A-Za-z _-]+>:(\d+):)re");
+  std::string named;
+  auto rest = log.cbegin();
+  for (std::sregex_iterator it(log.begin(), log.end(), counted), end; it != end; ++it) {
+    const std::size_t physical = std::stoul((*it)[1]);
+    named.append(rest, (*it)[0].first);
+    named += physical < origin.size() ? origin[physical] + ":" : it->str();
+    rest = (*it)[0].second;
+  }
+  named.append(rest, log.cend());
+  return named;
+}
 
 }  // namespace meshparticles

@@ -22,4 +22,11 @@ const std::vector<EmbeddedKernelFile>& embedded_kernel_files();
 // Throws UserError when the file does not exist.
 std::string kernel_source(const std::string& file_name);
 
+// A build log of `source` (kernel_source texts pasted together) with the
+// lines a compiler counted in the whole pasted text ("<kernel>:8:1:", as
+// NVIDIA's compiler writes them: it ignores #line) named by their file and
+// line ("field.h:3:1:"), read back from the source's own #line markers. A
+// log that already names files (PoCL's) comes back as it was.
+std::string name_pasted_lines(const std::string& log, const std::string& source);
+
 }  // namespace meshparticles

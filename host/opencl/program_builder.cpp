@@ -1,6 +1,7 @@
 #include "opencl/program_builder.hpp"
 
 #include "common/user_error.hpp"
+#include "opencl/kernel_sources.hpp"
 
 namespace meshparticles {
 
@@ -24,7 +25,7 @@ cl::Program build_program(const cl::Context& context, const cl::Device& device,
   } catch (const cl::Error&) {
     std::string files;
     for (const auto& file : kernel_files) files += (files.empty() ? "" : ", ") + file;
-    const std::string log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device);
+    const std::string log = name_pasted_lines(program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device), source);
     throw UserError("OpenCL kernels failed to build (" + files + ", options '" + options + "'); build log:\n" + log);
   }
   return program;
