@@ -193,7 +193,8 @@ expect_exit_of(devices_bogus_variable 0 "warning: \\$MESHPARTICLES_DEVICE='bogus
 expect_exit_of(run_bogus_variable 2 "no OpenCL device matches \\$MESHPARTICLES_DEVICE='bogus'"
                env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --out ${RUN_OUT})
 expect_exit_of(bad_pocl_cache 3 "\\$POCL_CACHE_DIR='/proc/no-such-dir' is not a directory PoCL can write"
-               env POCL_CACHE_DIR=/proc/no-such-dir $<TARGET_FILE:meshparticles> devices)
+               env "MESHPARTICLES_DEVICE=Portable Computing Language" POCL_CACHE_DIR=/proc/no-such-dir
+               $<TARGET_FILE:meshparticles> devices)
 expect_exit_of(no_cache_ignores_tmpdir 0 "converged"
                env -u HOME -u XDG_CACHE_HOME -u XDG_CONFIG_HOME TMPDIR=/nonexistent
                $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend serial --no-cache --out ${RUN_OUT}_tmpdir)
