@@ -23,11 +23,12 @@ namespace {
 
 std::unique_ptr<LocalDeviceFieldBackend> device_twin(const SurfaceMesh& mesh, const LocalDistances& balls,
                                                      const EnergyParams& energy, std::size_t work_group = 32,
-                                                     double pool_headroom = 1.0) {
+                                                     double pool_headroom = 1.0,
+                                                     std::size_t upload_piece = std::size_t{1} << 22) {
   UpdateKernel kernel = default_update_kernel(field_backend(), mesh.max_valence() + 1, 64);
   kernel.work_group_size = work_group;
   return std::make_unique<LocalDeviceFieldBackend>(select_device(""), kernel, BackendInputs{mesh, balls, energy},
-                                                   balls, pool_headroom);
+                                                   balls, pool_headroom, upload_piece);
 }
 
 class LocalDeviceField : public ::testing::TestWithParam<std::pair<const char*, std::size_t>> {};
@@ -66,7 +67,8 @@ INSTANTIATE_TEST_SUITE_P(CommittedMeshes, LocalDeviceField,
 
 // Colored K = 2 keeps the torus's particles moving: thousands of moves, the
 // candidates change all the time, and with 2% headroom the pool fills and
-// is repacked again and again. F at
+// is repacked again and again, its rows sent in pieces of about 1,000
+// entries (a few balls each). F at
 // every candidate is then what a rebuild gives, bit for bit, and within the
 // last bits of the serial twin's after the same moves.
 TEST(LocalDeviceField, IncrementalUpdatesMatchARebuildThroughRepacks) {
@@ -79,7 +81,7 @@ TEST(LocalDeviceField, IncrementalUpdatesMatchARebuildThroughRepacks) {
   const RunOutcome twin_outcome = run_particles(twin, start, {Scheme::colored, 2, 100, true});
   for (const std::size_t work_group : {std::size_t{1}, std::size_t{7}, std::size_t{64}}) {
     SCOPED_TRACE("wg " + std::to_string(work_group));
-    const auto device = device_twin(m.mesh, balls, energy, work_group, 0.02);
+    const auto device = device_twin(m.mesh, balls, energy, work_group, 0.02, 1000);
     const RunOutcome outcome = run_particles(*device, start, {Scheme::colored, 2, 100, true});
     ASSERT_EQ(outcome.trace.size(), 100u) << "the run settled: the test needs moves";
     ASSERT_EQ(outcome.positions, twin_outcome.positions);

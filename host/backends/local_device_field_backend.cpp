@@ -59,7 +59,7 @@ void check_local_field_device(const DeviceDescription& device, std::uint64_t bal
 
 LocalDeviceFieldBackend::LocalDeviceFieldBackend(const DeviceDescription& device, const UpdateKernel& kernel,
                                                  const BackendInputs& inputs, const LocalDistances& balls,
-                                                 double pool_headroom)
+                                                 double pool_headroom, std::size_t upload_piece)
     : DeviceBackend(device, inputs.mesh, kernel, /*dense_table=*/false),
       mesh_(inputs.mesh),
       balls_(balls),
@@ -68,6 +68,7 @@ LocalDeviceFieldBackend::LocalDeviceFieldBackend(const DeviceDescription& device
       pool_limit_entries_(
           pool_limit_entries(device, fixed_device_bytes(vertex_count_, inputs.mesh.edge_count(), 0))),
       pool_headroom_(pool_headroom),
+      upload_piece_(upload_piece),
       candidate_count_(inputs.mesh.vertex_count(), 0),
       held_(inputs.mesh.vertex_count()),
       row_start_host_(inputs.mesh.vertex_count(), kNoRow) {
@@ -159,33 +160,52 @@ void LocalDeviceFieldBackend::repack() {
     set_row_args(sum_, kSumRows);
     set_row_args(energies_kernel_, kEnergyRows);
   }
-  std::vector<cl_uint> vertices, starts(vertex_count_, 0), lengths(vertex_count_, 0);
-  std::vector<cl_float> distances;
+  std::vector<VertexId> kept;
+  std::vector<cl_uint> starts(vertex_count_, 0), lengths(vertex_count_, 0);
   std::vector<cl_uchar> flags(vertex_count_, 0);
-  vertices.reserve(entries_needed);
-  distances.reserve(entries_needed);
   for (VertexId v = 0; v < vertex_count_; ++v) {
     if (candidate_count_[v] == 0) {
       held_[v].reset();
       row_start_host_[v] = kNoRow;
       continue;
     }
-    const Ball& ball = *held_[v];
-    row_start_host_[v] = starts[v] = cl_uint(vertices.size());
-    lengths[v] = cl_uint(ball.vertices.size());
+    kept.push_back(v);
+    lengths[v] = cl_uint(held_[v]->vertices.size());
     flags[v] = 1;
-    vertices.insert(vertices.end(), ball.vertices.begin(), ball.vertices.end());
-    distances.insert(distances.end(), ball.distances.begin(), ball.distances.end());
   }
-  pool_used_ = vertices.size();
+  pool_used_ = upload_rows(kept, 0);
+  for (const VertexId v : kept) starts[v] = row_start_host_[v];
   ++repacks_;
-  if (!vertices.empty()) {
-    queue_.enqueueWriteBuffer(row_vertices_, CL_TRUE, 0, vertices.size() * sizeof(cl_uint), vertices.data());
-    queue_.enqueueWriteBuffer(row_distances_, CL_TRUE, 0, distances.size() * sizeof(cl_float), distances.data());
-  }
   queue_.enqueueWriteBuffer(row_start_, CL_TRUE, 0, starts.size() * sizeof(cl_uint), starts.data());
   queue_.enqueueWriteBuffer(row_length_, CL_TRUE, 0, lengths.size() * sizeof(cl_uint), lengths.data());
   queue_.enqueueWriteBuffer(candidate_flags_, CL_TRUE, 0, flags.size(), flags.data());
+}
+
+// The rows go up in pieces (by default 4 M entries, 32 MiB): one copy of
+// all of them on the host would double the balls' memory at the peak (6 GB
+// more on the 1M sphere).
+std::uint64_t LocalDeviceFieldBackend::upload_rows(const std::vector<VertexId>& rows, std::uint64_t at) {
+  std::vector<cl_uint> vertices;
+  std::vector<cl_float> distances;
+  const auto send = [&] {
+    if (vertices.empty()) return;
+    queue_.enqueueWriteBuffer(row_vertices_, CL_TRUE, at * sizeof(cl_uint), vertices.size() * sizeof(cl_uint),
+                              vertices.data());
+    queue_.enqueueWriteBuffer(row_distances_, CL_TRUE, at * sizeof(cl_float), distances.size() * sizeof(cl_float),
+                              distances.data());
+    at += vertices.size();
+    vertices.clear();
+    distances.clear();
+  };
+  for (const VertexId v : rows) {
+    const Ball& ball = *held_[v];
+    row_start_host_[v] = std::uint32_t(at + vertices.size());
+    vertices.insert(vertices.end(), ball.vertices.begin(), ball.vertices.end());
+    distances.insert(distances.end(), ball.distances.begin(), ball.distances.end());
+    if (vertices.size() >= upload_piece_) send();
+  }
+  send();
+  return at;
 }
 
 // Kernels over a list (mark, sum) take it and its length as their first two
@@ -230,20 +250,7 @@ void LocalDeviceFieldBackend::place_rows(const std::vector<VertexId>& arrivals,
     repack();
     return;
   }
-  std::vector<cl_uint> vertices;
-  std::vector<cl_float> distances;
-  for (const VertexId v : missing) {
-    row_start_host_[v] = std::uint32_t(pool_used_ + vertices.size());
-    vertices.insert(vertices.end(), held_[v]->vertices.begin(), held_[v]->vertices.end());
-    distances.insert(distances.end(), held_[v]->distances.begin(), held_[v]->distances.end());
-  }
-  if (!vertices.empty()) {
-    queue_.enqueueWriteBuffer(row_vertices_, CL_TRUE, pool_used_ * sizeof(cl_uint), vertices.size() * sizeof(cl_uint),
-                              vertices.data());
-    queue_.enqueueWriteBuffer(row_distances_, CL_TRUE, pool_used_ * sizeof(cl_float),
-                              distances.size() * sizeof(cl_float), distances.data());
-    pool_used_ += vertices.size();
-  }
+  pool_used_ = upload_rows(missing, pool_used_);
   std::vector<cl_uint4> changes;
   const auto change = [&](VertexId v, cl_uint candidate) {
     changes.push_back({{v, row_start_host_[v], cl_uint(held_[v]->vertices.size()), candidate}});

@@ -20,8 +20,11 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
  public:
   // pool_headroom: the pool holds this fraction more than the candidates
   // need when it is (re)filled (tests make it small to force repacks).
+  // upload_piece: rows go to the device in pieces of about this many
+  // entries (tests make it small to cut rows into many pieces).
   LocalDeviceFieldBackend(const DeviceDescription& device, const UpdateKernel& kernel, const BackendInputs& inputs,
-                          const LocalDistances& balls, double pool_headroom = 1.0);
+                          const LocalDistances& balls, double pool_headroom = 1.0,
+                          std::size_t upload_piece = std::size_t{1} << 22);
 
   double total_energy() override;
 
@@ -55,6 +58,9 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   // Rewrites the pool with the rows of the current candidates only (their
   // balls held).
   void repack();
+  // Writes the rows of `rows`, in that order, into the pool from entry
+  // `at` on (row_start_host_ too); returns the entry after the last.
+  std::uint64_t upload_rows(const std::vector<VertexId>& rows, std::uint64_t at);
   void upload_marks(const std::vector<cl_uint4>& changes);
   void enqueue_sums(const std::vector<VertexId>& vertices);
   struct ListBuffer {
@@ -78,6 +84,7 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   cl::Buffer field_, occupancy_, candidate_flags_, energies_;
   cl::Buffer row_start_, row_length_, row_vertices_, row_distances_;
   double pool_headroom_;
+  std::size_t upload_piece_;  // entries
   ListBuffer marks_list_{{}, 0, "the candidate changes"};  // of one colour
   ListBuffer sums_list_{{}, 0, "the new candidates"};
 
