@@ -55,15 +55,18 @@ TEST(LocalDistances, BatchedAndMarkedQueriesAgreeWithPointQueries) {
   for (std::size_t k = 0; k < targets.size(); ++k) EXPECT_EQ(batched[k], local.distance(17, targets[k]));
   std::vector<std::uint8_t> marked(m.mesh.vertex_count(), 0);
   for (const VertexId t : targets) marked[t] = 1;
-  std::vector<VertexId> seen;
-  local.for_each_marked_within(17, 0.2f, marked, [&](VertexId v, float d) {
-    seen.push_back(v);
-    EXPECT_EQ(d, local.distance(17, v));
-    EXPECT_LE(d, 0.2f);
-  });
-  for (const VertexId t : targets) {
-    const bool expected = local.distance(17, t) <= 0.2f;
-    EXPECT_EQ(std::count(seen.begin(), seen.end(), t) > 0, expected) << t;
+  for (const VertexId first : {VertexId{0}, VertexId{17}}) {
+    SCOPED_TRACE("from vertex " + std::to_string(first));
+    std::vector<VertexId> seen;
+    local.for_each_marked_within(17, 0.2f, marked, first, [&](VertexId v, float d) {
+      seen.push_back(v);
+      EXPECT_EQ(d, local.distance(17, v));
+      EXPECT_LE(d, 0.2f);
+    });
+    for (const VertexId t : targets) {
+      const bool expected = t >= first && local.distance(17, t) <= 0.2f;
+      EXPECT_EQ(std::count(seen.begin(), seen.end(), t) > 0, expected) << t;
+    }
   }
 }
 
@@ -216,6 +219,27 @@ TEST(LocalField, QualityCountsParticlesAloneWithinTheCutoff) {
   EXPECT_EQ(near.nn_min, dense.nn_min);
   EXPECT_LT(near.energy, dense.energy);
   EXPECT_EQ(near.cover, dense.cover);
+}
+
+// With balls that reach every vertex, the local store sees every pair the
+// table does, each once: the same nearest neighbours, energy and stacks,
+// particles on one vertex and on vertices in either order included.
+TEST(LocalField, QualityWithBallsThatReachEverywhereIsTheTables) {
+  const MeshWithDistances m("patch.off");
+  std::vector<VertexId> positions = place_particles(m.mesh, {Init::random, 60, 4, std::nullopt});
+  positions[7] = positions[3];  // a stack, the later index on it
+  const EnergyParams energy{Potential::exp, 0.3};
+  const LocalDistances local = local_store(m.mesh, 10.0);
+  const auto to_nearest = distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions);
+  const DistributionQuality from_balls = measure_quality(m.mesh, local, positions, energy, to_nearest);
+  const DistributionQuality from_table = measure_quality(m.mesh, m.distances, positions, energy, to_nearest);
+  EXPECT_EQ(from_balls.alone, 0u);
+  EXPECT_EQ(from_balls.stacked, 1u);
+  EXPECT_EQ(from_balls.nn_min, from_table.nn_min);
+  ASSERT_TRUE(from_balls.nn_mean && from_table.nn_mean);
+  EXPECT_NEAR(*from_balls.nn_mean, *from_table.nn_mean, 1e-12 * *from_table.nn_mean);
+  EXPECT_NEAR(*from_balls.nn_std, *from_table.nn_std, 1e-9 * *from_table.nn_std);
+  EXPECT_NEAR(from_balls.energy, from_table.energy, 1e-12 * from_table.energy);
 }
 
 }  // namespace

@@ -31,11 +31,12 @@ class DistanceStore {
   // loops (a candidate's energy reads its distance to every particle).
   virtual void distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const = 0;
 
-  // visit(v, d(u, v)) for every vertex v that `marked` marks (marked[v] != 0)
-  // with d(u, v) <= radius, u itself included, in increasing v: the few
-  // vertices of interest near u (the particles, for nearest neighbours)
-  // without paying for all the others.
-  virtual void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
+  // visit(v, d(u, v)) for every vertex v >= first that `marked` marks
+  // (marked[v] != 0) with d(u, v) <= radius, u itself included, in
+  // increasing v: the few vertices of interest near u (the particles, for
+  // nearest neighbours) without paying for all the others. `first` = u
+  // gives each pair of marked vertices once, from the smaller.
+  virtual void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked, VertexId first,
                                       const std::function<void(VertexId, float)>& visit) const = 0;
 
   // How far the store knows distances: +inf for a complete table.

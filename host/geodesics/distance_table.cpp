@@ -18,9 +18,9 @@ void DistanceTable::distances_from(VertexId u, std::span<const VertexId> targets
 }
 
 void DistanceTable::for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
-                                           const std::function<void(VertexId, float)>& visit) const {
+                                           VertexId first, const std::function<void(VertexId, float)>& visit) const {
   const auto from_u = row(u);
-  for (std::size_t v = 0; v < vertex_count_; ++v) {
+  for (std::size_t v = first; v < vertex_count_; ++v) {
     if (marked[v] && from_u[v] <= radius) visit(VertexId(v), from_u[v]);
   }
 }

@@ -18,7 +18,7 @@ class DistanceTable final : public DistanceStore {
   std::size_t vertex_count() const override { return vertex_count_; }
   float distance(VertexId a, VertexId b) const override { return values_[std::size_t(a) * vertex_count_ + b]; }
   void distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const override;
-  void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
+  void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked, VertexId first,
                               const std::function<void(VertexId, float)>& visit) const override;
   const DistanceTable* dense_table() const override { return this; }
 

@@ -74,11 +74,12 @@ void LocalDistances::distances_from(VertexId u, std::span<const VertexId> target
 }
 
 void LocalDistances::for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
-                                            const std::function<void(VertexId, float)>& visit) const {
+                                            VertexId first, const std::function<void(VertexId, float)>& visit) const {
   const auto from_u = ball(u);
   std::vector<VertexId> near;
-  for (const VertexId v : from_u->vertices) {
-    if (marked[v]) near.push_back(v);
+  const auto& ids = from_u->vertices;  // increasing
+  for (auto it = std::lower_bound(ids.begin(), ids.end(), first); it != ids.end(); ++it) {
+    if (marked[*it]) near.push_back(*it);
   }
   prefetch(near);
   for (const VertexId v : near) {

@@ -51,7 +51,7 @@ class LocalDistances final : public DistanceStore {
   std::size_t vertex_count() const override { return vertex_count_; }
   float distance(VertexId u, VertexId v) const override;
   void distances_from(VertexId u, std::span<const VertexId> targets, std::span<float> out) const override;
-  void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked,
+  void for_each_marked_within(VertexId u, float radius, std::span<const std::uint8_t> marked, VertexId first,
                               const std::function<void(VertexId, float)>& visit) const override;
   float reach() const override { return float(settings_.radius); }
   const LocalDistances* local_balls() const override { return this; }

@@ -25,10 +25,11 @@ std::vector<float> distance_to_nearest_particle(const SurfaceMesh& mesh, Geodesi
 
 namespace {
 
-// Calls pair(i, j, d) for every pair i < j of particles within the store's
-// reach: all pairs from a complete table (one batched query per particle),
-// the pairs in each other's balls from a local store (only particles near
-// each one are looked at).
+// Calls pair(i, j, d) once for every pair of particles within the store's
+// reach: all pairs i < j from a complete table (one batched query per
+// particle), the pairs in each other's balls from a local store (only
+// particles near each one are looked at, each pair from the particle on the
+// smaller vertex: its distance costs two searches in the balls).
 template <typename Pair>
 void for_each_pair_within_reach(const DistanceStore& distances, std::span<const VertexId> positions, Pair pair) {
   const std::size_t n = positions.size();
@@ -47,9 +48,10 @@ void for_each_pair_within_reach(const DistanceStore& distances, std::span<const 
     on_vertex[positions[i]].push_back(i);
   }
   for (std::size_t i = 0; i < n; ++i) {
-    distances.for_each_marked_within(positions[i], distances.reach(), occupied, [&](VertexId v, float d) {
+    const VertexId u = positions[i];
+    distances.for_each_marked_within(u, distances.reach(), occupied, u, [&](VertexId v, float d) {
       for (const std::size_t j : on_vertex[v]) {
-        if (j > i) pair(i, j, double(d));
+        if (v > u || j > i) pair(i, j, double(d));  // on one vertex: from the smaller index
       }
     });
   }
