@@ -31,6 +31,19 @@ std::unique_ptr<LocalDeviceFieldBackend> device_twin(const SurfaceMesh& mesh, co
                                                    balls, pool_headroom, upload_piece);
 }
 
+// 200 particles on the torus at the default σ, its balls, and a start.
+struct TorusRun {
+  explicit TorusRun(Init init)
+      : energy(m.default_energy(particles)),
+        balls(local_store(m.mesh, cutoff_radius(m.mesh, particles))),
+        start(place_particles(m.mesh, {init, particles, 3, std::nullopt})) {}
+  const MeshWithDistances m{"torus.off"};
+  const std::size_t particles = 200;
+  const EnergyParams energy;
+  const LocalDistances balls;
+  const std::vector<VertexId> start;
+};
+
 class LocalDeviceField : public ::testing::TestWithParam<std::pair<const char*, std::size_t>> {};
 
 TEST_P(LocalDeviceField, MakesTheSerialTwinsMoves) {
@@ -72,11 +85,8 @@ INSTANTIATE_TEST_SUITE_P(CommittedMeshes, LocalDeviceField,
 // every candidate is then what a rebuild gives, bit for bit, and within the
 // last bits of the serial twin's after the same moves.
 TEST(LocalDeviceField, IncrementalUpdatesMatchARebuildThroughRepacks) {
-  const MeshWithDistances m("torus.off");
-  const std::size_t particles = 200;
-  const EnergyParams energy = m.default_energy(particles);
-  const LocalDistances balls = local_store(m.mesh, cutoff_radius(m.mesh, particles));
-  const auto start = place_particles(m.mesh, {Init::random, particles, 3, std::nullopt});
+  const TorusRun torus(Init::random);
+  const auto& [m, particles, energy, balls, start] = torus;
   LocalFieldBackend twin(m.mesh, balls, energy, WeightFormat::float32, 0);
   const RunOutcome twin_outcome = run_particles(twin, start, {Scheme::colored, 2, 100, true});
   for (const std::size_t work_group : {std::size_t{1}, std::size_t{7}, std::size_t{64}}) {
@@ -103,11 +113,8 @@ TEST(LocalDeviceField, IncrementalUpdatesMatchARebuildThroughRepacks) {
 // colour's commit does, not through a rebuild; F at the candidates is then
 // what a rebuild from those positions gives, bit for bit.
 TEST(LocalDeviceField, PositionsSetBackAreMovedNotRebuilt) {
-  const MeshWithDistances m("torus.off");
-  const std::size_t particles = 200;
-  const EnergyParams energy = m.default_energy(particles);
-  const LocalDistances balls = local_store(m.mesh, cutoff_radius(m.mesh, particles));
-  const auto start = place_particles(m.mesh, {Init::farthest, particles, 3, std::nullopt});
+  const TorusRun torus(Init::farthest);
+  const auto& [m, particles, energy, balls, start] = torus;
   const auto device = device_twin(m.mesh, balls, energy);
   device->set_positions(start);
   for (int i = 0; i < 2; ++i) device->iterate(Scheme::colored, 2);

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <span>
+#include <utility>
 
 #include "backends/local_field_backend.hpp"
 #include "backends/serial_backend.hpp"
@@ -204,16 +206,23 @@ TEST(LocalField, TheReferenceOnLocalBallsMakesTheSameRun) {
   EXPECT_NEAR(got.trace.back().energy, expected.trace.back().energy, 1e-5 * expected.trace.back().energy);
 }
 
+// The quality of `positions` on the patch through balls of `radius` and
+// through the table.
+std::pair<DistributionQuality, DistributionQuality> quality_on_balls_and_table(
+    const MeshWithDistances& m, std::span<const VertexId> positions, const EnergyParams& energy, double radius) {
+  const LocalDistances local = local_store(m.mesh, radius);
+  const auto to_nearest = distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions);
+  return {measure_quality(m.mesh, local, positions, energy, to_nearest),
+          measure_quality(m.mesh, m.distances, positions, energy, to_nearest)};
+}
+
 // Quality through a local store: the pairs within reach, and particles with
 // no neighbour within reach counted as alone.
 TEST(LocalField, QualityCountsParticlesAloneWithinTheCutoff) {
   const MeshWithDistances m("patch.off");
   const std::vector<VertexId> positions = {0, 1, 399};  // two neighbours in a corner, one far away
   const EnergyParams energy{Potential::exp, 1.0};  // the far pair still weighs exp(-0.7)
-  const LocalDistances local = local_store(m.mesh, 0.2);
-  const auto to_nearest = distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions);
-  const DistributionQuality near = measure_quality(m.mesh, local, positions, energy, to_nearest);
-  const DistributionQuality dense = measure_quality(m.mesh, m.distances, positions, energy, to_nearest);
+  const auto [near, dense] = quality_on_balls_and_table(m, positions, energy, 0.2);
   EXPECT_EQ(near.alone, 1u);
   EXPECT_EQ(dense.alone, 0u);
   EXPECT_EQ(near.nn_min, dense.nn_min);
@@ -228,11 +237,7 @@ TEST(LocalField, QualityWithBallsThatReachEverywhereIsTheTables) {
   const MeshWithDistances m("patch.off");
   std::vector<VertexId> positions = place_particles(m.mesh, {Init::random, 60, 4, std::nullopt});
   positions[7] = positions[3];  // a stack, the later index on it
-  const EnergyParams energy{Potential::exp, 0.3};
-  const LocalDistances local = local_store(m.mesh, 10.0);
-  const auto to_nearest = distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions);
-  const DistributionQuality from_balls = measure_quality(m.mesh, local, positions, energy, to_nearest);
-  const DistributionQuality from_table = measure_quality(m.mesh, m.distances, positions, energy, to_nearest);
+  const auto [from_balls, from_table] = quality_on_balls_and_table(m, positions, {Potential::exp, 0.3}, 10.0);
   EXPECT_EQ(from_balls.alone, 0u);
   EXPECT_EQ(from_balls.stacked, 1u);
   EXPECT_EQ(from_balls.nn_min, from_table.nn_min);
