@@ -144,21 +144,7 @@ void DeviceBackend::set_positions(std::span<const VertexId> positions) {
     apply_moves_.setArg(6, move_counts_);
     apply_moves_.setArg(7, moves_);
   }
-  std::vector<cl_uint2> moves;
-  if (!resized) {
-    const std::vector<VertexId> before = this->positions();
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-      if (before[i] != positions[i]) moves.push_back({{before[i], positions[i]}});
-    }
-  }
   queue_.enqueueWriteBuffer(positions_, CL_TRUE, 0, positions.size() * sizeof(cl_uint), positions.data());
-  // Moves of up to half the particles cost about what an iteration costs;
-  // beyond, the backend's own start from scratch is cheaper.
-  const bool few = !resized && 2 * moves.size() <= positions.size();
-  if (few && !moves.empty()) {
-    queue_.enqueueWriteBuffer(moves_, CL_TRUE, 0, moves.size() * sizeof(cl_uint2), moves.data());
-  }
-  if (few && moved_by_host(moves)) return;
   positions_changed(resized);
 }
 

@@ -7,7 +7,6 @@
 // over all particles (naive, tiled: DirectSumBackend) or from an accumulated
 // field (FieldBackend).
 #include <memory>
-#include <span>
 
 #include "backends/update_kernel.hpp"
 #include "common/user_error.hpp"
@@ -84,12 +83,6 @@ class DeviceBackend : public ParticleBackend {
   // Called after set_positions has uploaded them: `resized` when the
   // particle count changed, so the per-particle buffers are new.
   virtual void positions_changed(bool resized) = 0;
-  // Instead of positions_changed: the particles that differ from before,
-  // as moves (from, to), already uploaded to the front of the move list. A
-  // backend that takes them as it takes a colour's commit returns true; the
-  // monotone scheme's undo of a few moves then costs what the moves did,
-  // not a rebuild from scratch.
-  virtual bool moved_by_host(std::span<const cl_uint2> /*moves*/) { return false; }
   // After the moves of `color` were committed; events of kernels that
   // belong in the iteration's kernel time.
   virtual void after_commit(cl_uint /*color*/, cl_uint /*colors*/, std::vector<cl::Event>& /*events*/) {}

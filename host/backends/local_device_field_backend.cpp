@@ -322,13 +322,23 @@ void LocalDeviceFieldBackend::after_commit(cl_uint color, cl_uint colors, std::v
   apply_moves(first, moves, events);
 }
 
-// Exact in any grouping (F is a fixed-point sum), so the moves back to an
-// earlier set of positions can go as one colour's.
-bool LocalDeviceFieldBackend::moved_by_host(std::span<const cl_uint2> moves) {
+// Exact in any grouping (F is a fixed-point sum), so the moves to an
+// earlier set of positions can go as one colour's, from the front of the
+// move list. Beyond half the particles a rebuild is cheaper.
+void LocalDeviceFieldBackend::set_positions(std::span<const VertexId> positions) {
+  if (positions.size() != particle_count_) return DeviceBackend::set_positions(positions);
+  const std::vector<VertexId> before = this->positions();
+  std::vector<cl_uint2> moves;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (before[i] != positions[i]) moves.push_back({{before[i], positions[i]}});
+  }
+  if (2 * moves.size() > positions.size()) return DeviceBackend::set_positions(positions);
+  queue_.enqueueWriteBuffer(positions_, CL_TRUE, 0, positions.size() * sizeof(cl_uint), positions.data());
+  if (moves.empty()) return;
+  queue_.enqueueWriteBuffer(moves_, CL_TRUE, 0, moves.size() * sizeof(cl_uint2), moves.data());
   std::vector<cl::Event> events;
   apply_moves(0, moves, events);
   queue_.finish();
-  return true;
 }
 
 void LocalDeviceFieldBackend::apply_moves(cl_uint first, std::span<const cl_uint2> moves,

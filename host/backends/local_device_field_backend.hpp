@@ -26,6 +26,10 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
                           const LocalDistances& balls, double pool_headroom = 1.0,
                           std::size_t upload_piece = std::size_t{1} << 22);
 
+  // Positions that differ from the current ones in at most half the
+  // particles (the monotone scheme's undo) go as moves, as a colour's
+  // commit: the undo of a few moves costs what they did, not a rebuild.
+  void set_positions(std::span<const VertexId> positions) override;
   double total_energy() override;
 
   // For tests: F at every candidate (in increasing vertex id) in field
@@ -43,7 +47,6 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   void positions_changed(bool resized) override;
   void after_commit(cl_uint color, cl_uint colors, std::vector<cl::Event>& events) override;
   void after_iteration(std::vector<cl::Event>& events) override;
-  bool moved_by_host(std::span<const cl_uint2> moves) override;
 
   // The moves at `first` of the device's move list (`moves`, their copy on
   // the host): F scattered at the old candidates, rows and sums for the new.
