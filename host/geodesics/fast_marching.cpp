@@ -36,6 +36,18 @@ FastMarching::FastMarching(const SurfaceMesh& mesh)
 
 void FastMarching::march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
                          double max_distance, std::span<const float> bound) const {
+  // One source (every ball, every farthest sample): every distance comes
+  // from it, and the per-vertex origin bookkeeping is skipped.
+  if (sources.size() == 1) {
+    march_from<true>(sources, distances, scratch, max_distance, bound);
+  } else {
+    march_from<false>(sources, distances, scratch, max_distance, bound);
+  }
+}
+
+template <bool kOneSource>
+void FastMarching::march_from(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+                              double max_distance, std::span<const float> bound) const {
   ShortestFirstQueue queue(sources, distances, scratch, max_distance, bound);
   const auto& offsets = mesh_.ring_offsets();
   const auto& neighbors = mesh_.ring_neighbors();
@@ -46,10 +58,13 @@ void FastMarching::march(std::span<const VertexId> sources, std::span<double> di
   // update only from corners of the same source; edges always may.
   // (Read only for accepted vertices, each of which was set when lowered.)
   std::vector<std::uint32_t>& origin = scratch.origin;
-  for (std::uint32_t k = 0; k < sources.size(); ++k) origin[sources[k]] = k;
+  if constexpr (!kOneSource) {
+    for (std::uint32_t k = 0; k < sources.size(); ++k) origin[sources[k]] = k;
+  }
+  const auto same_origin = [&](VertexId a, VertexId b) { return kOneSource || origin[a] == origin[b]; };
   // Vertices lowered while processing one accepted vertex, queued once each
   // afterwards (an edge update is often bettered by a triangle update).
-  std::vector<VertexId> lowered;
+  std::vector<VertexId>& lowered = scratch.lowered;
   while (auto accepted = queue.pop_next()) {
     const VertexId x = *accepted;
     const double dx = distances[x];
@@ -58,12 +73,12 @@ void FastMarching::march(std::span<const VertexId> sources, std::span<double> di
     for (std::uint32_t k = offsets[x]; k < offsets[x + 1]; ++k) {
       if (queue.lower(neighbors[k], dx + edge_lengths_[k])) {
         lowered.push_back(neighbors[k]);  // distinct: a ring
-        origin[neighbors[k]] = origin[x];
+        if constexpr (!kOneSource) origin[neighbors[k]] = origin[x];
       }
     }
     const auto lower_and_note = [&](VertexId v, double candidate) {
       if (!queue.lower(v, candidate)) return;
-      origin[v] = origin[x];
+      if constexpr (!kOneSource) origin[v] = origin[x];
       if (std::find(lowered.begin(), lowered.end(), v) == lowered.end()) lowered.push_back(v);
     };
     // Across each triangle with exactly one other corner accepted.
@@ -71,7 +86,7 @@ void FastMarching::march(std::span<const VertexId> sources, std::span<double> di
       const TriangleAtVertex& t = stencils_.triangles[k];
       const bool a_accepted = queue.is_accepted(t.a), b_accepted = queue.is_accepted(t.b);
       if (a_accepted == b_accepted) continue;
-      if (origin[a_accepted ? t.a : t.b] != origin[x]) continue;
+      if (!same_origin(a_accepted ? t.a : t.b, x)) continue;
       if (a_accepted) {
         lower_and_note(t.b, point_source_update(t.b_from_a, dx, distances[t.a]));
       } else {
@@ -81,7 +96,7 @@ void FastMarching::march(std::span<const VertexId> sources, std::span<double> di
     // Across unfolded virtual triangles at obtuse corners.
     for (std::uint32_t k = stencils_.virtual_offsets[x]; k < stencils_.virtual_offsets[x + 1]; ++k) {
       const VirtualUpdate& u = stencils_.virtual_updates[k];
-      if (queue.is_accepted(u.target) || !queue.is_accepted(u.other) || origin[u.other] != origin[x]) continue;
+      if (queue.is_accepted(u.target) || !queue.is_accepted(u.other) || !same_origin(u.other, x)) continue;
       lower_and_note(u.target, point_source_update(u.frame, dx, distances[u.other]));
     }
     for (VertexId v : lowered) queue.requeue(v);

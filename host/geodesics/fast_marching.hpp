@@ -20,6 +20,10 @@ class FastMarching : public GeodesicSolver {
              double max_distance, std::span<const float> bound) const override;
 
  private:
+  template <bool kOneSource>
+  void march_from(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+                  double max_distance, std::span<const float> bound) const;
+
   const SurfaceMesh& mesh_;
   std::vector<float> edge_lengths_;  // parallel to mesh.ring_neighbors()
   TriangleStencils stencils_;

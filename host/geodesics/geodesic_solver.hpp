@@ -32,7 +32,9 @@ struct SolverScratch {
   std::vector<unsigned char> accepted;  // per vertex
   std::vector<std::uint32_t> origin;    // per vertex: the source its distance comes from (fast marching)
   std::vector<VertexId> touched;        // the vertices the solve in progress gave a distance
+  std::vector<VertexId> lowered;        // fast marching: those lowered by the vertex just accepted
   std::vector<double> distances;        // per vertex: the buffer of ball solves
+  std::vector<std::uint64_t> ball_entries, ball_spare;  // a ball's (vertex, distance) pairs being sorted
 
   // Sizes the per-vertex arrays (clean) for a mesh of `vertex_count`.
   void fit(std::size_t vertex_count);

@@ -73,7 +73,8 @@ class ShortestFirstQueue {
   // offer() in two steps, for a solver that lowers a vertex several times
   // before queueing it once: lower() returns whether v's distance dropped.
   bool lower(VertexId v, double candidate) {
-    if (accepted_[v] || candidate >= distances_[v]) return false;
+    // One branch for both tests: which of them fails is hard to predict.
+    if (bool(accepted_[v]) | (candidate >= distances_[v])) return false;
     if (!bound_.empty() && candidate >= double(bound_[v])) return false;  // no nearer than the bound says
     if (distances_[v] == std::numeric_limits<double>::infinity()) touched_.push_back(v);
     distances_[v] = candidate;
@@ -111,17 +112,18 @@ class ShortestFirstQueue {
     }
     place(at, entry);
   }
+  // Removes the root: its hole sinks to a leaf along the smaller children,
+  // then `entry` (the old last leaf, usually large) rises from there. Half
+  // the comparisons of a plain sift-down, and the choice of child is a
+  // conditional move, not a branch.
   void sift_down(std::uint32_t at, std::uint64_t entry) {
     const auto size = std::uint32_t(heap_.size());
-    for (;;) {
-      std::uint32_t child = 2 * at + 1;
-      if (child >= size) break;
-      if (child + 1 < size && heap_[child + 1] < heap_[child]) ++child;
-      if (entry <= heap_[child]) break;
+    for (std::uint32_t child = 2 * at + 1; child < size; child = 2 * at + 1) {
+      if (child + 1 < size) child += heap_[child + 1] < heap_[child] ? 1 : 0;
       place(at, heap_[child]);
       at = child;
     }
-    place(at, entry);
+    sift_up(at, entry);
   }
 
   std::span<double> distances_;
