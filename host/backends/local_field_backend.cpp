@@ -19,12 +19,15 @@ LocalFieldBackend::LocalFieldBackend(const SurfaceMesh& mesh, const LocalDistanc
       candidate_count_(mesh.vertex_count(), 0),
       held_(mesh.vertex_count()),
       ring_units_(mesh.ring_neighbors().size(), kNotYet),
+      spread_weights_(mesh.vertex_count()),
       units_at_zero_(units_of_distance(0.0f)) {}
 
-std::int64_t LocalFieldBackend::units_of_distance(float d) const {
+float LocalFieldBackend::weight_of_distance(float d) const {
   if (std::isinf(d)) return 0;  // beyond reach: the weight the store cuts off
-  return field_units(stored_weight(weights_, pair_weight_float(potential_, d, inv_two_sigma_sq_)));
+  return stored_weight(weights_, pair_weight_float(potential_, d, inv_two_sigma_sq_));
 }
+
+std::int64_t LocalFieldBackend::units_of_distance(float d) const { return field_units(weight_of_distance(d)); }
 
 std::int64_t LocalFieldBackend::units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const {
   return units_of_distance(LocalDistances::symmetric_distance(from_u, u, from_v, v));
@@ -58,13 +61,31 @@ std::int64_t LocalFieldBackend::field_from_scratch(VertexId x) const {
   return sum;
 }
 
+float LocalFieldBackend::weight_to_ball_vertex(const Ball& from_ball, VertexId from, std::size_t k) const {
+  const auto back = distance_in_ball(*held_[from_ball.vertices[k]], from);
+  return back ? weight_of_distance(0.5f * (from_ball.distances[k] + *back)) : 0;  // the store's symmetric mean
+}
+
+void LocalFieldBackend::learn_spread_weights(VertexId u) {
+  const Ball& from_u = *held_[u];
+  std::vector<float>& weights = spread_weights_[u];
+  if (weights.empty()) weights.assign(from_u.vertices.size(), kUnknown);
+  for (std::size_t k = 0; k < from_u.vertices.size(); ++k) {
+    if (weights[k] == kUnknown && held_[from_u.vertices[k]]) weights[k] = weight_to_ball_vertex(from_u, u, k);
+  }
+}
+
 void LocalFieldBackend::spread_weight(VertexId from, int delta) {
-  const Ball& from_ball = *held_[from];  // from is a candidate of the moving particle either side of the move
+  // from is a candidate of the moving particle either side of the move, so
+  // its ball is held; a candidate not ready yet gets its whole F when it is.
+  learn_spread_weights(from);
+  const Ball& from_ball = *held_[from];
+  const std::vector<float>& weights = spread_weights_[from];
   for (std::size_t k = 0; k < from_ball.vertices.size(); ++k) {
     const VertexId x = from_ball.vertices[k];
-    // A candidate not ready yet gets its whole F when it is.
-    if (held_[x]) field_[x] += delta * units_with(from_ball.distances[k], from, *held_[x]);
+    if (held_[x]) field_[x] += delta * field_units(weights[k]);
   }
+  if (occupancy_[from] == 0) std::vector<float>().swap(spread_weights_[from]);
 }
 
 void LocalFieldBackend::count_candidates(VertexId vertex, int delta) {
@@ -123,17 +144,25 @@ void LocalFieldBackend::rebuild_field() {
   balls_.prefetch(wanted);  // on all cores, before the sums read them one by one
   const std::vector<VertexId> all = candidates();
   for (const VertexId x : all) held_[x] = balls_.ball(x);
-  // Each sum reads only held balls and the occupancy, and writes its own
-  // F(x): the candidates are shared out among the store's threads (on a big
-  // mesh these sums took seconds on one core).
-  const auto threads = unsigned(std::min<std::size_t>(balls_.threads(), 1 + all.size() / 1024));
-  const auto sum_every = [&](unsigned first) {
-    for (std::size_t k = first; k < all.size(); k += threads) field_[all[k]] = field_from_scratch(all[k]);
+  // F is the sum of every occupied vertex's weights, spread. Learning those
+  // weights is the costly part (a search in each candidate's ball) and
+  // writes only the vertex's own list: they are shared out among the
+  // store's threads (on a big mesh this took seconds on one core).
+  for (auto& weights : spread_weights_) std::vector<float>().swap(weights);
+  std::vector<VertexId> occupied;
+  for (VertexId v = 0; v < occupancy_.size(); ++v) {
+    if (occupancy_[v] > 0) occupied.push_back(v);
+  }
+  const auto threads = unsigned(std::min<std::size_t>(balls_.threads(), 1 + occupied.size() / 128));
+  const auto learn_every = [&](unsigned first) {
+    for (std::size_t k = first; k < occupied.size(); k += threads) learn_spread_weights(occupied[k]);
   };
   std::vector<std::thread> helpers;
-  for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(sum_every, t);
-  sum_every(0);
+  for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(learn_every, t);
+  learn_every(0);
   for (auto& helper : helpers) helper.join();
+  for (const VertexId x : all) field_[x] = 0;
+  for (const VertexId u : occupied) spread_weight(u, int(occupancy_[u]));
 }
 
 std::vector<VertexId> LocalFieldBackend::candidates() const {

@@ -46,10 +46,17 @@ class LocalFieldBackend final : public SerialFieldMethod {
   // The same, with d_u(v) already known (v found in u's ball): one search fewer.
   std::int64_t units_with(float from_u_to_v, VertexId u, const Ball& from_v) const;
   std::int64_t units_of_distance(float d) const;
+  float weight_of_distance(float d) const;  // the stored weight; 0 beyond reach
+  // The stored weight (a float; field_units() of it is what F counts)
+  // between `from` and the vertex at index k of from's ball, x, whose ball
+  // is held: d_x(from) is searched for in x's ball.
+  float weight_to_ball_vertex(const Ball& from_ball, VertexId from, std::size_t k) const;
   // F(x) from the particles in x's ball.
   std::int64_t field_from_scratch(VertexId x) const;
   // Adds `delta` times `from`'s weight to F at every candidate in its ball.
   void spread_weight(VertexId from, int delta);
+  // Fills spread_weights_[u] at every candidate in u's ball not known yet.
+  void learn_spread_weights(VertexId u);
   // Counts `vertex` and its one-ring as candidates once more (+1) or less
   // (-1); the balls of new ones are requested from the store's helpers.
   void count_candidates(VertexId vertex, int delta);
@@ -76,6 +83,14 @@ class LocalFieldBackend final : public SerialFieldMethod {
   // the cache.
   static constexpr std::int64_t kNotYet = -1;
   mutable std::vector<std::int64_t> ring_units_;
+  // Per occupied vertex u, parallel to u's ball: the stored weight to each
+  // vertex of the ball (kUnknown until read while that vertex was a held
+  // candidate). A particle's arrival at u reads them and its departure
+  // reads them back, so a move searches one ball per candidate, not two:
+  // those searches, each a cache miss, were most of a move. Released when
+  // u is left empty. (4 bytes per ball entry of the occupied vertices.)
+  static constexpr float kUnknown = -1.0f;
+  std::vector<std::vector<float>> spread_weights_;
   std::int64_t units_at_zero_;  // a vertex's weight with itself
 };
 
