@@ -62,7 +62,7 @@ namespace {
 // bits (a count table that stays in L1). Comparison sorts were a tenth of
 // a ball solve.
 void sort_by_vertex(std::vector<std::uint64_t>& entries, std::vector<std::uint64_t>& spare, std::size_t vertex_count) {
-  const int bits = std::max(1, int(std::bit_width(vertex_count - 1)));
+  const int bits = int(std::bit_width(std::max<std::size_t>(vertex_count, 2) - 1));
   const int passes = (bits + 10) / 11;
   const int width = (bits + passes - 1) / passes;
   const std::uint64_t mask = (std::uint64_t(1) << width) - 1;
