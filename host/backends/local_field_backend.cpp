@@ -33,9 +33,13 @@ std::int64_t LocalFieldBackend::units_between(const Ball& from_u, VertexId u, co
   return units_of_distance(LocalDistances::symmetric_distance(from_u, u, from_v, v));
 }
 
-std::int64_t LocalFieldBackend::units_with(float from_u_to_v, VertexId u, const Ball& from_v) const {
+float LocalFieldBackend::weight_with(float from_u_to_v, VertexId u, const Ball& from_v) const {
   const auto back = distance_in_ball(from_v, u);
-  return back ? units_of_distance(0.5f * (from_u_to_v + *back)) : 0;  // the store's symmetric mean
+  return back ? weight_of_distance(0.5f * (from_u_to_v + *back)) : 0;  // the store's symmetric mean
+}
+
+std::int64_t LocalFieldBackend::units_with(float from_u_to_v, VertexId u, const Ball& from_v) const {
+  return field_units(weight_with(from_u_to_v, u, from_v));
 }
 
 // u is a particle's vertex and v one of its candidates: u itself (at
@@ -61,17 +65,13 @@ std::int64_t LocalFieldBackend::field_from_scratch(VertexId x) const {
   return sum;
 }
 
-float LocalFieldBackend::weight_to_ball_vertex(const Ball& from_ball, VertexId from, std::size_t k) const {
-  const auto back = distance_in_ball(*held_[from_ball.vertices[k]], from);
-  return back ? weight_of_distance(0.5f * (from_ball.distances[k] + *back)) : 0;  // the store's symmetric mean
-}
-
 void LocalFieldBackend::learn_spread_weights(VertexId u) {
   const Ball& from_u = *held_[u];
   std::vector<float>& weights = spread_weights_[u];
   if (weights.empty()) weights.assign(from_u.vertices.size(), kUnknown);
   for (std::size_t k = 0; k < from_u.vertices.size(); ++k) {
-    if (weights[k] == kUnknown && held_[from_u.vertices[k]]) weights[k] = weight_to_ball_vertex(from_u, u, k);
+    const VertexId x = from_u.vertices[k];
+    if (weights[k] == kUnknown && held_[x]) weights[k] = weight_with(from_u.distances[k], u, *held_[x]);
   }
 }
 

@@ -45,12 +45,10 @@ class LocalFieldBackend final : public SerialFieldMethod {
   std::int64_t units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const;
   // The same, with d_u(v) already known (v found in u's ball): one search fewer.
   std::int64_t units_with(float from_u_to_v, VertexId u, const Ball& from_v) const;
+  // That weight as stored (a float; field_units() of it is what F counts).
+  float weight_with(float from_u_to_v, VertexId u, const Ball& from_v) const;
   std::int64_t units_of_distance(float d) const;
   float weight_of_distance(float d) const;  // the stored weight; 0 beyond reach
-  // The stored weight (a float; field_units() of it is what F counts)
-  // between `from` and the vertex at index k of from's ball, x, whose ball
-  // is held: d_x(from) is searched for in x's ball.
-  float weight_to_ball_vertex(const Ball& from_ball, VertexId from, std::size_t k) const;
   // F(x) from the particles in x's ball.
   std::int64_t field_from_scratch(VertexId x) const;
   // Adds `delta` times `from`'s weight to F at every candidate in its ball.
