@@ -72,6 +72,44 @@ TEST(LocalDistances, BatchedAndMarkedQueriesAgreeWithPointQueries) {
   }
 }
 
+
+// The interleaved searches find exactly what one search at a time finds:
+// for every vertex, in balls of every size (empty, one vertex, the mesh's),
+// in more balls than one group searches at once and in a partial group.
+TEST(LocalDistances, InterleavedSearchesFindWhatOneSearchFinds) {
+  const MeshWithDistances m("patch.off");
+  const LocalDistances local = local_store(m.mesh, 0.3);
+  std::vector<std::shared_ptr<const Ball>> held;
+  for (VertexId u = 0; u < m.mesh.vertex_count(); u += 11) held.push_back(local.ball(u));
+  const Ball empty, single{{42}, {0.25f}};
+  std::vector<const Ball*> balls = {&empty, &single};
+  for (const auto& ball : held) balls.push_back(ball.get());
+  ASSERT_GT(balls.size(), 32u);
+  std::vector<float> found(balls.size());
+  std::size_t inside = 0;
+  for (VertexId v = 0; v < m.mesh.vertex_count(); ++v) {
+    distances_to(v, balls, found);
+    for (std::size_t k = 0; k < balls.size(); ++k) {
+      const auto one = distance_in_ball(*balls[k], v);
+      ASSERT_EQ(found[k], one ? *one : INFINITY) << "vertex " << v << " in ball " << k;
+      inside += one.has_value();
+    }
+  }
+  EXPECT_GT(inside, 1000u);
+  std::vector<std::size_t> visited;
+  for_each_distance_to(
+      17, balls.size(), [&](std::size_t k) { return k % 3 ? balls[k] : nullptr; },
+      [&](std::size_t k, float d) {
+        visited.push_back(k);
+        const auto one = distance_in_ball(*balls[k], 17);
+        EXPECT_EQ(d, one ? *one : INFINITY) << k;
+      });
+  std::vector<std::size_t> expected;
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    if (k % 3) expected.push_back(k);
+  }
+  EXPECT_EQ(visited, expected);
+}
 // A budget smaller than the balls in use evicts the least recently used;
 // answers stay the same.
 TEST(LocalDistances, ASmallCacheEvictsAndRecomputesTheSameBalls) {

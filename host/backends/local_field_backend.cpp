@@ -33,13 +33,8 @@ std::int64_t LocalFieldBackend::units_between(const Ball& from_u, VertexId u, co
   return units_of_distance(LocalDistances::symmetric_distance(from_u, u, from_v, v));
 }
 
-float LocalFieldBackend::weight_with(float from_u_to_v, VertexId u, const Ball& from_v) const {
-  const auto back = distance_in_ball(from_v, u);
-  return back ? weight_of_distance(0.5f * (from_u_to_v + *back)) : 0;  // the store's symmetric mean
-}
-
-std::int64_t LocalFieldBackend::units_with(float from_u_to_v, VertexId u, const Ball& from_v) const {
-  return field_units(weight_with(from_u_to_v, u, from_v));
+float LocalFieldBackend::weight_of_pair(float from_u_to_v, float from_v_to_u) const {
+  return weight_of_distance(LocalDistances::symmetric_mean(from_u_to_v, from_v_to_u));  // 0 if either is +inf
 }
 
 // u is a particle's vertex and v one of its candidates: u itself (at
@@ -58,10 +53,12 @@ std::int64_t LocalFieldBackend::weight_units(VertexId u, VertexId v) const {
 std::int64_t LocalFieldBackend::field_from_scratch(VertexId x) const {
   const Ball& from_x = *held_[x];
   std::int64_t sum = 0;
-  for (std::size_t k = 0; k < from_x.vertices.size(); ++k) {
-    const VertexId u = from_x.vertices[k];
-    if (occupancy_[u] > 0) sum += std::int64_t(occupancy_[u]) * units_with(from_x.distances[k], x, *held_[u]);
-  }
+  for_each_distance_to(
+      x, from_x.vertices.size(),
+      [&](std::size_t k) { return occupancy_[from_x.vertices[k]] > 0 ? held_[from_x.vertices[k]].get() : nullptr; },
+      [&](std::size_t k, float back) {
+        sum += std::int64_t(occupancy_[from_x.vertices[k]]) * field_units(weight_of_pair(from_x.distances[k], back));
+      });
   return sum;
 }
 
@@ -69,10 +66,10 @@ void LocalFieldBackend::learn_spread_weights(VertexId u) {
   const Ball& from_u = *held_[u];
   std::vector<float>& weights = spread_weights_[u];
   if (weights.empty()) weights.assign(from_u.vertices.size(), kUnknown);
-  for (std::size_t k = 0; k < from_u.vertices.size(); ++k) {
-    const VertexId x = from_u.vertices[k];
-    if (weights[k] == kUnknown && held_[x]) weights[k] = weight_with(from_u.distances[k], u, *held_[x]);
-  }
+  for_each_distance_to(
+      u, from_u.vertices.size(),
+      [&](std::size_t k) { return weights[k] == kUnknown ? held_[from_u.vertices[k]].get() : nullptr; },
+      [&](std::size_t k, float back) { weights[k] = weight_of_pair(from_u.distances[k], back); });
 }
 
 void LocalFieldBackend::spread_weight(VertexId from, int delta) {

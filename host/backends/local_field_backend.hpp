@@ -43,10 +43,9 @@ class LocalFieldBackend final : public SerialFieldMethod {
 
   // The weight between u and v in field units, from their balls.
   std::int64_t units_between(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v) const;
-  // The same, with d_u(v) already known (v found in u's ball): one search fewer.
-  std::int64_t units_with(float from_u_to_v, VertexId u, const Ball& from_v) const;
-  // That weight as stored (a float; field_units() of it is what F counts).
-  float weight_with(float from_u_to_v, VertexId u, const Ball& from_v) const;
+  // That weight as stored (a float; field_units() of it is what F counts),
+  // from the two one-sided distances d_u(v) and d_v(u).
+  float weight_of_pair(float from_u_to_v, float from_v_to_u) const;
   std::int64_t units_of_distance(float d) const;
   float weight_of_distance(float d) const;  // the stored weight; 0 beyond reach
   // F(x) from the particles in x's ball.

@@ -10,6 +10,7 @@
 // holds (its rows are the same solves, averaged the same way), wherever each
 // vertex lies in the other's ball. Beyond that the store answers +inf:
 // symmetric, like every distance the particle system reads.
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <deque>
@@ -76,6 +77,9 @@ class LocalDistances final : public DistanceStore {
   // d(u, v) from u's and v's balls: the mean of the one-sided values, +inf
   // unless each lies in the other's ball.
   static float symmetric_distance(const Ball& from_u, VertexId u, const Ball& from_v, VertexId v);
+  // That mean, of the one-sided values d_u(v) and d_v(u) (+inf for one not
+  // in the ball): as symmetrize_by_averaging, the same bits as the table.
+  static float symmetric_mean(float from_u_to_v, float from_v_to_u) { return 0.5f * (from_u_to_v + from_v_to_u); }
 
   Statistics statistics() const;
 
@@ -118,5 +122,36 @@ class LocalDistances final : public DistanceStore {
 
 // The one-sided distance from the ball's source to v, if v is in the ball.
 std::optional<float> distance_in_ball(const Ball& ball, VertexId v);
+
+// The same for many balls at once: out[k] is the distance from balls[k]'s
+// source to v, +inf where v is not inside. The searches advance in step, a
+// group at a time, so that their cache misses overlap: one search alone
+// waits on memory at nearly every step (~180 ns on a big mesh).
+void distances_to(VertexId v, std::span<const Ball* const> balls, std::span<float> out);
+
+// Calls visit(k, d) for each k < count where ball_of(k) gives a ball (not
+// null), d being the distance from that ball's source to v (+inf where v is
+// not inside), through distances_to() in batches.
+template <typename BallOf, typename Visit>
+void for_each_distance_to(VertexId v, std::size_t count, BallOf ball_of, Visit visit) {
+  constexpr std::size_t kBatch = 128;
+  std::array<const Ball*, kBatch> balls;
+  std::array<std::size_t, kBatch> indices;
+  std::array<float, kBatch> found;
+  std::size_t filled = 0;
+  const auto answer = [&] {
+    distances_to(v, std::span(balls.data(), filled), std::span(found.data(), filled));
+    for (std::size_t j = 0; j < filled; ++j) visit(indices[j], found[j]);
+    filled = 0;
+  };
+  for (std::size_t k = 0; k < count; ++k) {
+    if (const Ball* ball = ball_of(k)) {
+      balls[filled] = ball;
+      indices[filled] = k;
+      if (++filled == kBatch) answer();
+    }
+  }
+  answer();
+}
 
 }  // namespace meshparticles
