@@ -1,8 +1,10 @@
 #include "geodesics/triangle_stencils.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
-#include <unordered_map>
+
+#include "mesh/vertex_triangles.hpp"
 
 namespace meshparticles {
 
@@ -56,8 +58,21 @@ void to_csr(std::vector<std::pair<VertexId, Record>>& by_trigger, std::size_t ve
   for (const auto& [trigger, record] : by_trigger) records[fill[trigger]++] = record;
 }
 
-std::uint64_t edge_key(VertexId a, VertexId b) {
-  return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+// The triangles on edge pq, in increasing order: the first two, and how
+// many there are.
+struct EdgeTriangles {
+  std::size_t count = 0;
+  std::array<std::uint32_t, 2> first{};
+};
+EdgeTriangles triangles_on_edge(const VertexTriangles& around, const std::vector<Triangle>& triangles, VertexId p,
+                                VertexId q) {
+  EdgeTriangles found;
+  for (const std::uint32_t t : around.around(p)) {
+    if (triangles[t][0] != q && triangles[t][1] != q && triangles[t][2] != q) continue;
+    if (found.count < 2) found.first[found.count] = t;
+    ++found.count;
+  }
+  return found;
 }
 
 VertexId third_vertex(const Triangle& t, VertexId a, VertexId b) {
@@ -72,10 +87,7 @@ VertexId third_vertex(const Triangle& t, VertexId a, VertexId b) {
 TriangleStencils build_triangle_stencils(const SurfaceMesh& mesh) {
   const auto& positions = mesh.positions();
   const auto& triangles = mesh.triangles();
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> triangles_of_edge;
-  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) triangles_of_edge[edge_key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
-  }
+  const VertexTriangles around = vertex_triangles(triangles, mesh.vertex_count());
   const auto length3 = [&](VertexId a, VertexId b) { return distance(positions[a], positions[b]); };
 
   std::vector<std::pair<VertexId, TriangleAtVertex>> triangle_records;
@@ -103,9 +115,9 @@ TriangleStencils build_triangle_stencils(const SurfaceMesh& mesh) {
       Point2 pp = pa, pq = pb, previous = pc;
       std::uint32_t current = t;
       for (int step = 0; step < kMaxUnfoldings; ++step) {
-        const auto& sharing = triangles_of_edge[edge_key(p, q)];
-        if (sharing.size() != 2) break;  // reached the boundary
-        const std::uint32_t next = sharing[0] == current ? sharing[1] : sharing[0];
+        const EdgeTriangles sharing = triangles_on_edge(around, triangles, p, q);
+        if (sharing.count != 2) break;  // reached the boundary (or a non-manifold edge)
+        const std::uint32_t next = sharing.first[0] == current ? sharing.first[1] : sharing.first[0];
         const VertexId d = third_vertex(triangles[next], p, q);
         if (d == c) break;
         const Point2 pd = place_opposite(pp, pq, length3(p, d), length3(q, d), previous);

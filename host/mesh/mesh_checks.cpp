@@ -8,6 +8,7 @@
 
 #include "common/user_error.hpp"
 #include "mesh/plural.hpp"
+#include "mesh/vertex_triangles.hpp"
 
 namespace meshparticles {
 
@@ -137,25 +138,15 @@ void check_edges(const std::vector<Triangle>& triangles, const std::string& labe
 // through it, or refused if strict.
 void check_vertex_fans(const std::vector<Triangle>& triangles, std::size_t vertex_count, const std::string& label,
                        std::vector<std::string>& warnings, bool strict) {
-  std::vector<std::uint32_t> offsets(vertex_count + 1, 0);
-  for (const Triangle& t : triangles) {
-    for (VertexId v : t) ++offsets[v + 1];
-  }
-  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-  std::vector<std::uint32_t> incident(offsets.back());
-  std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
-  for (std::uint32_t f = 0; f < triangles.size(); ++f) {
-    for (VertexId v : triangles[f]) incident[fill[v]++] = f;
-  }
-
+  const VertexTriangles fans = vertex_triangles(triangles, vertex_count);
   std::size_t pinched = 0;
   std::string example;
   std::vector<VertexId> neighbours;
   std::vector<std::uint32_t> parent;
   for (VertexId v = 0; v < vertex_count; ++v) {
     neighbours.clear();
-    for (std::uint32_t k = offsets[v]; k < offsets[v + 1]; ++k) {
-      for (VertexId w : triangles[incident[k]]) {
+    for (const std::uint32_t f : fans.around(v)) {
+      for (VertexId w : triangles[f]) {
         if (w != v) neighbours.push_back(w);
       }
     }
@@ -171,23 +162,23 @@ void check_vertex_fans(const std::vector<Triangle>& triangles, std::size_t verte
     };
     parent.resize(neighbours.size());
     std::iota(parent.begin(), parent.end(), 0u);
-    std::size_t fans = neighbours.size();
-    for (std::uint32_t k = offsets[v]; k < offsets[v + 1]; ++k) {
-      const Triangle& t = triangles[incident[k]];
+    std::size_t separate = neighbours.size();
+    for (const std::uint32_t f : fans.around(v)) {
+      const Triangle& t = triangles[f];
       const int corner = t[0] == v ? 0 : t[1] == v ? 1 : 2;
       const std::uint32_t a = root(local(t[(corner + 1) % 3])), b = root(local(t[(corner + 2) % 3]));
       if (a != b) {
         parent[a] = b;
-        --fans;
+        --separate;
       }
     }
-    if (fans <= 1) continue;
+    if (separate <= 1) continue;
     if (strict) {
       throw UserError(label + ": non-manifold vertex " + std::to_string(v) + " (its triangles form " +
-                      std::to_string(fans) + " separate fans)");
+                      std::to_string(separate) + " separate fans)");
     }
     if (++pinched == 1)
-      example = "vertex " + std::to_string(v) + ", where " + std::to_string(fans) + " fans of triangles meet";
+      example = "vertex " + std::to_string(v) + ", where " + std::to_string(separate) + " fans of triangles meet";
   }
   if (pinched > 0) {
     warnings.push_back(label + ": " + plural(pinched, "non-manifold vertex", "non-manifold vertices") + " (e.g. " +

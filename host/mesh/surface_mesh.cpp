@@ -29,41 +29,54 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<Triangle> tria
       input_vertex_count_(input_vertex_count ? input_vertex_count : positions_.size()) {
   const std::size_t n = positions_.size();
 
-  // Each undirected edge with the number of triangles using it: one means boundary.
-  std::map<std::pair<VertexId, VertexId>, int> edge_faces;
+  // Each undirected edge (a < b, packed a << 32 | b) once per triangle using
+  // it, sorted: a run of one means boundary. Sorted keys list the edges in
+  // the order of a map on (a, b), without its node per edge (on a million
+  // vertices the map was most of the mesh's construction).
+  std::vector<std::uint64_t> edge_uses;
+  edge_uses.reserve(3 * triangles_.size());
   for (const Triangle& t : triangles_) {
     for (int k = 0; k < 3; ++k) {
       const VertexId a = t[k], b = t[(k + 1) % 3];
-      ++edge_faces[{std::min(a, b), std::max(a, b)}];
+      edge_uses.push_back((std::uint64_t(std::min(a, b)) << 32) | std::max(a, b));
     }
     area_ += triangle_area(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
   }
+  std::sort(edge_uses.begin(), edge_uses.end());
+  struct Edge {
+    VertexId first, second;
+    bool boundary;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t begin = 0, end = 0; begin < edge_uses.size(); begin = end) {
+    while (end < edge_uses.size() && edge_uses[end] == edge_uses[begin]) ++end;
+    edges.push_back({VertexId(edge_uses[begin] >> 32), VertexId(edge_uses[begin]), end - begin == 1});
+  }
+  std::vector<std::uint64_t>().swap(edge_uses);
 
-  std::vector<std::vector<VertexId>> rings(n);
+  // Each ring is sorted as it is filled: edges come in order of (first, second).
+  ring_offsets_.assign(n + 1, 0);
+  for (const Edge& e : edges) {
+    ++ring_offsets_[e.first + 1];
+    ++ring_offsets_[e.second + 1];
+  }
+  for (std::size_t v = 0; v < n; ++v) ring_offsets_[v + 1] += ring_offsets_[v];
+  ring_neighbors_.resize(ring_offsets_[n]);
+  std::vector<std::uint32_t> fill(ring_offsets_.begin(), ring_offsets_.end() - 1);
   boundary_.assign(n, 0);
   double edge_length_sum = 0;
-  for (const auto& [edge, faces] : edge_faces) {
-    rings[edge.first].push_back(edge.second);
-    rings[edge.second].push_back(edge.first);
-    if (faces == 1) boundary_[edge.first] = boundary_[edge.second] = 1;
-    edge_length_sum += distance(positions_[edge.first], positions_[edge.second]);
+  for (const Edge& e : edges) {
+    ring_neighbors_[fill[e.first]++] = e.second;
+    ring_neighbors_[fill[e.second]++] = e.first;
+    if (e.boundary) boundary_[e.first] = boundary_[e.second] = 1;
+    edge_length_sum += distance(positions_[e.first], positions_[e.second]);
   }
-  mean_edge_length_ = edge_faces.empty() ? 0.0 : edge_length_sum / double(edge_faces.size());
-
-  ring_offsets_.assign(n + 1, 0);
-  for (std::size_t v = 0; v < n; ++v) {
-    std::sort(rings[v].begin(), rings[v].end());
-    ring_offsets_[v + 1] = ring_offsets_[v] + std::uint32_t(rings[v].size());
-  }
-  ring_neighbors_.reserve(ring_offsets_[n]);
-  for (const auto& ring : rings) ring_neighbors_.insert(ring_neighbors_.end(), ring.begin(), ring.end());
+  mean_edge_length_ = edges.empty() ? 0.0 : edge_length_sum / double(edges.size());
 
   // Components numbered in order of their smallest vertex id.
   std::vector<std::uint32_t> parent(n);
   std::iota(parent.begin(), parent.end(), 0u);
-  for (const auto& [edge, faces] : edge_faces) {
-    parent[find_root(parent, edge.first)] = find_root(parent, edge.second);
-  }
+  for (const Edge& e : edges) parent[find_root(parent, e.first)] = find_root(parent, e.second);
   component_.assign(n, 0);
   std::map<std::uint32_t, std::uint32_t> label_of_root;
   for (std::size_t v = 0; v < n; ++v) {
