@@ -2,9 +2,12 @@
 // point sampling visits every component before doubling up.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <set>
 
 #include "particle_test_support.hpp"
+#include "common/random.hpp"
+#include "particles/farthest_vertex.hpp"
 #include "particles/initial_placement.hpp"
 
 namespace meshparticles::testing {
@@ -40,6 +43,41 @@ TEST(InitialPlacement, FarthestPointSamplingSpreadsAndCoversComponents) {
     };
     for (VertexId v = 0; v < patch.mesh.vertex_count(); ++v) EXPECT_LE(nearest(v), nearest(samples[k]));
   }
+}
+
+// The tree of block maxima answers what a scan of every vertex answers, as
+// distances drop at random (ties on purpose: few distinct values) and
+// vertices are taken, until none is left.
+TEST(FarthestVertex, AnswersWhatAScanAnswers) {
+  const std::size_t vertex_count = 1000;  // 16 blocks, the last one partial
+  std::vector<float> nearest(vertex_count, INFINITY);
+  FarthestVertex farthest(nearest);
+  std::vector<bool> taken(vertex_count, false);
+  SplitMix64 random(7);
+  const auto scan = [&]() -> std::optional<VertexId> {
+    std::optional<VertexId> best;
+    for (VertexId v = 0; v < vertex_count; ++v) {
+      if (!taken[v] && (!best || nearest[v] > nearest[*best])) best = v;  // the first of equals: the smaller id
+    }
+    return best;
+  };
+  for (std::size_t step = 0; step < vertex_count; ++step) {
+    ASSERT_EQ(farthest.farthest(), scan()) << "step " << step;
+    const VertexId next = *farthest.farthest();
+    taken[next] = true;
+    farthest.take(next);
+    std::vector<VertexId> lowered;
+    const VertexId around = VertexId(random.below(vertex_count));
+    for (VertexId v = around; v < std::min<std::size_t>(vertex_count, around + 1 + random.below(90)); ++v) {
+      const float lower = float(random.below(20));
+      if (lower < nearest[v]) {
+        nearest[v] = lower;
+        lowered.push_back(v);
+      }
+    }
+    farthest.lowered(lowered);
+  }
+  EXPECT_EQ(farthest.farthest(), std::nullopt);
 }
 
 TEST(InitialPlacement, PapersStartStacksEveryParticle) {

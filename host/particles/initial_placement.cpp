@@ -1,12 +1,12 @@
 #include "particles/initial_placement.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 #include <numeric>
 
 #include "common/progress.hpp"
 #include "common/random.hpp"
+#include "particles/farthest_vertex.hpp"
 
 namespace meshparticles {
 
@@ -24,49 +24,24 @@ std::vector<VertexId> distinct_random_vertices(std::size_t vertex_count, std::si
 
 // Each new sample is the vertex farthest from all samples so far (ties: the
 // smaller id). Another component is infinitely far, so each gets a sample
-// before any gets a second. The farthest vertex comes from a max-heap of
-// (distance, vertex) entries: a vertex is pushed again whenever a sample
-// lowers its distance, and an entry that no longer matches is skipped.
+// before any gets a second.
 std::vector<VertexId> farthest_point_samples(const SurfaceMesh& mesh, GeodesicMethod method, std::size_t count,
                                              VertexId first, bool quiet) {
-  const std::size_t vertex_count = mesh.vertex_count();
   const auto solver = make_geodesic_solver(mesh, method);
   SolverScratch scratch;
-  std::vector<float> nearest(vertex_count, std::numeric_limits<float>::infinity());
-  std::vector<bool> taken(vertex_count, false);
-  // Non-negative floats order like their bits; the complement of the id
-  // puts the smaller id first among equal distances.
-  const auto entry = [&](VertexId v) {
-    std::uint32_t bits;
-    std::memcpy(&bits, &nearest[v], sizeof bits);
-    return (std::uint64_t(bits) << 32) | (0xFFFFFFFFu - v);
-  };
-  std::vector<std::uint64_t> farthest(vertex_count);
-  for (VertexId v = 0; v < vertex_count; ++v) farthest[v] = entry(v);
-  std::make_heap(farthest.begin(), farthest.end());
+  std::vector<float> nearest(mesh.vertex_count(), std::numeric_limits<float>::infinity());
+  FarthestVertex farthest(nearest);
   std::vector<VertexId> samples, lowered;
   samples.reserve(count);
   ProgressLine progress("farthest-point start", count, quiet || count < 2000);
   VertexId next = first;
   while (true) {
     samples.push_back(next);
-    taken[next] = true;
+    farthest.take(next);
     if (samples.size() == count) break;
     solver->lower_nearest(next, nearest, scratch, lowered);
-    for (const VertexId v : lowered) {
-      farthest.push_back(entry(v));
-      std::push_heap(farthest.begin(), farthest.end());
-    }
-    while (true) {
-      std::pop_heap(farthest.begin(), farthest.end());
-      const std::uint64_t top = farthest.back();
-      farthest.pop_back();
-      const auto v = VertexId(0xFFFFFFFFu - (top & 0xFFFFFFFFu));
-      if (!taken[v] && top == entry(v)) {
-        next = v;
-        break;
-      }
-    }
+    farthest.lowered(lowered);
+    next = *farthest.farthest();  // count <= vertices: one is left
     progress.update(samples.size());
   }
   progress.finish();
