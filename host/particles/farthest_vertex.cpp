@@ -11,13 +11,7 @@ FarthestVertex::FarthestVertex(std::span<const float> nearest)
       taken_(nearest.size(), 0),
       leaves_(std::bit_ceil(std::max<std::size_t>((nearest.size() + kBlock - 1) / kBlock, 1))),
       tree_(2 * leaves_, 0) {
-  for (std::size_t b = 0; b * kBlock < nearest.size(); ++b) {
-    std::uint64_t best = 0;
-    for (std::size_t v = b * kBlock; v < std::min(nearest.size(), (b + 1) * kBlock); ++v) {
-      best = std::max(best, key(VertexId(v)));
-    }
-    tree_[leaves_ + b] = best;
-  }
+  for (std::size_t b = 0; b * kBlock < nearest.size(); ++b) tree_[leaves_ + b] = block_maximum(b);
   for (std::size_t node = leaves_ - 1; node >= 1; --node) tree_[node] = std::max(tree_[2 * node], tree_[2 * node + 1]);
 }
 
@@ -28,12 +22,16 @@ std::uint64_t FarthestVertex::key(VertexId v) const {
   return (std::uint64_t(bits) << 32) | (0xFFFFFFFFu - v);
 }
 
-void FarthestVertex::refresh_block(std::size_t block) {
+std::uint64_t FarthestVertex::block_maximum(std::size_t block) const {
   std::uint64_t best = 0;
   const std::size_t end = std::min(nearest_.size(), (block + 1) * kBlock);
   for (std::size_t v = block * kBlock; v < end; ++v) best = std::max(best, key(VertexId(v)));
+  return best;
+}
+
+void FarthestVertex::refresh_block(std::size_t block) {
   std::size_t node = leaves_ + block;
-  tree_[node] = best;
+  tree_[node] = block_maximum(block);
   for (node /= 2; node >= 1; node /= 2) {
     const std::uint64_t above = std::max(tree_[2 * node], tree_[2 * node + 1]);
     if (tree_[node] == above) break;  // nothing above changes either

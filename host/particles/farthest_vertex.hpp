@@ -33,7 +33,8 @@ class FarthestVertex {
   // smaller id; 0 for a taken vertex (no untaken key is 0).
   std::uint64_t key(VertexId v) const;
   static VertexId vertex_of(std::uint64_t key) { return VertexId(0xFFFFFFFFu - (key & 0xFFFFFFFFu)); }
-  void refresh_block(std::size_t block);
+  std::uint64_t block_maximum(std::size_t block) const;  // a scan of the block's keys
+  void refresh_block(std::size_t block);                  // its maximum, and the path above
 
   std::span<const float> nearest_;
   std::vector<std::uint8_t> taken_;
