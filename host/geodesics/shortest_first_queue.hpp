@@ -74,11 +74,15 @@ class ShortestFirstQueue {
   // before queueing it once: lower() returns whether v's distance dropped.
   bool lower(VertexId v, double candidate) {
     // One branch for both tests: which of them fails is hard to predict.
-    if (bool(accepted_[v]) | (candidate >= distances_[v])) return false;
+    if (!would_lower(v, candidate)) return false;
     if (!bound_.empty() && candidate >= double(bound_[v])) return false;  // no nearer than the bound says
     if (distances_[v] == std::numeric_limits<double>::infinity()) touched_.push_back(v);
     distances_[v] = candidate;
     return true;
+  }
+  // lower()'s first test alone, without a branch.
+  bool would_lower(VertexId v, double candidate) const {
+    return !(bool(accepted_[v]) | (candidate >= distances_[v]));
   }
   // Queues v at its distance, or moves it up to it if queued already (a
   // distance only ever drops).
