@@ -104,16 +104,16 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
     // corner is accepted is a coin toss to the predictor), 16 at a time.
     for (std::uint32_t first = stencils_.triangle_offsets[x], end = stencils_.triangle_offsets[x + 1]; first < end;
          first += kBatch) {
-      std::array<std::uint32_t, kBatch> ready;  // index * 2 + whether corner a is the accepted one
+      std::array<std::uint32_t, kBatch> ready;  // 2 * (k - first) + whether corner a is the accepted one
       std::uint32_t ready_count = 0;
       for (std::uint32_t k = first; k < std::min(end, first + kBatch); ++k) {
         const TriangleAtVertex& t = stencils_.triangles[k];
         const bool a_accepted = queue.is_accepted(t.a), b_accepted = queue.is_accepted(t.b);
-        ready[ready_count] = 2 * k + std::uint32_t(a_accepted);
+        ready[ready_count] = 2 * (k - first) + std::uint32_t(a_accepted);
         ready_count += std::uint32_t(a_accepted != b_accepted);
       }
       for (std::uint32_t r = 0; r < ready_count; ++r) {
-        const TriangleAtVertex& t = stencils_.triangles[ready[r] / 2];
+        const TriangleAtVertex& t = stencils_.triangles[first + ready[r] / 2];
         const bool a_accepted = ready[r] % 2 != 0;
         const VertexId target = a_accepted ? t.b : t.a, other = a_accepted ? t.a : t.b;
         if (!same_origin(other, x)) continue;
