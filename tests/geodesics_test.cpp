@@ -155,8 +155,8 @@ TEST(Geodesics, HighValenceFansAreUpdatedAllRound) {
 }
 
 // No path on the surface is shorter than the straight line through space: a
-// triangle update whose virtual source does not exist (d(X), d(Y) and XY
-// breaking the triangle inequality) must not shortcut one.
+// triangle update whose line from the virtual source misses edge XY must not
+// be taken as a shortcut.
 TEST(Geodesics, NoDistanceIsShorterThanTheStraightLine) {
   for (const char* name : {"torus.off", "atrium.off"}) {
     SCOPED_TRACE(name);

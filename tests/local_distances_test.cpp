@@ -72,7 +72,6 @@ TEST(LocalDistances, BatchedAndMarkedQueriesAgreeWithPointQueries) {
   }
 }
 
-
 // The interleaved searches find exactly what one search at a time finds:
 // for every vertex, in balls of every size (empty, one vertex, the mesh's),
 // in more balls than one group searches at once and in a partial group.
@@ -110,6 +109,7 @@ TEST(LocalDistances, InterleavedSearchesFindWhatOneSearchFinds) {
   }
   EXPECT_EQ(visited, expected);
 }
+
 // A budget smaller than the balls in use evicts the least recently used;
 // answers stay the same.
 TEST(LocalDistances, ASmallCacheEvictsAndRecomputesTheSameBalls) {
