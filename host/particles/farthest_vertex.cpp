@@ -47,8 +47,8 @@ void FarthestVertex::take(VertexId v) {
 void FarthestVertex::lowered(std::span<const VertexId> vertices) {
   for (const VertexId v : vertices) {
     // Keys only drop: a block's maximum changes only if it was v's.
-    const std::uint64_t block_maximum = tree_[leaves_ + v / kBlock];
-    if (block_maximum != 0 && vertex_of(block_maximum) == v) refresh_block(v / kBlock);
+    const std::uint64_t held = tree_[leaves_ + v / kBlock];  // the block's maximum
+    if (held != 0 && vertex_of(held) == v) refresh_block(v / kBlock);
   }
 }
 
