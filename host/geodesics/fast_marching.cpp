@@ -11,6 +11,7 @@ namespace meshparticles {
 namespace {
 
 constexpr std::uint32_t kBatch = 16;
+constexpr std::size_t kStencilLinesFetched = 4;  // of 64 bytes: 8 triangles
 
 // The point-source update of C from X (at the origin, distance dx) and Y (at
 // (s.length_xy, 0), distance dy); +inf when the source's straight line to C
@@ -58,6 +59,7 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
   ShortestFirstQueue queue(sources, distances, scratch, max_distance, bound);
   const auto& offsets = mesh_.ring_offsets();
   const auto& neighbors = mesh_.ring_neighbors();
+  const auto& triangles = stencils_.triangles;
   // Which source each vertex's distance comes from. A point-source update
   // places one virtual source from d(X) and d(Y); where two sources' fronts
   // meet, X and Y measure from different sources and that point would be
@@ -76,6 +78,17 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
     const VertexId x = *accepted;
     const double dx = distances[x];
     lowered.clear();
+    // A vertex's stencils (about 200 bytes, read in acceptance order) miss
+    // the cache on any mesh past a few thousand vertices. The queue's front
+    // is most often the next vertex accepted: its stencils, ring and edge
+    // lengths are fetched while this one is processed. (Pointers, not
+    // references: it may have no triangles and be the last vertex.)
+    if (const auto next = queue.front()) {
+      const auto* stencils = reinterpret_cast<const char*>(triangles.data() + stencils_.triangle_offsets[*next]);
+      for (std::size_t line = 0; line < kStencilLinesFetched; ++line) __builtin_prefetch(stencils + 64 * line);
+      __builtin_prefetch(neighbors.data() + offsets[*next]);
+      __builtin_prefetch(edge_lengths_.data() + offsets[*next]);
+    }
     // Along edges: exact next to the source, an upper bound elsewhere. The
     // few neighbours this lowers (about one in five) are found without a
     // branch, then lowered.
@@ -107,13 +120,13 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
       std::array<std::uint32_t, kBatch> ready;  // 2 * (k - first) + whether corner a is the accepted one
       std::uint32_t ready_count = 0;
       for (std::uint32_t k = first; k < std::min(end, first + kBatch); ++k) {
-        const TriangleAtVertex& t = stencils_.triangles[k];
+        const TriangleAtVertex& t = triangles[k];
         const bool a_accepted = queue.is_accepted(t.a), b_accepted = queue.is_accepted(t.b);
         ready[ready_count] = 2 * (k - first) + std::uint32_t(a_accepted);
         ready_count += std::uint32_t(a_accepted != b_accepted);
       }
       for (std::uint32_t r = 0; r < ready_count; ++r) {
-        const TriangleAtVertex& t = stencils_.triangles[first + ready[r] / 2];
+        const TriangleAtVertex& t = triangles[first + ready[r] / 2];
         const bool a_accepted = ready[r] % 2 != 0;
         const VertexId target = a_accepted ? t.b : t.a, other = a_accepted ? t.a : t.b;
         if (!same_origin(other, x)) continue;

@@ -65,6 +65,12 @@ class ShortestFirstQueue {
 
   bool is_accepted(VertexId v) const { return accepted_[v] != 0; }
 
+  // The vertex pop_next() would take now, if any is queued: likely the next.
+  std::optional<VertexId> front() const {
+    if (heap_.empty()) return std::nullopt;
+    return vertex_of(heap_.front());
+  }
+
   // Lowers v's tentative distance to `candidate` if that is shorter.
   void offer(VertexId v, double candidate) {
     if (lower(v, candidate)) requeue(v);
