@@ -11,7 +11,8 @@ namespace meshparticles {
 namespace {
 
 constexpr std::uint32_t kBatch = 16;
-constexpr std::size_t kStencilLinesFetched = 4;  // of 64 bytes: 8 triangles
+constexpr std::size_t kCacheLine = 64;
+constexpr std::size_t kStencilLinesFetched = 4;  // 8 triangles
 
 // The point-source update of C from X (at the origin, distance dx) and Y (at
 // (s.length_xy, 0), distance dy); +inf when the source's straight line to C
@@ -80,12 +81,13 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
     lowered.clear();
     // A vertex's stencils (about 200 bytes, read in acceptance order) miss
     // the cache on any mesh past a few thousand vertices. The queue's front
-    // is most often the next vertex accepted: its stencils, ring and edge
-    // lengths are fetched while this one is processed. (Pointers, not
-    // references: it may have no triangles and be the last vertex.)
+    // is the next vertex accepted unless this one lowers a neighbour below
+    // it: its stencils, ring and edge lengths are fetched while this one is
+    // processed. (Pointers, not references: it may have no triangles and be
+    // the last vertex.)
     if (const auto next = queue.front()) {
       const auto* stencils = reinterpret_cast<const char*>(triangles.data() + stencils_.triangle_offsets[*next]);
-      for (std::size_t line = 0; line < kStencilLinesFetched; ++line) __builtin_prefetch(stencils + 64 * line);
+      for (std::size_t line = 0; line < kStencilLinesFetched; ++line) __builtin_prefetch(stencils + kCacheLine * line);
       __builtin_prefetch(neighbors.data() + offsets[*next]);
       __builtin_prefetch(edge_lengths_.data() + offsets[*next]);
     }
