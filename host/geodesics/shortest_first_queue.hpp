@@ -65,7 +65,9 @@ class ShortestFirstQueue {
 
   bool is_accepted(VertexId v) const { return accepted_[v] != 0; }
 
-  // The vertex pop_next() would take now, if any is queued: likely the next.
+  // The closest queued vertex, if any: what pop_next() takes next unless a
+  // distance is lowered below it first (or it lies beyond the stopping
+  // distance). A hint for prefetching; nothing is decided by it.
   std::optional<VertexId> front() const {
     if (heap_.empty()) return std::nullopt;
     return vertex_of(heap_.front());
