@@ -172,6 +172,36 @@ TEST(LocalField, HelperThreadsChangeNothing) {
   }
 }
 
+// Each iteration's record counts the balls solved while it ran: on one
+// thread (the caller solves every ball, when a decision first reads it)
+// those and the start's add up to all the store solved, and the time they
+// took is the particle loop's.
+TEST(LocalField, EachIterationRecordsTheBallsItSolved) {
+  const MeshWithDistances m("torus.off");
+  const std::size_t particles = 300;
+  const EnergyParams energy = m.default_energy(particles);
+  const double radius = cutoff_radius(m.mesh, particles);
+  const auto start = place_particles(m.mesh, {Init::random, particles, 5, std::nullopt});
+  const LocalDistances for_start = local_store(m.mesh, radius, std::uint64_t{1} << 30, 1);
+  LocalFieldBackend(m.mesh, for_start, energy, WeightFormat::float32, 0).set_positions(start);
+  const std::size_t start_balls = for_start.statistics().balls_computed;
+
+  const LocalDistances local = local_store(m.mesh, radius, std::uint64_t{1} << 30, 1);
+  LocalFieldBackend field(m.mesh, local, energy, WeightFormat::float32, 0);
+  const RunOutcome outcome = run_particles(field, start, {Scheme::sequential, 1, 100, true}, &local);
+  std::size_t iteration_balls = 0;
+  for (const IterationRecord& record : outcome.trace) {
+    ASSERT_TRUE(record.balls_solved && record.ball_ms);
+    iteration_balls += *record.balls_solved;
+    EXPECT_EQ(*record.balls_solved > 0, *record.ball_ms > 0) << *record.balls_solved << " balls";
+  }
+  EXPECT_GT(iteration_balls, 0u) << "moves bring new candidates";
+  EXPECT_EQ(start_balls + iteration_balls, local.statistics().balls_computed);
+
+  LocalFieldBackend unrecorded(m.mesh, local, energy, WeightFormat::float32, 0);
+  EXPECT_FALSE(run_particles(unrecorded, start, {Scheme::sequential, 1, 1, true}).trace.front().balls_solved);
+}
+
 // The local field follows the moves exactly: after many iterations it holds
 // what a rebuild gives, at every candidate.
 TEST(LocalField, IncrementalUpdatesMatchARebuild) {

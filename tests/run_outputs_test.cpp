@@ -75,6 +75,7 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   EXPECT_EQ(written["stopped"], outcome.converged ? "converged" : "max_iterations");
   EXPECT_EQ(written["trace"].size(), outcome.trace.size());
   EXPECT_FALSE(written.contains("avg_kernel_ms"));  // serial: no kernels
+  EXPECT_FALSE(written["trace"][0].contains("balls")) << "no balls on the dense table";
 
   // ParaView files: a PLY vertex element per particle, a VTK value per vertex.
   std::istringstream ply(slurp(directory / "nested" / "particles.ply"));
@@ -98,6 +99,29 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
 
 TEST(RunOutputs, RefusesAnOutputDirectoryUnderAFile) {
   EXPECT_THROW(prepare_output_directory("/dev/null/out"), UserError);
+}
+
+// On local distances each iteration of the trace says how many balls it
+// solved and how long the particles waited on them.
+TEST(RunOutputs, LocalRunsRecordEachIterationsBalls) {
+  std::vector<std::string> warnings;
+  const SurfaceMesh mesh = read_mesh(std::string(MESHES_DIR) + "/torus.off", warnings);
+  RunRequest request;
+  request.mesh_label = "torus.off";
+  request.particles = 64;
+  request.backend.name = "serial-field";
+  request.distances.kind = StoreKind::local;
+  request.quiet = true;
+  const RunResult result = run_pipeline(mesh, request);
+  const nlohmann::json report = run_report(mesh, result, "unused", std::nullopt);
+  ASSERT_EQ(report["trace"].size(), result.outcome.trace.size());
+  std::size_t balls = 0;
+  for (const auto& entry : report["trace"]) {
+    ASSERT_TRUE(entry.contains("balls") && entry.contains("ball_ms")) << entry.dump();
+    balls += entry["balls"].get<std::size_t>();
+  }
+  EXPECT_GT(balls, 0u) << "the first moves bring new candidates";
+  EXPECT_LE(balls, report["distances"]["balls_computed"].get<std::size_t>());
 }
 
 }  // namespace

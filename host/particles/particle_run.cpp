@@ -8,19 +8,30 @@
 
 namespace meshparticles {
 
-RunOutcome run_particles(ParticleBackend& backend, std::span<const VertexId> start, const RunSettings& settings) {
+RunOutcome run_particles(ParticleBackend& backend, std::span<const VertexId> start, const RunSettings& settings,
+                         const LocalDistances* balls) {
   RunOutcome outcome;
   backend.set_positions(start);
   outcome.initial_energy = backend.total_energy();
   ProgressLine progress("particles", settings.max_iterations, settings.quiet);
   for (std::size_t iteration = 0; iteration < settings.max_iterations; ++iteration) {
     const auto started = std::chrono::steady_clock::now();
+    const auto balls_before = balls ? std::optional(balls->statistics()) : std::nullopt;
     const double energy_before = outcome.trace.empty() ? outcome.initial_energy : outcome.trace.back().energy;
     const IterationStats stats = iterate_scheme(backend, settings.scheme, settings.colors, energy_before);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    outcome.trace.push_back({stats.energy, stats.moved, ms, stats.kernel_ms, stats.attempts > 1 ? stats.kept : ""});
-    char detail[96];
-    std::snprintf(detail, sizeof detail, "moved %zu  energy %.6g  %.2f ms/iteration", stats.moved, stats.energy, ms);
+    IterationRecord record{stats.energy, stats.moved, ms, stats.kernel_ms, stats.attempts > 1 ? stats.kept : "",
+                           std::nullopt, std::nullopt};
+    char detail[128];
+    const int length = std::snprintf(detail, sizeof detail, "moved %zu  energy %.6g  %.2f ms/iteration",
+                                     stats.moved, stats.energy, ms);
+    if (balls_before) {
+      const LocalDistances::Statistics balls_after = balls->statistics();
+      record.balls_solved = balls_after.balls_computed - balls_before->balls_computed;
+      record.ball_ms = 1000.0 * (balls_after.seconds - balls_before->seconds);
+      std::snprintf(detail + length, sizeof detail - std::size_t(length), "  %zu balls", *record.balls_solved);
+    }
+    outcome.trace.push_back(std::move(record));
     progress.update(iteration + 1, detail);
     if (stats.moved == 0) {
       outcome.converged = true;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "geodesics/local_distances.hpp"
 #include "particles/particle_backend.hpp"
 
 namespace meshparticles {
@@ -25,6 +26,10 @@ struct IterationRecord {
   double ms = 0;  // wall time of the iteration
   std::optional<double> kernel_ms;
   std::string redone_as;  // monotone: what was kept when the first attempt was undone; else empty
+  // Local distances: balls solved while the iteration ran (by every thread),
+  // and the milliseconds the particle loop spent solving or waiting for balls.
+  std::optional<std::size_t> balls_solved;
+  std::optional<double> ball_ms;
 };
 
 struct RunOutcome {
@@ -34,6 +39,10 @@ struct RunOutcome {
   std::vector<VertexId> positions;
 };
 
-RunOutcome run_particles(ParticleBackend& backend, std::span<const VertexId> start, const RunSettings& settings);
+// With `balls` (the local store the backend reads), each iteration's record
+// also says how many balls were solved while it ran and how long the
+// particles waited on them.
+RunOutcome run_particles(ParticleBackend& backend, std::span<const VertexId> start, const RunSettings& settings,
+                         const LocalDistances* balls = nullptr);
 
 }  // namespace meshparticles

@@ -79,7 +79,8 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
   result.device = backend->device_name();
   result.start = place_particles(mesh, plan.placement, plan.request.quiet);
   result.outcome = run_particles(
-      *backend, result.start, {plan.scheme, plan.colors, plan.request.max_iterations, plan.request.quiet});
+      *backend, result.start, {plan.scheme, plan.colors, plan.request.max_iterations, plan.request.quiet},
+      distances.local_balls());
   result.seconds.particles = seconds_since(particles_started);
 
   const auto quality_started = std::chrono::steady_clock::now();

@@ -78,6 +78,8 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
   for (const auto& record : outcome.trace) {
     nlohmann::json entry = {{"energy", record.energy}, {"moved", record.moved}, {"ms", record.ms}};
     if (!record.redone_as.empty()) entry["redone_as"] = record.redone_as;
+    if (record.balls_solved) entry["balls"] = *record.balls_solved;
+    if (record.ball_ms) entry["ball_ms"] = *record.ball_ms;
     if (record.kernel_ms) {
       entry["kernel_ms"] = *record.kernel_ms;
       kernel_ms_sum += *record.kernel_ms;
