@@ -280,8 +280,8 @@ std::pair<DistributionQuality, DistributionQuality> quality_on_balls_and_table(
     const MeshWithDistances& m, std::span<const VertexId> positions, const EnergyParams& energy, double radius) {
   const LocalDistances local = local_store(m.mesh, radius);
   const auto to_nearest = distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions);
-  return {measure_quality(m.mesh, local, positions, energy, to_nearest),
-          measure_quality(m.mesh, m.distances, positions, energy, to_nearest)};
+  return {measure_quality(m.mesh, local, positions, energy, to_nearest, true),
+          measure_quality(m.mesh, m.distances, positions, energy, to_nearest, true)};
 }
 
 // Quality through a local store: the pairs within reach, and particles with

@@ -4,9 +4,17 @@
 // the particle-file reader against bad files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <tuple>
+#include <utility>
+
+#include <unistd.h>
 
 #include "common/user_error.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -53,7 +61,7 @@ class GridSquare : public ::testing::Test {
   }
   static DistributionQuality measure(const std::vector<VertexId>& positions, double sigma = 0.1) {
     return measure_quality(*mesh_, *distances_, positions, {Potential::exp, sigma},
-                           distance_to_nearest_particle(*mesh_, GeodesicMethod::fast_marching, positions));
+                           distance_to_nearest_particle(*mesh_, GeodesicMethod::fast_marching, positions), true);
   }
   static SurfaceMesh* mesh_;
   static DistanceTable* distances_;
@@ -125,7 +133,7 @@ TEST(Quality, AComponentWithoutParticlesLeavesTheCoverUndefined) {
   const EnergyParams energy{Potential::exp, 1.0};
   const auto measure = [&](const std::vector<VertexId>& positions) {
     return measure_quality(m.mesh, m.distances, positions, energy,
-                           distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions));
+                           distance_to_nearest_particle(m.mesh, GeodesicMethod::fast_marching, positions), true);
   };
   const DistributionQuality one = measure(one_side);
   EXPECT_FALSE(one.cover.has_value());
@@ -168,6 +176,91 @@ TEST(ParticleFile, PointsSnapToTheNearestVertexAndTheLargestSnapIsReported) {
   for (VertexId v = 0; v < m.mesh.vertex_count(); ++v) EXPECT_EQ(snapped.positions[v], v);
   EXPECT_NEAR(snapped.largest_snap, 0.01 * double(m.mesh.vertex_count() - 1), 1e-12);
   EXPECT_EQ(snapped.largest_snap_particle, m.mesh.vertex_count() - 1);
+}
+
+// The nearest vertex by a scan of them all, ties to the smaller id: what
+// snapping is defined to give.
+std::pair<VertexId, double> nearest_by_scan(const SurfaceMesh& mesh, Vec3 point) {
+  VertexId nearest = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    const Vec3 offset = mesh.positions()[v] - point;
+    const double d = dot(offset, offset);
+    if (d < best) std::tie(nearest, best) = std::pair(v, d);
+  }
+  return {nearest, best};
+}
+
+void expect_the_scans_answers(const SurfaceMesh& mesh, const std::vector<Vec3>& points) {
+  const SnappedParticles snapped = snap_to_vertices(mesh, points);
+  ASSERT_EQ(snapped.positions.size(), points.size());
+  double largest = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto [nearest, best] = nearest_by_scan(mesh, points[i]);
+    ASSERT_EQ(snapped.positions[i], nearest) << "point " << i;
+    largest = std::max(largest, std::sqrt(best));
+  }
+  EXPECT_EQ(snapped.largest_snap, largest);
+}
+
+// A flat grid of side x side vertices at integer coordinates, numbered in a
+// shuffled order, so that the points equally near to several vertices lie
+// in different leaves of the k-d tree, in no order of their ids.
+SurfaceMesh shuffled_grid(std::size_t side) {
+  std::vector<std::size_t> id(side * side);
+  std::iota(id.begin(), id.end(), 0);
+  std::shuffle(id.begin(), id.end(), std::mt19937(3));
+  std::vector<Vec3> at(id.size());
+  for (std::size_t k = 0; k < id.size(); ++k) at[id[k]] = {double(k % side), double(k / side), 0};
+  const auto path = std::filesystem::temp_directory_path() / ("mp_grid_" + std::to_string(::getpid()) + ".off");
+  {
+    std::ofstream out(path);
+    out << "OFF\n" << at.size() << " " << 2 * (side - 1) * (side - 1) << " 0\n";
+    for (const Vec3& p : at) out << p.x << " " << p.y << " 0\n";
+    for (std::size_t y = 0; y + 1 < side; ++y) {
+      for (std::size_t x = 0; x + 1 < side; ++x) {
+        const std::size_t a = id[y * side + x], b = id[y * side + x + 1], c = id[(y + 1) * side + x + 1],
+                          d = id[(y + 1) * side + x];
+        out << "3 " << a << " " << b << " " << c << "\n3 " << a << " " << c << " " << d << "\n";
+      }
+    }
+  }
+  std::vector<std::string> warnings;
+  SurfaceMesh mesh = read_mesh(path.string(), warnings);
+  std::filesystem::remove(path);
+  return mesh;
+}
+
+// Snapping through the k-d tree gives the scan's vertex for every point: on
+// a grid, points equally near to 2 and 4 vertices (exact in binary) go to the
+// smallest id; on the atrium, random points around it, points on its
+// vertices, and a point so far out that squared distances overflow.
+TEST(ParticleFile, SnappingGivesTheScansVertexTiesIncluded) {
+  const SurfaceMesh grid = shuffled_grid(40);
+  std::vector<Vec3> equally_near;
+  for (double y = 0; y <= 39; y += 0.5) {
+    for (double x = 0; x <= 39; x += 0.5) equally_near.push_back({x, y, 0.25});
+  }
+  expect_the_scans_answers(grid, equally_near);
+
+  std::vector<std::string> warnings;
+
+  const SurfaceMesh atrium = read_mesh(std::string(MESHES_DIR) + "/atrium.off", warnings);
+  Vec3 low = atrium.positions()[0], high = low;
+  for (const Vec3& p : atrium.positions()) {
+    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+  }
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(-0.2, 1.2);
+  std::vector<Vec3> points;
+  for (int k = 0; k < 3000; ++k) {
+    points.push_back({low.x + unit(random) * (high.x - low.x), low.y + unit(random) * (high.y - low.y),
+                      low.z + unit(random) * (high.z - low.z)});
+  }
+  for (VertexId v = 0; v < atrium.vertex_count(); v += 7) points.push_back(atrium.positions()[v]);
+  points.push_back({1e200, -1e200, 1e200});  // every squared distance is +inf: the scan keeps vertex 0
+  expect_the_scans_answers(atrium, points);
 }
 
 }  // namespace

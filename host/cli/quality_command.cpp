@@ -48,7 +48,8 @@ void run_quality(const QualityOptions& options) {
   std::vector<MeasuredSet> sets;
   for (std::size_t k = 0; k < points.size(); ++k) {
     sets.push_back(
-        measure_particle_file(mesh, distances, method, options.particle_files[k], points[k], potential, options.sigma));
+        measure_particle_file(mesh, distances, method, options.particle_files[k], points[k], potential, options.sigma,
+                              options.table.quiet));
   }
   const bool comparing = sets.size() == 2;
   double a_to_b = 0, b_to_a = 0;

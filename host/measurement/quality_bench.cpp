@@ -20,7 +20,8 @@ QualityCase quality_case(const BenchRequest& bench, const PlannedCase& planned, 
     const auto start = place_particles(mesh, {init, particles, 1, std::nullopt});
     result.rows.push_back({method, "", 0, false,
                            measure_quality(mesh, distances, start, energy,
-                                           distance_to_nearest_particle(mesh, GeodesicMethod::fast_marching, start)),
+                                           distance_to_nearest_particle(mesh, GeodesicMethod::fast_marching, start),
+                                           /*quiet=*/true),
                            std::nullopt});
   };
   const auto add_run = [&](const std::string& method, const std::string& backend, Init init, Scheme scheme) {

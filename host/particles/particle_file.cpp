@@ -4,6 +4,10 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <tuple>
+#include <utility>
+
+#include <nanoflann.hpp>
 
 #include "common/user_error.hpp"
 
@@ -32,19 +36,72 @@ std::vector<Vec3> read_particle_points(const std::filesystem::path& file) {
   return points;
 }
 
+namespace {
+
+// The mesh's vertices as nanoflann's k-d tree reads them.
+struct VertexCloud {
+  const std::vector<Vec3>& vertices;
+  std::size_t kdtree_get_point_count() const { return vertices.size(); }
+  double kdtree_get_pt(std::size_t v, std::size_t axis) const {
+    const Vec3& p = vertices[v];
+    return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
+  }
+  template <typename Box>
+  bool kdtree_get_bbox(Box& /*unused*/) const {
+    return false;  // the tree computes it
+  }
+};
+
+using VertexTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, VertexCloud>, VertexCloud, 3, VertexId>;
+
+double squared_distance(Vec3 a, Vec3 b) {
+  const Vec3 offset = a - b;
+  return dot(offset, offset);
+}
+
+// Whether v at squared distance d beats the nearest so far: nearer, or as
+// near with a smaller id.
+bool nearer(double d, VertexId v, double best, VertexId nearest) { return d < best || (d == best && v < nearest); }
+
+// The definition: a scan of every vertex. Also the answer where the tree's
+// squared distances overflow (coordinates near the double range).
+std::pair<VertexId, double> nearest_by_scan(const std::vector<Vec3>& vertices, Vec3 point) {
+  VertexId nearest = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (VertexId v = 0; v < vertices.size(); ++v) {
+    const double d = squared_distance(vertices[v], point);
+    if (nearer(d, v, best, nearest)) std::tie(nearest, best) = std::pair(v, d);
+  }
+  return {nearest, best};
+}
+
+}  // namespace
+
+// The k-d tree finds a nearest vertex; the vertices as near (with a margin
+// for the tree's own rounding) are then compared exactly as the scan
+// compares them, so the answer is the scan's, ties included. The scan alone
+// took 4.2 minutes for 100k points on a 1M-vertex sphere.
 SnappedParticles snap_to_vertices(const SurfaceMesh& mesh, const std::vector<Vec3>& points) {
   SnappedParticles snapped;
   const auto& vertices = mesh.positions();
+  const VertexCloud cloud{vertices};
+  const VertexTree tree(3, cloud);
+  std::vector<std::pair<VertexId, double>> as_near;
+  const nanoflann::SearchParams unsorted(32, 0.0f, false);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    double best = std::numeric_limits<double>::infinity();
+    const double query[3] = {points[i].x, points[i].y, points[i].z};
     VertexId nearest = 0;
-    for (VertexId v = 0; v < vertices.size(); ++v) {
-      const Vec3 offset = vertices[v] - points[i];
-      const double squared = dot(offset, offset);
-      if (squared < best) {
-        best = squared;
-        nearest = v;
+    double best = std::numeric_limits<double>::infinity();
+    if (tree.knnSearch(query, 1, &nearest, &best) == 1 && std::isfinite(best)) {
+      tree.radiusSearch(query, best * (1 + 1e-9) + std::numeric_limits<double>::min(), as_near, unsorted);
+      best = squared_distance(vertices[nearest], points[i]);
+      for (const auto& [v, tree_distance] : as_near) {
+        const double d = squared_distance(vertices[v], points[i]);
+        if (nearer(d, v, best, nearest)) std::tie(nearest, best) = std::pair(v, d);
       }
+    } else {
+      std::tie(nearest, best) = nearest_by_scan(vertices, points[i]);
     }
     snapped.positions.push_back(nearest);
     if (std::sqrt(best) > snapped.largest_snap) {

@@ -87,7 +87,8 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
   result.distance_to_nearest =
       distance_to_nearest_particle(mesh, plan.request.distances.geodesics.method, result.outcome.positions);
   result.quality =
-      measure_quality(mesh, distances, result.outcome.positions, plan.energy, result.distance_to_nearest);
+      measure_quality(mesh, distances, result.outcome.positions, plan.energy, result.distance_to_nearest,
+                      plan.request.quiet);
   result.seconds.quality = seconds_since(quality_started);
   result.seconds.total = result.seconds.particles + result.seconds.quality;
   return result;

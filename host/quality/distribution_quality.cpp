@@ -5,6 +5,8 @@
 #include <limits>
 #include <unordered_set>
 
+#include "common/progress.hpp"
+#include "geodesics/local_distances.hpp"
 #include "particles/energy.hpp"
 
 namespace meshparticles {
@@ -12,6 +14,8 @@ namespace meshparticles {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Fewer particles than this are measured without a progress line.
+constexpr std::size_t kProgressParticles = 2000;
 
 }  // namespace
 
@@ -31,16 +35,27 @@ namespace {
 // particles near each one are looked at, each pair from the particle on the
 // smaller vertex: its distance costs two searches in the balls).
 template <typename Pair>
-void for_each_pair_within_reach(const DistanceStore& distances, std::span<const VertexId> positions, Pair pair) {
+void for_each_pair_within_reach(const DistanceStore& distances, std::span<const VertexId> positions, bool quiet,
+                                Pair pair) {
   const std::size_t n = positions.size();
+  const bool silent = quiet || n < kProgressParticles;
   if (std::isinf(distances.reach())) {
+    ProgressLine progress("quality", n, silent);
     std::vector<float> from_i(n);
     for (std::size_t i = 0; i < n; ++i) {
       distances.distances_from(positions[i], positions, from_i);
       for (std::size_t j = i + 1; j < n; ++j) pair(i, j, double(from_i[j]));
+      progress.update(i + 1);
     }
+    progress.finish();
     return;
   }
+  // Every particle's ball is read, by its own query and by its neighbours'.
+  // Asked for a few at a time, they were solved on one thread: for 100k
+  // particles on the 1M sphere this loop took 16.6 s, now 5.5 s for the
+  // balls and 2.3 s for the loop. (A run holds them already.)
+  if (const LocalDistances* balls = distances.local_balls()) balls->prefetch(positions);
+  ProgressLine progress("quality", n, silent);
   std::vector<std::uint8_t> occupied(distances.vertex_count(), 0);
   std::vector<std::vector<std::size_t>> on_vertex(distances.vertex_count());  // particles by vertex
   for (std::size_t i = 0; i < n; ++i) {
@@ -54,14 +69,16 @@ void for_each_pair_within_reach(const DistanceStore& distances, std::span<const 
         if (v > u || j > i) pair(i, j, double(d));  // on one vertex: from the smaller index
       }
     });
+    progress.update(i + 1);
   }
+  progress.finish();
 }
 
 }  // namespace
 
 DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy,
-                                    std::span<const float> to_nearest) {
+                                    std::span<const float> to_nearest, bool quiet) {
   DistributionQuality quality;
   const std::size_t n = positions.size();
   quality.particles = n;
@@ -69,7 +86,7 @@ DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore
 
   std::vector<double> nearest(n, kInfinity);
   const double inv_two_sigma_sq = energy.inv_two_sigma_sq();
-  for_each_pair_within_reach(distances, positions, [&](std::size_t i, std::size_t j, double d) {
+  for_each_pair_within_reach(distances, positions, quiet, [&](std::size_t i, std::size_t j, double d) {
     nearest[i] = std::min(nearest[i], d);
     nearest[j] = std::min(nearest[j], d);
     quality.energy += pair_weight(energy.potential, d, inv_two_sigma_sq);

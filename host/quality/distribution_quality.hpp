@@ -39,9 +39,10 @@ std::vector<float> distance_to_nearest_particle(const SurfaceMesh& mesh, Geodesi
 // `to_nearest`: distance_to_nearest_particle of these positions (the
 // covering radius comes from it). Nearest neighbours and the energy come
 // from `distances`: all pairs from a complete table, the pairs within reach
-// from a local store.
+// from a local store (which first solves every particle's ball it does not
+// hold, on all cores). Unless `quiet`, a progress line counts the particles.
 DistributionQuality measure_quality(const SurfaceMesh& mesh, const DistanceStore& distances,
                                     std::span<const VertexId> positions, const EnergyParams& energy,
-                                    std::span<const float> to_nearest);
+                                    std::span<const float> to_nearest, bool quiet);
 
 }  // namespace meshparticles

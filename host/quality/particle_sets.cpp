@@ -5,14 +5,14 @@ namespace meshparticles {
 
 MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceStore& distances, GeodesicMethod method,
                                   const std::string& path, const std::vector<Vec3>& points, Potential potential,
-                                  std::optional<double> sigma) {
+                                  std::optional<double> sigma, bool quiet) {
   MeasuredSet set;
   set.path = path;
   set.snapped = snap_to_vertices(mesh, points);
   const std::size_t n = set.snapped.positions.size();
   set.energy = {potential, sigma.value_or(default_sigma(potential, mesh.area(), n))};
   set.quality = measure_quality(mesh, distances, set.snapped.positions, set.energy,
-                                distance_to_nearest_particle(mesh, method, set.snapped.positions));
+                                distance_to_nearest_particle(mesh, method, set.snapped.positions), quiet);
   return set;
 }
 

@@ -21,7 +21,7 @@ struct MeasuredSet {
 // distances so that a bad file fails fast.
 MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceStore& distances, GeodesicMethod method,
                                   const std::string& path, const std::vector<Vec3>& points, Potential potential,
-                                  std::optional<double> sigma);
+                                  std::optional<double> sigma, bool quiet);
 
 // The mean over the particles of `from` of the geodesic distance to the
 // nearest particle of `to` (+inf when some particle has none in its
