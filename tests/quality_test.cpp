@@ -244,7 +244,6 @@ TEST(ParticleFile, SnappingGivesTheScansVertexTiesIncluded) {
   expect_the_scans_answers(grid, equally_near);
 
   std::vector<std::string> warnings;
-
   const SurfaceMesh atrium = read_mesh(std::string(MESHES_DIR) + "/atrium.off", warnings);
   Vec3 low = atrium.positions()[0], high = low;
   for (const Vec3& p : atrium.positions()) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "common/progress.hpp"
+#include "geodesics/local_distances.hpp"
 #include "particles/scheme_step.hpp"
 
 namespace meshparticles {

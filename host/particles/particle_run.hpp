@@ -5,10 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "geodesics/local_distances.hpp"
 #include "particles/particle_backend.hpp"
 
 namespace meshparticles {
+
+class LocalDistances;
 
 // The iteration limit of a run when --iterations is absent.
 constexpr std::size_t kDefaultMaxIterations = 500;
