@@ -51,7 +51,7 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   std::istringstream rows(csv);
   std::string header, row;
   std::getline(rows, header);
-  EXPECT_EQ(header, "particle,vertex,x,y,z");
+  EXPECT_EQ(header, "particle,vertex,x,y,z,corner_a,corner_b,corner_c,weight_a,weight_b,weight_c");
   for (std::size_t i = 0; i < outcome.positions.size(); ++i) {
     ASSERT_TRUE(std::getline(rows, row));
     EXPECT_EQ(row.substr(0, row.find(',', row.find(',') + 1)),
@@ -94,6 +94,51 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   for (double value; values >> value; ++count) zeros += value == 0.0;
   EXPECT_EQ(count, mesh.vertex_count());
   EXPECT_GE(zeros, 1u);  // the vertices the particles sit on
+  std::filesystem::remove_all(directory);
+}
+
+// spread's particles lie between the input's vertices: each CSV row's
+// triangle (input ids) and weights give back its point, on the input surface,
+// and its vertex is the nearest corner.
+TEST(RunOutputs, SpreadRowsPlaceEachParticleOnAnInputTriangle) {
+  std::vector<std::string> warnings;
+  const SurfaceMesh mesh = read_mesh(std::string(TEST_DATA_DIR) + "/unreferenced_vertices.off", warnings);
+  RunRequest request;
+  request.mesh_label = "m.off";
+  request.particles = 2;
+  request.quiet = true;
+  const RunResult result = run_pipeline(mesh, request);
+  ASSERT_TRUE(result.working) << "spread is the default";
+  const auto directory = std::filesystem::temp_directory_path() / ("mp_spread_" + std::to_string(::getpid()));
+  prepare_output_directory(directory);
+  write_run_outputs(directory, mesh, result, run_report(mesh, result, directory, std::nullopt));
+  std::istringstream rows(slurp(directory / "particles.csv"));
+  std::string row;
+  std::getline(rows, row);
+  std::size_t count = 0;
+  while (std::getline(rows, row)) {
+    std::vector<double> cells;
+    std::istringstream fields(row);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(std::stod(cell));
+    ASSERT_EQ(cells.size(), 11u) << row;
+    const Vec3 at{cells[2], cells[3], cells[4]};
+    Vec3 from_weights{0, 0, 0};
+    double nearest = INFINITY;
+    std::size_t nearest_id = 0;
+    for (int k = 0; k < 3; ++k) {
+      const auto corner = mesh.vertex_of_input_id(std::size_t(cells[5 + k]));
+      ASSERT_TRUE(corner) << row;
+      from_weights = from_weights + cells[8 + k] * mesh.positions()[*corner];
+      if (distance(at, mesh.positions()[*corner]) < nearest) {
+        nearest = distance(at, mesh.positions()[*corner]);
+        nearest_id = std::size_t(cells[5 + k]);
+      }
+    }
+    EXPECT_LE(distance(at, from_weights), 1e-6 * mesh.mean_edge_length()) << row;
+    EXPECT_EQ(std::size_t(cells[1]), nearest_id) << row;
+    ++count;
+  }
+  EXPECT_EQ(count, 2u);
   std::filesystem::remove_all(directory);
 }
 

@@ -41,11 +41,11 @@ nlohmann::json without_out(nlohmann::json params) {
   return params;
 }
 
-bool rows_match(const std::filesystem::path& directory, std::size_t particles, const SurfaceMesh& mesh) {
-  const std::size_t vertices = mesh.vertex_count();
+// `vertices`: of the mesh the particles moved on (spread: the working mesh).
+bool rows_match(const std::filesystem::path& directory, std::size_t particles, std::size_t vertices) {
   const auto field = lines_of(directory / "mesh_distance.vtk");
   return rows_after(lines_of(directory / "particles.particles"), "") == particles &&
-         rows_after(lines_of(directory / "particles.csv"), "particle,vertex,x,y,z") == particles &&
+         rows_after(lines_of(directory / "particles.csv"), kParticlesCsvHeader) == particles &&
          rows_after(lines_of(directory / "particles.ply"), "end_header") == particles &&
          std::count(field.begin(), field.end(), "POINTS " + std::to_string(vertices) + " float") == 1 &&
          rows_after(field, "LOOKUP_TABLE default") == vertices;
@@ -76,7 +76,8 @@ std::optional<nlohmann::json> reusable_report(const std::filesystem::path& direc
   if (plan.distances.kind == StoreKind::local && distances.value("radius", -1.0) != plan.distances.radius) {
     return std::nullopt;
   }
-  if (!rows_match(directory, plan.request.particles, mesh)) return std::nullopt;
+  const std::size_t vertices = plan.method == Method::spread ? plan.working_vertices : mesh.vertex_count();
+  if (!rows_match(directory, plan.request.particles, vertices)) return std::nullopt;
   try {
     finished_row(plan.request.mesh_label, directory.filename().string(), report);  // every figure the summary reads
   } catch (const nlohmann::json::exception&) {

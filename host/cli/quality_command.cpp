@@ -25,16 +25,25 @@ struct QualityOptions {
   std::string potential = "exp";
   std::string geodesic = "fmm";
   bool json = false;
+  std::string refine = "auto";
   DistanceTableOptions table;
   DistanceStoreOptions store;
 };
 
+std::optional<unsigned> parse_refine(const std::string& refine) {
+  if (refine == "auto") return std::nullopt;
+  return unsigned(std::stoul(refine));  // the option's validator admits "auto" or 0..8
+}
+
 void run_quality(const QualityOptions& options) {
-  const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet, options.read);
+  const SurfaceMesh input = load_mesh(options.mesh, options.table.quiet, options.read);
   // Read before the distance table, so a bad file fails in a second.
   std::vector<std::vector<Vec3>> points;
   for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
   if (options.sigma) check_sigma_computable({parse_potential(options.potential), *options.sigma});
+  // Points between the input's vertices are measured where they lie on vertices.
+  const RefinedMesh measuring = measuring_mesh(input, points, parse_refine(options.refine));
+  const SurfaceMesh& mesh = measuring.mesh;
   const GeodesicMethod method = parse_method(options.geodesic);
   // A local store's cutoff scales with the spacing of the set with the fewest particles (the widest).
   std::size_t fewest = points.front().size();
@@ -58,7 +67,9 @@ void run_quality(const QualityOptions& options) {
     b_to_a = mean_distance_to_nearest(mesh, method, sets[1].snapped.positions, sets[0].snapped.positions);
   }
   if (options.json) {
-    nlohmann::json out = {{"mesh", options.mesh}};
+    nlohmann::json out = {{"mesh", options.mesh},
+                          {"refinement_levels", measuring.levels},
+                          {"measured_vertices", mesh.vertex_count()}};
     if (comparing) {
       out["a"] = measured_set_json(sets[0]);
       out["b"] = measured_set_json(sets[1]);
@@ -70,8 +81,13 @@ void run_quality(const QualityOptions& options) {
     std::cout << out.dump(2) << "\n";
     return;
   }
-  std::cout << "mesh " << options.mesh << " (" << mesh.vertex_count() << " vertices, mean edge "
-            << mesh.mean_edge_length() << "); geodesic distances, " << potential_name(potential) << " potential\n\n";
+  std::cout << "mesh " << options.mesh << " (" << input.vertex_count() << " vertices, mean edge "
+            << input.mean_edge_length() << "); geodesic distances, " << potential_name(potential) << " potential";
+  if (measuring.levels > 0) {
+    std::cout << "; measured on the mesh refined " << measuring.levels << " times (" << mesh.vertex_count()
+              << " vertices)";
+  }
+  std::cout << "\n\n";
   std::vector<const MeasuredSet*> columns;
   for (const auto& set : sets) columns.push_back(&set);
   std::cout << quality_table(columns);
@@ -90,6 +106,12 @@ void add_shared_options(CLI::App& command, QualityOptions& options) {
   add_strict_option(command, options.read);
   add_distance_store_options(command, options.store);
   add_distance_table_options(command, options.table);
+  command
+      .add_option("--refine", options.refine,
+                  "Midpoint rounds of the mesh the points are measured on: auto (the fewest that put every point "
+                  "within 0.5% of a spacing of a vertex) or 0 to 8")
+      ->check(CLI::IsMember({"auto", "0", "1", "2", "3", "4", "5", "6", "7", "8"}))
+      ->capture_default_str();
 }
 
 }  // namespace
@@ -98,7 +120,7 @@ void add_quality_command(CLI::App& app) {
   auto options = std::make_shared<QualityOptions>();
   CLI::App* quality = app.add_subcommand(
       "quality", "How evenly a particle file covers a mesh: nearest-neighbour distances, packing and covering radii, "
-                 "energy (points are snapped to the nearest vertex)");
+                 "energy (points are snapped to the nearest vertex of the mesh, refined where they lie between vertices)");
   quality->add_option("mesh", options->mesh, "Mesh file")->required();
   quality->add_option("particles", options->particle_files, "Particle file: one \"x y z\" per line (.particles)")
       ->required()

@@ -28,14 +28,25 @@ void print_summary(const RunResult& result, const nlohmann::json& report, const 
   const auto& params = report["params"];
   std::printf("mesh        %s (%zu vertices)\n", result.plan.request.mesh_label.c_str(),
               report["mesh"]["vertices"].get<std::size_t>());
-  std::printf("particles   %zu, %s on %s, scheme %s\n", result.plan.request.particles,
+  if (result.working) {
+    const auto& working = report["working_mesh"];
+    std::printf("particles   %zu, spread on a working mesh of %zu vertices (%u midpoint rounds)\n",
+                result.plan.request.particles, working["vertices"].get<std::size_t>(),
+                working["refinement_levels"].get<unsigned>());
+    std::printf("sweeps      %zu (%s)\n", report["iterations_run"].get<std::size_t>(),
+                report["stopped"].get<std::string>().c_str());
+    std::printf("time        %.3f ms/sweep", report["avg_iteration_ms"].get<double>());
+  } else {
+    std::printf("particles   %zu, %s on %s, scheme %s\n", result.plan.request.particles,
               params["backend"].get<std::string>().c_str(), report["device"].get<std::string>().c_str(),
               params["scheme"].get<std::string>().c_str());
-  std::printf("iterations  %zu (%s)\n", report["iterations_run"].get<std::size_t>(),
-              report["stopped"].get<std::string>().c_str());
-  std::printf("energy      %.6g -> %.6g\n", report["initial_energy"].get<double>(), report["final_energy"].get<double>());
-  std::printf("time        %.3f ms/iteration", report["avg_iteration_ms"].get<double>());
-  if (report.contains("avg_kernel_ms")) std::printf(" (update kernels %.3f ms)", report["avg_kernel_ms"].get<double>());
+    std::printf("iterations  %zu (%s)\n", report["iterations_run"].get<std::size_t>(),
+                report["stopped"].get<std::string>().c_str());
+    std::printf("energy      %.6g -> %.6g\n", report["initial_energy"].get<double>(),
+                report["final_energy"].get<double>());
+    std::printf("time        %.3f ms/iteration", report["avg_iteration_ms"].get<double>());
+    if (report.contains("avg_kernel_ms")) std::printf(" (update kernels %.3f ms)", report["avg_kernel_ms"].get<double>());
+  }
   std::printf("\nquality     %s", quality_line(result.quality).c_str());
   std::printf("\noutput      %s/{particles.particles, particles.csv, report.json, particles.ply, mesh_distance.vtk}\n",
               out.c_str());

@@ -10,6 +10,7 @@ RunRequest RunOptions::resolved_request() const {
   RunRequest resolved = request;
   if (!scheme.empty()) resolved.scheme = parse_scheme(scheme);
   resolved.init = parse_init(init);
+  if (!method.empty()) resolved.method = parse_method_option(method);
   resolved.potential = parse_potential(potential);
   if (!weights.empty()) resolved.backend.weights = parse_weight_format(weights);
   resolved.backend.tuning_file = tuning_file_or_default(tuning_file);
@@ -22,8 +23,15 @@ void add_run_options(CLI::App& command, RunOptions& options) {
   RunRequest& request = options.request;
   add_whole_number_option(command, "-n,--particles", request.particles, kParticleRange,
                           "Number of particles, at most the mesh's vertices");
+  command.add_option("--method", options.method,
+                     "spread: farthest-point optimization on the surface refined to enough vertices per particle, "
+                     "the evenest spacing (default); paper: the paper's energy and one-ring moves on the mesh's "
+                     "vertices (implied by --backend, --scheme, --colors, --weights, --rebuild-every, --wg, --tile "
+                     "or --init v0)")
+      ->check(CLI::IsMember({"spread", "paper"}));
   add_whole_number_option(command, "--iterations", request.max_iterations, kRunIterationRange,
-                          "Stop after this many iterations (or when none moves); 0 writes the start and its quality");
+                          "Stop after this many iterations (spread: sweeps), or when nothing moves; 0 writes the "
+                          "start and its quality");
   std::string backends_help;
   for (const BackendDescriptor* backend : backend_table()) {
     backends_help += (backends_help.empty() ? "" : "; ") + backend->name + ": " + backend->summary;

@@ -13,6 +13,7 @@ namespace meshparticles {
 struct RunOptions {
   MeshReadOptions read;
   RunRequest request;  // numbers go straight in; the words below are resolved by resolved_request
+  std::string method;  // default: spread, unless a paper-only option implies paper
   std::string scheme;  // default: the backend's
   std::string init = "farthest";
   std::string potential = "exp";

@@ -11,7 +11,8 @@ class EdgeDijkstra : public GeodesicSolver {
 
  protected:
   void march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-             double max_distance, std::span<const float> bound) const override;
+             double max_distance, std::span<const float> bound,
+             std::span<const std::uint32_t> origins = {}) const override;
 
  private:
   const SurfaceMesh& mesh_;

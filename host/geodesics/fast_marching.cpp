@@ -44,20 +44,22 @@ FastMarching::FastMarching(const SurfaceMesh& mesh)
       stencils_(build_triangle_stencils(mesh)) {}
 
 void FastMarching::march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                         double max_distance, std::span<const float> bound) const {
+                         double max_distance, std::span<const float> bound,
+                         std::span<const std::uint32_t> origins) const {
   // One source (every ball, every farthest sample): every distance comes
   // from it, and the per-vertex origin bookkeeping is skipped.
-  if (sources.size() == 1) {
-    march_from<true>(sources, distances, scratch, max_distance, bound);
+  if (sources.size() == 1 && origins.empty()) {
+    march_from<true>(sources, distances, scratch, max_distance, bound, origins);
   } else {
-    march_from<false>(sources, distances, scratch, max_distance, bound);
+    march_from<false>(sources, distances, scratch, max_distance, bound, origins);
   }
 }
 
 template <bool kOneSource>
 void FastMarching::march_from(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                              double max_distance, std::span<const float> bound) const {
-  ShortestFirstQueue queue(sources, distances, scratch, max_distance, bound);
+                              double max_distance, std::span<const float> bound,
+                              std::span<const std::uint32_t> origins) const {
+  ShortestFirstQueue queue(sources, distances, scratch, max_distance, bound, !origins.empty());
   const auto& offsets = mesh_.ring_offsets();
   const auto& neighbors = mesh_.ring_neighbors();
   const auto& triangles = stencils_.triangles;
@@ -69,7 +71,7 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
   // (Read only for accepted vertices, each of which was set when lowered.)
   std::vector<std::uint32_t>& origin = scratch.origin;
   if constexpr (!kOneSource) {
-    for (std::uint32_t k = 0; k < sources.size(); ++k) origin[sources[k]] = k;
+    for (std::uint32_t k = 0; k < sources.size(); ++k) origin[sources[k]] = origins.empty() ? k : origins[k];
   }
   const auto same_origin = [&](VertexId a, VertexId b) { return kOneSource || origin[a] == origin[b]; };
   // Vertices lowered while processing one accepted vertex, queued once each

@@ -17,12 +17,13 @@ class FastMarching : public GeodesicSolver {
 
  protected:
   void march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-             double max_distance, std::span<const float> bound) const override;
+             double max_distance, std::span<const float> bound,
+             std::span<const std::uint32_t> origins = {}) const override;
 
  private:
   template <bool kOneSource>
   void march_from(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                  double max_distance, std::span<const float> bound) const;
+                  double max_distance, std::span<const float> bound, std::span<const std::uint32_t> origins) const;
 
   const SurfaceMesh& mesh_;
   std::vector<float> edge_lengths_;  // parallel to mesh.ring_neighbors()

@@ -127,6 +127,30 @@ void GeodesicSolver::lower_nearest(VertexId source, std::span<float> nearest, So
   scratch.touched.clear();
 }
 
+void GeodesicSolver::lower_nearest_from(std::span<const VertexId> rim, std::span<const std::uint32_t> rim_sources,
+                                        std::span<float> nearest, SolverScratch& scratch,
+                                        std::vector<VertexId>& lowered,
+                                        std::vector<std::uint32_t>& lowered_sources) const {
+  scratch.fit(vertex_count_);
+  for (const VertexId v : rim) {
+    scratch.distances[v] = nearest[v];
+    scratch.touched.push_back(v);
+  }
+  march(rim, scratch.distances, scratch, kNoDistanceLimit, nearest, rim_sources);
+  lowered.clear();
+  lowered_sources.clear();
+  for (const VertexId v : scratch.touched) {
+    if (scratch.accepted[v] && float(scratch.distances[v]) < nearest[v]) {
+      nearest[v] = float(scratch.distances[v]);
+      lowered.push_back(v);
+      lowered_sources.push_back(scratch.origin[v]);
+    }
+    scratch.distances[v] = std::numeric_limits<double>::infinity();
+    scratch.accepted[v] = 0;
+  }
+  scratch.touched.clear();
+}
+
 std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {
   if (method == GeodesicMethod::dijkstra) return std::make_unique<EdgeDijkstra>(mesh);
   return std::make_unique<FastMarching>(mesh);

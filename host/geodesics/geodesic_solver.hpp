@@ -30,7 +30,7 @@ struct SolverScratch {
   std::vector<std::uint64_t> heap;      // see shortest_first_queue.hpp
   std::vector<std::uint32_t> heap_slot;  // per vertex: its index in heap, or kNotQueued
   std::vector<unsigned char> accepted;  // per vertex
-  std::vector<std::uint32_t> origin;    // per vertex: the source its distance comes from (fast marching)
+  std::vector<std::uint32_t> origin;    // per vertex: the source its distance comes from (several sources)
   std::vector<VertexId> touched;        // the vertices the solve in progress gave a distance
   std::vector<VertexId> lowered;        // fast marching: those lowered by the vertex just accepted
   std::vector<double> distances;        // per vertex: the buffer of ball solves
@@ -79,6 +79,17 @@ class GeodesicSolver {
   void lower_nearest(VertexId source, std::span<float> nearest, SolverScratch& scratch,
                      std::vector<VertexId>& lowered) const;
 
+  // Lowers nearest[v] wherever a march from the `rim` vertices finds it
+  // shorter, each rim vertex starting at its own nearest[] and measuring
+  // from the source `rim_sources[k]` it belongs to: what fills in a region
+  // whose source was taken away (its nearest[] set to +inf) from the sources
+  // around it, at a cost in proportion to the region. `lowered`: the
+  // vertices whose nearest[] dropped; `lowered_sources`: parallel, the
+  // source each now belongs to.
+  void lower_nearest_from(std::span<const VertexId> rim, std::span<const std::uint32_t> rim_sources,
+                          std::span<float> nearest, SolverScratch& scratch, std::vector<VertexId>& lowered,
+                          std::vector<std::uint32_t>& lowered_sources) const;
+
  protected:
   explicit GeodesicSolver(std::size_t vertex_count) : vertex_count_(vertex_count) {}
 
@@ -86,9 +97,13 @@ class GeodesicSolver {
   // accepted, giving no vertex a distance of `bound[v]` or more (no bound
   // when empty). Expects `distances` +inf and the scratch clean wherever
   // the march goes; appends every vertex it gives a distance to
-  // scratch.touched.
+  // scratch.touched. Each vertex reached records in scratch.origin the
+  // source it measures from: sources[k] is origin k, or origins[k] when
+  // `origins` is given - and then each source starts at the distance it
+  // already has in `distances` (noted in scratch.touched), not at 0.
   virtual void march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                     double max_distance, std::span<const float> bound) const = 0;
+                     double max_distance, std::span<const float> bound,
+                     std::span<const std::uint32_t> origins = {}) const = 0;
 
  private:
   std::size_t vertex_count_;

@@ -18,14 +18,15 @@ namespace meshparticles {
 
 class ShortestFirstQueue {
  public:
-  // Queues the sources at distance 0. Expects every distance +inf, no
-  // vertex accepted and none queued where the march goes
-  // (GeodesicSolver::march); records each vertex given a distance in
-  // scratch.touched. Vertices farther than `max_distance` are never
-  // accepted, and none is given a distance of `bound[v]` or more (no bound
-  // when empty).
+  // Queues the sources at distance 0, or at the distances they already
+  // have when `at_given_distances` (the caller noted them in
+  // scratch.touched). Expects every other distance +inf, no vertex accepted
+  // and none queued where the march goes (GeodesicSolver::march); records
+  // each vertex given a distance in scratch.touched. Vertices farther than
+  // `max_distance` are never accepted, and none is given a distance of
+  // `bound[v]` or more (no bound when empty).
   ShortestFirstQueue(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
-                     double max_distance, std::span<const float> bound)
+                     double max_distance, std::span<const float> bound, bool at_given_distances = false)
       : distances_(distances),
         heap_(scratch.heap),
         slot_(scratch.heap_slot),
@@ -35,8 +36,10 @@ class ShortestFirstQueue {
         bound_(bound) {
     heap_.clear();
     for (const VertexId source : sources) {
-      if (distances_[source] != 0.0) touched_.push_back(source);
-      distances_[source] = 0.0;
+      if (!at_given_distances) {
+        if (distances_[source] != 0.0) touched_.push_back(source);
+        distances_[source] = 0.0;
+      }
       requeue(source);
     }
   }

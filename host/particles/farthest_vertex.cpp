@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdint>
 #include <cstring>
 
 namespace meshparticles {
@@ -42,6 +43,20 @@ void FarthestVertex::refresh_block(std::size_t block) {
 void FarthestVertex::take(VertexId v) {
   taken_[v] = 1;
   refresh_block(v / kBlock);
+}
+
+void FarthestVertex::release(VertexId v) {
+  taken_[v] = 0;
+  refresh_block(v / kBlock);
+}
+
+void FarthestVertex::changed(std::span<const VertexId> vertices) {
+  std::size_t last_block = SIZE_MAX;  // a region lists neighbours together: skip repeats of a block
+  for (const VertexId v : vertices) {
+    if (v / kBlock == last_block) continue;
+    last_block = v / kBlock;
+    refresh_block(last_block);
+  }
 }
 
 void FarthestVertex::lowered(std::span<const VertexId> vertices) {

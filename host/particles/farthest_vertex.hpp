@@ -1,13 +1,15 @@
 #pragma once
 // Farthest point sampling's question, answered as the samples come: which
 // vertex not yet taken is farthest from every sample so far (ties: the
-// smaller id)? The distances only ever drop, a region at a time, as each
-// new sample lowers those nearer to it than to any earlier one.
+// smaller id)? In the start the distances only drop, a region at a time, as
+// each new sample lowers those nearer to it than to any earlier one; when a
+// sample is taken away (farthest-point optimization) its region's rise.
 //
 // A tree of maxima over blocks of 64 vertices; the answer is its root. A
 // lowered vertex that held its block's maximum rescans the block
 // (sequential memory) and mends the path above it, which stops where a
-// maximum does not change; any other lowered vertex changes nothing.
+// maximum does not change; any other lowered vertex changes nothing. A
+// vertex whose distance may have risen always rescans its block.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -24,7 +26,9 @@ class FarthestVertex {
   explicit FarthestVertex(std::span<const float> nearest);
 
   void take(VertexId v);                            // a sample now: never the answer again
+  void release(VertexId v);                         // no longer a sample
   void lowered(std::span<const VertexId> vertices);  // their `nearest` dropped
+  void changed(std::span<const VertexId> vertices);  // their `nearest` changed either way
   std::optional<VertexId> farthest() const;         // none once every vertex is taken
 
  private:

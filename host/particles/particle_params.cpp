@@ -27,6 +27,14 @@ Init parse_init(const std::string& name) {
   throw UserError("unknown start '" + name + "' (choose v0, random or farthest)");
 }
 
+Method parse_method_option(const std::string& name) {
+  if (name == "spread") return Method::spread;
+  if (name == "paper") return Method::paper;
+  throw UserError("unknown method '" + name + "' (choose spread or paper)");
+}
+
+std::string method_option_name(Method method) { return method == Method::spread ? "spread" : "paper"; }
+
 WeightFormat parse_weight_format(const std::string& name) {
   if (name == "float") return WeightFormat::float32;
   if (name == "half") return WeightFormat::half;

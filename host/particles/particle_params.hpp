@@ -12,12 +12,20 @@ enum class Potential { exp, gauss };
 // them in particles/scheme_step.hpp.
 enum class Scheme { sequential, synchronous, colored, monotone };
 enum class Init { v0, random, farthest };
+// What a run optimizes (docs/ALGORITHM.md): `spread`, the default, moves
+// each particle to the largest gap between the others (farthest-point
+// optimization) on the input refined until there are enough vertices per
+// particle; `paper`, the paper's energy, sigma rule and one-ring moves on
+// the input's vertices, on any backend.
+enum class Method { spread, paper };
 // How the field backends store the weight table W = w(d).
 enum class WeightFormat { float32, half };
 
 Potential parse_potential(const std::string& name);
 Scheme parse_scheme(const std::string& name);
 Init parse_init(const std::string& name);
+Method parse_method_option(const std::string& name);  // "spread" | "paper"
+std::string method_option_name(Method method);
 std::string potential_name(Potential potential);
 std::string scheme_name(Scheme scheme);
 std::string init_name(Init init);

@@ -18,6 +18,51 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The first option given that only the paper's method takes; none if none.
+std::optional<std::string> paper_only_option(const RunRequest& request) {
+  if (!request.backend.name.empty()) return "--backend";
+  if (request.scheme) return "--scheme";
+  if (request.colors) return "--colors";
+  if (request.backend.weights) return "--weights";
+  if (request.backend.rebuild_every) return "--rebuild-every";
+  if (request.backend.work_group_size) return "--wg";
+  if (request.backend.tile_size) return "--tile";
+  if (request.init == Init::v0) return "--init v0";
+  return std::nullopt;
+}
+
+// The fewest midpoint rounds that give kSpreadVerticesPerParticle vertices
+// per particle, short of passing kSpreadMaxWorkingVertices.
+unsigned spread_refinement_levels(const SurfaceMesh& mesh, std::size_t particles) {
+  unsigned levels = 0;
+  while (double(refined_vertex_count(mesh, levels)) < kSpreadVerticesPerParticle * double(particles) &&
+         refined_vertex_count(mesh, levels + 1) <= kSpreadMaxWorkingVertices) {
+    ++levels;
+  }
+  return levels;
+}
+
+// spread reads distances only to measure the result: local balls around
+// the particles, unless the dense table is asked for.
+DistancesRequest spread_distances(const DistancesRequest& request) {
+  DistancesRequest spread = request;
+  if (spread.kind == StoreKind::automatic) spread.kind = StoreKind::local;
+  if (spread.cutoff == kDefaultCutoff) spread.cutoff = kSpreadQualityCutoff;
+  return spread;
+}
+
+void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
+  const RunRequest& request = plan.request;
+  if (const auto option = paper_only_option(request)) {
+    throw UserError(*option + " applies to --method paper");
+  }
+  plan.refinement_levels = spread_refinement_levels(mesh, request.particles);
+  plan.working_vertices = refined_vertex_count(mesh, plan.refinement_levels);
+  // Checked on the input now (the same area, so the same radius); planned
+  // again on the working mesh once it is built.
+  plan.distances = plan_distances(mesh, spread_distances(request.distances), request.particles, false);
+}
+
 }  // namespace
 
 RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
@@ -28,6 +73,31 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   if (request.particles > mesh.vertex_count()) {
     throw UserError("-n " + std::to_string(request.particles) + " is more particles than the " +
                     std::to_string(mesh.vertex_count()) + " vertices of " + request.mesh_label);
+  }
+  if (request.method) {
+    plan.method = *request.method;
+    plan.method_from = "--method";
+  } else if (const auto option = paper_only_option(request)) {
+    plan.method = Method::paper;
+    plan.method_from = *option + " implies paper";
+  } else {
+    plan.method = Method::spread;
+    plan.method_from = "default";
+  }
+  if (request.start_vertex && request.init == Init::random) {
+    throw UserError("--start-vertex applies to --init v0 and farthest, not random");
+  }
+  plan.placement = {request.init, request.particles, request.seed, std::nullopt,
+                    request.distances.geodesics.method};
+  if (request.start_vertex) {
+    plan.placement.start_vertex = surface_vertex_for_option(mesh, *request.start_vertex, "--start-vertex");
+  }
+  plan.energy = {request.potential,
+                 request.sigma.value_or(default_sigma(request.potential, mesh.area(), request.particles))};
+  check_sigma_computable(plan.energy);
+  if (plan.method == Method::spread) {
+    plan_spread(mesh, plan);
+    return plan;
   }
   // The default backend follows the store: the device's field method on a
   // table, its serial twin on local balls (the device streams table rows).
@@ -48,21 +118,10 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
     throw UserError("--colors applies to --scheme colored and monotone, not " + scheme_name(plan.scheme));
   }
   plan.colors = request.colors.value_or(kDefaultColors);
-  if (request.start_vertex && request.init == Init::random) {
-    throw UserError("--start-vertex applies to --init v0 and farthest, not random");
-  }
-  plan.placement = {request.init, request.particles, request.seed, std::nullopt,
-                    request.distances.geodesics.method};
-  if (request.start_vertex) {
-    plan.placement.start_vertex = surface_vertex_for_option(mesh, *request.start_vertex, "--start-vertex");
-  }
   plan.backend = check_backend(backend, mesh, request.particles, plan.distances.kind == StoreKind::dense);
   if (plan.backend.device && plan.distances.kind == StoreKind::local) {  // field on balls: before any is computed
     check_local_field_device(*plan.backend.device, estimated_ball_bytes(mesh, plan.distances.radius, request.particles));
   }
-  plan.energy = {request.potential,
-                 request.sigma.value_or(default_sigma(request.potential, mesh.area(), request.particles))};
-  check_sigma_computable(plan.energy);
   const auto sigma_warning = degenerate_sigma_warning(plan.energy, hexagonal_spacing(mesh.area(), request.particles));
   if (sigma_warning && !request.quiet) std::cerr << "meshparticles: warning: " << *sigma_warning << "\n";
   if (plan.backend.tuning_refused && !request.quiet) {
@@ -71,7 +130,56 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   return plan;
 }
 
+namespace {
+
+// spread: the start and farthest-point optimization on the working mesh,
+// then the quality there, through a store planned for that mesh.
+RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
+  RunResult result;
+  result.plan = plan;
+  result.device = "serial";
+  const RunRequest& request = plan.request;
+  const auto particles_started = std::chrono::steady_clock::now();
+  auto working = std::make_shared<RefinedMesh>(refine_by_midpoints(mesh, plan.refinement_levels));
+  result.working = working;
+  const SurfaceMesh& surface = working->mesh;
+  // The input's vertices keep their ids on the working mesh.
+  result.start = place_particles(surface, plan.placement, request.quiet);
+  const auto solver = make_geodesic_solver(surface, request.distances.geodesics.method);
+  const double min_gain = kSpreadMinGain * hexagonal_spacing(mesh.area(), request.particles);
+  SpreadOutcome spread =
+      optimize_farthest_points(surface, *solver, result.start, request.max_iterations, min_gain, request.quiet);
+  result.sweeps = std::move(spread.sweeps);
+  result.outcome.positions = std::move(spread.positions);
+  result.outcome.converged = spread.converged;
+  result.cycled = spread.cycled;
+  result.seconds.particles = seconds_since(particles_started);
+
+  const auto geodesics_started = std::chrono::steady_clock::now();
+  result.plan.distances = plan_distances(surface, spread_distances(request.distances), request.particles, false);
+  const ObtainedDistances distances = obtain_distances(surface, request.distances.geodesics, result.plan.distances);
+  result.distances.kind = distances.kind;
+  result.distances.table_source = distances.source;
+  result.seconds.geodesics = seconds_since(geodesics_started);
+  const auto quality_started = std::chrono::steady_clock::now();
+  result.distance_to_nearest =
+      distance_to_nearest_particle(surface, request.distances.geodesics.method, result.outcome.positions);
+  result.quality = measure_quality(surface, *distances.store, result.outcome.positions, plan.energy,
+                                   result.distance_to_nearest, request.quiet);
+  result.seconds.quality = seconds_since(quality_started);
+  if (const LocalDistances* balls = distances.store->local_balls()) {
+    result.distances.balls = balls->statistics();
+    // The balls are solved inside the quality step: count them there, not twice.
+  }
+  result.seconds.total = result.seconds.particles + result.seconds.geodesics + result.seconds.quality;
+  return result;
+}
+
+}  // namespace
+
 RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const DistanceStore& distances) {
+  // spread measures on its own mesh: a store of the input does not serve it.
+  if (plan.method == Method::spread) return execute_spread(mesh, plan);
   RunResult result;
   result.plan = plan;
   const auto particles_started = std::chrono::steady_clock::now();
@@ -95,6 +203,7 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
 }
 
 RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan) {
+  if (plan.method == Method::spread) return execute_spread(mesh, plan);
   const ObtainedDistances distances = obtain_distances(mesh, plan.request.distances.geodesics, plan.distances);
   RunResult result = execute_run(mesh, plan, *distances.store);
   result.distances.kind = distances.kind;

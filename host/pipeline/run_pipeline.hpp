@@ -9,22 +9,50 @@
 // the request against the mesh, the device and the memory; execute_run does
 // the work.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "backends/backend_factory.hpp"
+#include "mesh/midpoint_refinement.hpp"
 #include "pipeline/distances.hpp"
+#include "particles/farthest_point_optimization.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
 #include "quality/distribution_quality.hpp"
 
 namespace meshparticles {
 
+// spread: the working mesh has at least this many vertices per particle
+// (the input refined by midpoints until it does): a particle can then land
+// within a fifth of a spacing of anywhere. Measured: docs/ALGORITHM.md.
+inline constexpr double kSpreadVerticesPerParticle = 24;
+// spread measures its result through balls of this many hexagonal spacings
+// (unless --cutoff says otherwise): every nearest neighbour lies well within
+// it, and balls of 7 cost five times as much. The energy it reports leaves
+// out the pairs beyond (about 5% of the sum at the default sigma).
+inline constexpr double kSpreadQualityCutoff = 3.0;
+// spread: a particle moves only to gain more than this many hexagonal
+// spacings of distance to its nearest (below it, fast marching's noise).
+inline constexpr double kSpreadMinGain = 1e-3;
+// ... unless that would pass this many vertices (memory and time grow with it).
+inline constexpr std::size_t kSpreadMaxWorkingVertices = 2'000'000;
+
 struct RunRequest {
   std::string mesh_label;  // names the mesh in messages and reports: its path
   std::size_t particles = 1024;
+  // Absent: spread, unless an option only the paper's method takes is given
+  // (--backend, --scheme, --colors, --weights, --rebuild-every, --wg,
+  // --tile, --init v0), which implies paper.
+  std::optional<Method> method;
+  // paper: iterations; spread: sweeps. Both stop early when nothing moves.
   std::size_t max_iterations = kDefaultMaxIterations;  // 0: the start alone, measured
-  BackendRequest backend;  // name empty: the default for the store (field on a table, serial-field on balls)
+  // Name empty: the default for the store (field on a table, serial-field on balls).
+  BackendRequest backend = [] {
+    BackendRequest unnamed;
+    unnamed.name.clear();
+    return unnamed;
+  }();
   std::optional<Scheme> scheme;    // default: the backend's
   std::optional<unsigned> colors;  // colored only; default kDefaultColors
   Init init = Init::farthest;
@@ -39,12 +67,17 @@ struct RunRequest {
 // A request checked against one mesh, with every default resolved.
 struct RunPlan {
   RunRequest request;
+  Method method = Method::spread;
+  std::string method_from;     // "--method", "default", or the option that implies paper
+  unsigned refinement_levels = 0;  // spread: midpoint rounds of the working mesh
+  std::size_t working_vertices = 0;  // spread: the working mesh's vertices
   Scheme scheme = Scheme::colored;
   unsigned colors = kDefaultColors;
   EnergyParams energy;
-  CheckedBackend backend;
+  CheckedBackend backend;      // paper only
   std::string backend_from;    // "--backend", or why the default is what it is
-  DistancesPlan distances;     // the store decided, and its radius when local
+  DistancesPlan distances;     // paper: the store decided, and its radius when local; spread: decided
+                               // for the working mesh when it is built (it reads distances for quality only)
   PlacementRequest placement;  // start_vertex as a surface vertex
 };
 
@@ -64,8 +97,15 @@ struct RunResult {
   RunPlan plan;
   std::string device;      // "serial" or the OpenCL device's name
   DistancesUsed distances;
+  // spread: the mesh the particles live on, the input refined; positions,
+  // start and distance_to_nearest are on it. Null for paper (the input).
+  std::shared_ptr<const RefinedMesh> working;
+  std::vector<SweepRecord> sweeps;  // spread
+  bool cycled = false;              // spread: stopped on positions met before (SpreadOutcome)
   std::vector<VertexId> start;
-  RunOutcome outcome;      // the trace and the final positions
+  RunOutcome outcome;      // the trace (paper) and the final positions
+
+  const SurfaceMesh& particle_mesh(const SurfaceMesh& input) const { return working ? working->mesh : input; }
   std::vector<float> distance_to_nearest;  // per vertex, to the nearest final particle
   DistributionQuality quality;
   RunTimes seconds;

@@ -1,7 +1,25 @@
 #include "quality/particle_sets.hpp"
 
+#include <algorithm>
 
 namespace meshparticles {
+
+RefinedMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vector<Vec3>>& sets,
+                           std::optional<unsigned> levels) {
+  if (levels) return refine_by_midpoints(mesh, *levels);
+  std::size_t fewest = mesh.vertex_count();
+  for (const auto& set : sets) fewest = std::min(fewest, set.size());
+  const double tolerance = kOnVertex * hexagonal_spacing(mesh.area(), std::max<std::size_t>(fewest, 1));
+  const double most = std::min(double(kMeasuringMaxVertices),
+                               std::max(double(mesh.vertex_count()), kMeasuringVerticesPerParticle * double(fewest)));
+  for (unsigned level = 0;; ++level) {
+    RefinedMesh refined = refine_by_midpoints(mesh, level);
+    const bool on_vertices = std::all_of(sets.begin(), sets.end(), [&](const std::vector<Vec3>& set) {
+      return snap_to_vertices(refined.mesh, set).largest_snap <= tolerance;
+    });
+    if (on_vertices || double(refined_vertex_count(mesh, level + 1)) > most) return refined;
+  }
+}
 
 MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceStore& distances, GeodesicMethod method,
                                   const std::string& path, const std::vector<Vec3>& points, Potential potential,

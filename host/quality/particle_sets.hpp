@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/midpoint_refinement.hpp"
 #include "particles/particle_file.hpp"
 #include "quality/distribution_quality.hpp"
 
@@ -16,6 +17,20 @@ struct MeasuredSet {
   EnergyParams energy;  // sigma: --sigma, else the default rule for this set's n
   DistributionQuality quality;
 };
+
+// Points between vertices (a spread run's, or another tool's on the
+// surface) are measured on the mesh refined by midpoints, where they lie on
+// vertices or close to them: `levels` rounds when given, else the fewest at
+// which every point of every set lies within kOnVertex hexagonal spacings
+// of a vertex (a nearest-neighbour distance then moves by at most twice
+// that by snapping), stopping short of kMeasuringVerticesPerParticle
+// vertices per particle of the smallest set (and of
+// kMeasuringMaxVertices). Round 0 is the mesh itself.
+inline constexpr double kOnVertex = 0.005;
+inline constexpr double kMeasuringVerticesPerParticle = 100;
+inline constexpr std::size_t kMeasuringMaxVertices = 2'000'000;
+RefinedMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vector<Vec3>>& sets,
+                           std::optional<unsigned> levels);
 
 // `points`: read_particle_points(path), read by the caller before the
 // distances so that a bad file fails fast.

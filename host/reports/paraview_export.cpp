@@ -7,17 +7,16 @@
 
 namespace meshparticles {
 
-void write_particles_ply(const std::filesystem::path& file, const SurfaceMesh& mesh,
-                         std::span<const VertexId> positions) {
+void write_particles_ply(const std::filesystem::path& file, std::span<const Vec3> points,
+                         std::span<const VertexId> input_vertices) {
   write_file_atomically(file, [&](std::ostream& out) {
-    out << "ply\nformat ascii 1.0\ncomment meshparticles particles\nelement vertex " << positions.size()
+    out << "ply\nformat ascii 1.0\ncomment meshparticles particles\nelement vertex " << points.size()
         << "\nproperty float x\nproperty float y\nproperty float z\nproperty int particle\nproperty int vertex\n"
            "end_header\n";
     char line[128];
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-      const Vec3& p = mesh.positions()[positions[i]];
-      std::snprintf(line, sizeof line, "%.9g %.9g %.9g %zu %u\n", p.x, p.y, p.z, i,
-                    unsigned(mesh.input_id(positions[i])));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Vec3& p = points[i];
+      std::snprintf(line, sizeof line, "%.9g %.9g %.9g %zu %u\n", p.x, p.y, p.z, i, unsigned(input_vertices[i]));
       out << line;
     }
   });

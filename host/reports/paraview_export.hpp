@@ -10,9 +10,9 @@
 
 namespace meshparticles {
 
-// One vertex element per particle, with its index and mesh vertex (input id).
-void write_particles_ply(const std::filesystem::path& file, const SurfaceMesh& mesh,
-                         std::span<const VertexId> positions);
+// One vertex element per particle: its point, index and nearest input vertex (file id).
+void write_particles_ply(const std::filesystem::path& file, std::span<const Vec3> points,
+                         std::span<const VertexId> input_vertices);
 
 // The mesh's triangles with `values[v]` at each vertex, named `name`
 // (infinite values, e.g. a component without particles, are written as -1).

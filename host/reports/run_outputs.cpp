@@ -5,27 +5,28 @@
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
 #include "reports/paraview_export.hpp"
+#include "reports/particle_locations.hpp"
 
 namespace meshparticles {
 
 namespace {
 
-void write_points(std::ostream& out, const SurfaceMesh& mesh, const std::vector<VertexId>& positions) {
+void write_points(std::ostream& out, const std::vector<ParticleLocation>& locations) {
   char line[96];
-  for (const VertexId v : positions) {
-    const Vec3& p = mesh.positions()[v];
-    std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", p.x, p.y, p.z);
+  for (const ParticleLocation& location : locations) {
+    std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", location.at.x, location.at.y, location.at.z);
     out << line;
   }
 }
 
-void write_csv(std::ostream& out, const SurfaceMesh& mesh, const std::vector<VertexId>& positions) {
-  out << "particle,vertex,x,y,z\n";
-  char line[128];
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Vec3& p = mesh.positions()[positions[i]];
-    std::snprintf(line, sizeof line, "%zu,%u,%.9g,%.9g,%.9g\n", i, unsigned(mesh.input_id(positions[i])), p.x, p.y,
-                  p.z);
+void write_csv(std::ostream& out, const std::vector<ParticleLocation>& locations) {
+  out << kParticlesCsvHeader << "\n";
+  char line[320];
+  for (std::size_t i = 0; i < locations.size(); ++i) {
+    const ParticleLocation& l = locations[i];
+    std::snprintf(line, sizeof line, "%zu,%u,%.9g,%.9g,%.9g,%u,%u,%u,%.17g,%.17g,%.17g\n", i, unsigned(l.input_vertex),
+                  l.at.x, l.at.y, l.at.z, unsigned(l.corners[0]), unsigned(l.corners[1]), unsigned(l.corners[2]),
+                  l.weights[0], l.weights[1], l.weights[2]);
     out << line;
   }
 }
@@ -38,12 +39,19 @@ void prepare_output_directory(const std::filesystem::path& directory) {
 
 void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh, const RunResult& result,
                        const nlohmann::json& report) {
-  const std::vector<VertexId>& positions = result.outcome.positions;
+  const std::vector<ParticleLocation> locations = particle_locations(mesh, result);
+  std::vector<Vec3> points;
+  std::vector<VertexId> input_vertices;
+  for (const ParticleLocation& location : locations) {
+    points.push_back(location.at);
+    input_vertices.push_back(location.input_vertex);
+  }
   write_directory_atomically(directory, kRunOutputFiles, [&](const std::filesystem::path& staging) {
-    write_new_file(staging / "particles.particles", [&](std::ostream& out) { write_points(out, mesh, positions); });
-    write_new_file(staging / "particles.csv", [&](std::ostream& out) { write_csv(out, mesh, positions); });
-    write_particles_ply(staging / "particles.ply", mesh, positions);
-    write_mesh_field_vtk(staging / "mesh_distance.vtk", mesh, result.distance_to_nearest,
+    write_new_file(staging / "particles.particles", [&](std::ostream& out) { write_points(out, locations); });
+    write_new_file(staging / "particles.csv", [&](std::ostream& out) { write_csv(out, locations); });
+    write_particles_ply(staging / "particles.ply", points, input_vertices);
+    // On the mesh the particles moved on: for spread, the refined input.
+    write_mesh_field_vtk(staging / "mesh_distance.vtk", result.particle_mesh(mesh), result.distance_to_nearest,
                          "distance_to_nearest_particle");
     write_new_file(staging / "report.json", [&](std::ostream& out) { out << report.dump(2) << "\n"; });
   });

@@ -2,10 +2,12 @@
 // What `meshparticles run` leaves in its output directory, written as one
 // set (common/atomic_directory.hpp: the old set or the new one, never a
 // mix): particles.particles (ShapeWorks: one "x y z" per line),
-// particles.csv (particle,vertex,x,y,z with input vertex ids), report.json
-// (mesh, parameters, device, trace, timings, quality), and for ParaView
-// particles.ply (point cloud) and mesh_distance.vtk (the mesh with the
-// distance from each vertex to its nearest particle).
+// particles.csv (kParticlesCsvHeader: the nearest input vertex, the point,
+// and a triangle of the input with barycentric weights; ids as in the
+// file), report.json (mesh, parameters, device, trace, timings, quality),
+// and for ParaView particles.ply (point cloud) and mesh_distance.vtk (the
+// mesh the particles moved on, with the distance from each vertex to its
+// nearest particle).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -19,6 +21,9 @@ namespace meshparticles {
 // The names of the files of one run: an output directory holds these and nothing else.
 inline const std::set<std::string> kRunOutputFiles = {"particles.particles", "particles.csv", "particles.ply",
                                                       "mesh_distance.vtk", "report.json"};
+
+inline constexpr const char* kParticlesCsvHeader =
+    "particle,vertex,x,y,z,corner_a,corner_b,corner_c,weight_a,weight_b,weight_c";
 
 // Throws UserError, before the work, when `directory` could not be replaced
 // by a run's files: its parent cannot be written, or it holds files that a

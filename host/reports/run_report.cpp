@@ -16,7 +16,26 @@ double mean(const std::vector<IterationRecord>& trace, double IterationRecord::*
 
 nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& out) {
   const RunRequest& request = plan.request;
+  if (plan.method == Method::spread) {
+    nlohmann::json params = {{"n", request.particles},
+                             {"method", method_option_name(plan.method)},
+                             {"method_from", plan.method_from},
+                             {"sweeps", request.max_iterations},
+                             {"refinement_levels", plan.refinement_levels},
+                             {"working_vertices", plan.working_vertices},
+                             {"init", init_name(request.init)},
+                             {"seed", request.seed},
+                             {"sigma", plan.energy.sigma},
+                             {"sigma_from", request.sigma ? "--sigma" : "default rule"},
+                             {"potential", potential_name(plan.energy.potential)},
+                             {"geodesic", method_name(request.distances.geodesics.method)},
+                             {"out", out.string()}};
+    if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
+    return params;
+  }
   nlohmann::json params = {{"n", request.particles},
+                           {"method", method_option_name(plan.method)},
+                           {"method_from", plan.method_from},
                            {"iterations", request.max_iterations},
                            {"backend", plan.backend.name()},
                            {"backend_from", plan.backend_from},
@@ -67,10 +86,62 @@ nlohmann::json distances_json(const RunResult& result) {
   return distances;
 }
 
+
+nlohmann::json mesh_json(const SurfaceMesh& mesh, const RunResult& result,
+                         const std::optional<std::string>& mesh_sha256) {
+  return {{"path", result.plan.request.mesh_label},
+          {"vertices", mesh.vertex_count()},
+          {"faces", mesh.triangle_count()},
+          {"area", mesh.area()},
+          {"sha256", mesh_sha256 ? nlohmann::json(*mesh_sha256) : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json seconds_json(const RunTimes& seconds) {
+  return {{"geodesics", seconds.geodesics},
+          {"particles", seconds.particles},
+          {"quality", seconds.quality},
+          {"total", seconds.total}};
+}
+
+// spread: the sweeps of farthest-point optimization in place of the
+// energy trace, and the working mesh.
+nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
+                             const std::optional<std::string>& mesh_sha256) {
+  const double d_hex = result.quality.d_hex;
+  nlohmann::json sweeps = nlohmann::json::array();
+  double ms_sum = 0;
+  for (const SweepRecord& sweep : result.sweeps) {
+    sweeps.push_back({{"moved", sweep.moved},
+                      {"ms", sweep.ms},
+                      {"min_spacing", sweep.min_spacing / d_hex},
+                      {"mean_spacing", sweep.mean_spacing / d_hex}});
+    ms_sum += sweep.ms;
+  }
+  const SurfaceMesh& working = result.working->mesh;
+  nlohmann::json report = {
+      {"mesh", mesh_json(mesh, result, mesh_sha256)},
+      {"working_mesh", {{"refinement_levels", result.working->levels},
+                        {"vertices", working.vertex_count()},
+                        {"faces", working.triangle_count()},
+                        {"vertices_per_particle", double(working.vertex_count()) / double(result.plan.request.particles)}}},
+      {"params", run_parameters(result.plan, out)},
+      {"device", result.device},
+      {"distances", distances_json(result)},
+      {"iterations_run", result.sweeps.size()},
+      {"stopped", result.outcome.converged ? "converged" : result.cycled ? "cycle" : "max_iterations"},
+      {"final_energy", result.quality.energy},
+      {"avg_iteration_ms", result.sweeps.empty() ? 0.0 : ms_sum / double(result.sweeps.size())},
+      {"sweeps", sweeps}};
+  report["quality"] = quality_json(result.quality);
+  report["seconds"] = seconds_json(result.seconds);
+  return report;
+}
+
 }  // namespace
 
 nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
                           const std::optional<std::string>& mesh_sha256) {
+  if (result.working) return spread_report(mesh, result, out, mesh_sha256);
   const RunOutcome& outcome = result.outcome;
   nlohmann::json trace = nlohmann::json::array();
   bool has_kernel_times = false;
@@ -88,11 +159,7 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
     trace.push_back(entry);
   }
   nlohmann::json report = {
-      {"mesh", {{"path", result.plan.request.mesh_label},
-                {"vertices", mesh.vertex_count()},
-                {"faces", mesh.triangle_count()},
-                {"area", mesh.area()},
-                {"sha256", mesh_sha256 ? nlohmann::json(*mesh_sha256) : nlohmann::json(nullptr)}}},
+      {"mesh", mesh_json(mesh, result, mesh_sha256)},
       {"params", run_parameters(result.plan, out)},
       {"device", result.device},
       {"distances", distances_json(result)},
@@ -104,10 +171,7 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
       {"trace", trace}};
   if (has_kernel_times) report["avg_kernel_ms"] = kernel_ms_sum / double(outcome.trace.size());
   report["quality"] = quality_json(result.quality);
-  report["seconds"] = {{"geodesics", result.seconds.geodesics},
-                       {"particles", result.seconds.particles},
-                       {"quality", result.seconds.quality},
-                       {"total", result.seconds.total}};
+  report["seconds"] = seconds_json(result.seconds);
   return report;
 }
 
