@@ -34,7 +34,7 @@ grep -q '"weights": "float"' "$work/run/report.json" || fail "field run's report
 grep -q '"sizes_from": "--wg/--tile"' "$work/run/report.json" || fail "flags did not override the tuning file"
 
 echo "not json" > "$work/broken.json"
-"$bin" run "$mesh" -n 64 --iterations 2 --tuning-file "$work/broken.json" --out "$work/run" 2> "$work/warning.txt" > /dev/null
+"$bin" run "$mesh" -n 64 --iterations 2 --method paper --tuning-file "$work/broken.json" --out "$work/run" 2> "$work/warning.txt" > /dev/null
 grep -q "warning: tuning file .*broken.json is not readable" "$work/warning.txt" || fail "no warning for a broken tuning file"
 grep -q '"sizes_from": "built-in default"' "$work/run/report.json" || fail "broken tuning file: not the built-in default"
 if "$bin" sweep "$mesh" -n 64 --wg 8 --tile 16 --iterations 1 --save --tuning-file "$work/broken.json" -q 2> "$work/error.txt" > /dev/null; then

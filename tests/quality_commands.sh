@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # quality_commands.sh MESHPARTICLES MESH WORKDIR SCRIPTS: the quality loop
 # end to end. run --iterations 0 writes the start with its quality and the
-# ParaView files; `quality` on that file reproduces the report's metrics;
-# `compare` of a file with itself finds zero distances both ways; a run that
-# iterates lowers the energy it reports; bench --quality tabulates the
-# baselines; render.py and plot_trace.py draw them.
+# ParaView files; `quality` on that file (between the input's vertices: a
+# spread run's start on its refined mesh) reproduces the report's metrics
+# through the same store; `compare` of a file with itself finds zero
+# distances both ways; a spread run spreads its start more evenly, a paper
+# run lowers the energy it reports; bench --quality tabulates the baselines;
+# render.py and plot_trace.py draw them.
 set -euo pipefail
 bin=$1 mesh=$2 work=$3 scripts=$4
 rm -rf "$work" && mkdir -p "$work"
@@ -18,7 +20,8 @@ for key in nn_min nn_mean nn_cv rho cover energy stacked; do
   [ "$(json "$work/start/report.json" "'$key' in d['quality']")" = True ] || fail "report.json quality lacks $key"
 done
 
-"$bin" quality "$mesh" "$work/start/particles.particles" --json -q > "$work/quality.json"
+# A spread run measures through balls of 3 d_hex (docs/ALGORITHM.md).
+"$bin" quality "$mesh" "$work/start/particles.particles" --distances local --cutoff 3 --json -q > "$work/quality.json"
 same=$(/usr/bin/python3 -c "
 import json, sys
 report = json.load(open(sys.argv[1]))['quality']; measured = json.load(open(sys.argv[2]))
@@ -33,11 +36,18 @@ print(ok and measured['n'] == 100 and measured['largest_snap'] < 1e-5)" "$work/s
 "$bin" run "$mesh" -n 100 --out "$work/end" -q > /dev/null
 "$bin" compare "$mesh" "$work/start/particles.particles" "$work/end/particles.particles" -q > "$work/compare.txt"
 grep -q "^mean distance to the nearest particle of the other set: A -> B [0-9]" "$work/compare.txt" || fail "compare table"
+evener=$(/usr/bin/python3 -c "
+import json, sys
+start, end = (json.load(open(f))['quality'] for f in sys.argv[1:])
+print(end['nn_cv'] < start['nn_cv'] and end['rho'] > start['rho'])" "$work/start/report.json" "$work/end/report.json")
+[ "$evener" = True ] || fail "the spread run did not spread its start more evenly"
+"$bin" run "$mesh" -n 100 --method paper --iterations 0 --out "$work/paper_start" -q > /dev/null
+"$bin" run "$mesh" -n 100 --method paper --out "$work/paper_end" -q > /dev/null
 lower=$(/usr/bin/python3 -c "
 import json, sys
 print(json.load(open(sys.argv[2]))['quality']['energy'] < json.load(open(sys.argv[1]))['quality']['energy'])" \
-  "$work/start/report.json" "$work/end/report.json")
-[ "$lower" = True ] || fail "the run did not lower the energy of its start"
+  "$work/paper_start/report.json" "$work/paper_end/report.json")
+[ "$lower" = True ] || fail "the paper run did not lower the energy of its start"
 [ -s "$work/end/particles.ply" ] && [ -s "$work/end/mesh_distance.vtk" ] || fail "no ParaView files"
 
 "$bin" bench --quality --case torus:64 --backend serial,field --json "$work/bench_quality.json" -q > "$work/bench_quality.txt"
@@ -49,7 +59,7 @@ rows=$(json "$work/bench_quality.json" "[r['placement'] + '/' + str(r['backend']
   || fail "field's energy is not within 0.5% of the serial reference's"
 
 "$scripts/render.py" "$mesh" "$work/start/particles.particles" "$work/end/particles.particles" --out "$work/render.png" > /dev/null
-"$scripts/plot_trace.py" "$work/end/report.json" --out "$work/trace.png" > /dev/null
+"$scripts/plot_trace.py" "$work/paper_end/report.json" --out "$work/trace.png" > /dev/null
 [ -s "$work/render.png" ] && [ -s "$work/trace.png" ] || fail "render.py or plot_trace.py wrote no PNG"
 if "$scripts/render.py" "$mesh" "$work/start/report.json" --out "$work/bad.png" 2> "$work/render_error.txt"; then
   fail "render.py accepted a JSON file as particles"

@@ -52,15 +52,15 @@ DistancesRequest spread_distances(const DistancesRequest& request) {
 }
 
 void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
-  const RunRequest& request = plan.request;
+  RunRequest& request = plan.request;
   if (const auto option = paper_only_option(request)) {
     throw UserError(*option + " applies to --method paper");
   }
   plan.refinement_levels = spread_refinement_levels(mesh, request.particles);
   plan.working_vertices = refined_vertex_count(mesh, plan.refinement_levels);
-  // Checked on the input now (the same area, so the same radius); planned
-  // again on the working mesh once it is built.
-  plan.distances = plan_distances(mesh, spread_distances(request.distances), request.particles, false);
+  // Planned on the input: the working mesh has its area, so the same radius.
+  request.distances = spread_distances(request.distances);
+  plan.distances = plan_distances(mesh, request.distances, request.particles, false);
 }
 
 }  // namespace
@@ -156,8 +156,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   result.seconds.particles = seconds_since(particles_started);
 
   const auto geodesics_started = std::chrono::steady_clock::now();
-  result.plan.distances = plan_distances(surface, spread_distances(request.distances), request.particles, false);
-  const ObtainedDistances distances = obtain_distances(surface, request.distances.geodesics, result.plan.distances);
+  const ObtainedDistances distances = obtain_distances(surface, request.distances.geodesics, plan.distances);
   result.distances.kind = distances.kind;
   result.distances.table_source = distances.source;
   result.seconds.geodesics = seconds_since(geodesics_started);
