@@ -67,6 +67,12 @@ expect_exit(run_weights_on_tiled 2 "--weights and --rebuild-every apply to the s
 expect_exit(run_rebuild_on_serial 2 "--weights and --rebuild-every apply to the serial-field and field backends, not serial" run ${TETRA} -n 2 --backend serial --rebuild-every 5 --no-cache --out ${RUN_OUT})
 expect_exit(run_unknown_weights 2 "--weights: double not in" run ${TETRA} -n 2 --backend field --weights double --out ${RUN_OUT})
 expect_exit(run_field_half 0 "converged" run ${TETRA} -n 2 --backend field --weights half --rebuild-every 3 --no-cache --out ${RUN_OUT}_field_half)
+# spread (the default) runs on the host; the paper's options imply paper, and
+# name themselves when spread is asked for by name.
+expect_exit(run_spread_default 0 "spread: [0-9]+ done in .*(converged|cycle)" run ${TORUS} -n 16 --out ${RUN_OUT}_spread)
+expect_exit(run_spread_refuses_backend 2 "--backend applies to --method paper" run ${TETRA} -n 2 --method spread --backend tiled --out ${RUN_OUT})
+expect_exit(run_spread_refuses_v0 2 "--init v0 applies to --method paper" run ${TETRA} -n 2 --method spread --init v0 --out ${RUN_OUT})
+expect_exit(run_unknown_method 2 "--method: gradient not in" run ${TETRA} --method gradient --out ${RUN_OUT})
 expect_exit(run_bad_start_vertex 2 "--start-vertex 9 is not a vertex of the surface" run ${TETRA} -n 2 --init v0 --start-vertex 9 --out ${RUN_OUT})
 expect_exit(run_unwritable_out 2 "cannot create the parent of output directory /dev/null: Not a directory" run ${TETRA} -n 2 --out /dev/null/out)
 # Whole runs on the tetrahedron: every backend, files written, summary printed.
@@ -119,6 +125,11 @@ add_test(NAME cli.quality_commands
 set_tests_properties(cli.quality_commands PROPERTIES LABELS "slow;device")
 expect_exit(bench_quality_csv 2 "--csv applies to the timing tables \\(with --quality, use --json\\)" bench --quality --csv ${CMAKE_CURRENT_BINARY_DIR}/q.csv)
 # generate, info --json, devices and a failed sweep, checked in full.
+# The paper's method reproduces the old default's moves bit for bit.
+add_test(NAME cli.paper_method
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/paper_method.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes
+                 ${DATA} ${CMAKE_CURRENT_BINARY_DIR}/paper_method)
+set_tests_properties(cli.paper_method PROPERTIES LABELS "fast;device")
 add_test(NAME cli.command_outputs
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/command_outputs.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes
                  ${PROJECT_SOURCE_DIR}/kernels ${CMAKE_CURRENT_BINARY_DIR}/command_outputs)
@@ -166,6 +177,15 @@ if(NOT EXISTS ${FIFO})
 endif()
 expect_exit(fifo_refused 2 "fifo\\.off: not a regular file" info ${FIFO})
 set_tests_properties(cli.device_refused cli.fifo_refused PROPERTIES TIMEOUT 10)
+# No area (issue 29): refused by every command that reads a mesh, not as "--sigma 0 is too small".
+set(NO_AREA_MESSAGE "the mesh has no area: every triangle is degenerate \\(its corners at one point or on one line\\)")
+expect_exit(no_area_run 2 "no_area\\.off: ${NO_AREA_MESSAGE}" run ${DATA}/no_area.off --out ${RUN_OUT})
+expect_exit(no_area_collinear_run 2 "no_area_collinear\\.off: ${NO_AREA_MESSAGE}" run ${DATA}/no_area_collinear.off -n 2 --out ${RUN_OUT})
+expect_exit(no_area_info 2 "no_area\\.off: ${NO_AREA_MESSAGE}" info ${DATA}/no_area.off)
+expect_exit(no_area_geodesics 2 "no_area_collinear\\.off: ${NO_AREA_MESSAGE}" geodesics ${DATA}/no_area_collinear.off --no-cache)
+expect_exit(no_area_quality 2 "no_area\\.off: ${NO_AREA_MESSAGE}" quality ${DATA}/no_area.off ${DATA}/particles/blank_lines.particles)
+expect_exit(no_area_batch 2 "\\[1/1\\] no_area: refused: .*no_area\\.off: ${NO_AREA_MESSAGE}" batch ${DATA}/no_area.off --force --out ${CMAKE_CURRENT_BINARY_DIR}/batch_no_area)
+set_tests_properties(cli.no_area_batch PROPERTIES ENVIRONMENT MULTILINE=1)
 # Found by scripts/fuzz.sh: an element name of unprintable bytes, which went into the message as it was.
 expect_exit(ply_unprintable_name 2 "unprintable_element_name\\.ply: line 4: the count of element 've[?]+[.][.][.]', '[?]', is not a count" info ${DATA}/unprintable_element_name.ply)
 
@@ -191,7 +211,7 @@ expect_exit(sigma_huge_warns 0 "warning: --sigma 1e\\+300 with d_hex .*the energ
 expect_exit_of(devices_bogus_variable 0 "warning: \\$MESHPARTICLES_DEVICE='bogus' matches no device above"
                env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> devices)
 expect_exit_of(run_bogus_variable 2 "no OpenCL device matches \\$MESHPARTICLES_DEVICE='bogus'"
-               env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --out ${RUN_OUT})
+               env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --method paper --out ${RUN_OUT})
 expect_exit_of(bad_pocl_cache 3 "\\$POCL_CACHE_DIR='/proc/no-such-dir' is not a directory PoCL can write"
                env "MESHPARTICLES_DEVICE=Portable Computing Language" POCL_CACHE_DIR=/proc/no-such-dir
                $<TARGET_FILE:meshparticles> devices)

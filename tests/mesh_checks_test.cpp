@@ -1,9 +1,13 @@
 // What the checks keep, drop and refuse in non-manifold input: by default
 // one warning line per kind, with MeshReadOptions::strict the refusals of
-// old.
+// old. And a mesh with no area, refused whatever the options.
 #include "mesh/mesh_checks.hpp"
 
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
 
 #include "common/user_error.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -107,6 +111,65 @@ TEST(MeshChecks, ManyPinchedVerticesStillGiveOneLine) {
   EXPECT_NE(warnings[0].find("chain: " + std::to_string(kTetrahedra - 1) + " non-manifold vertices (e.g. vertex 3,"),
             std::string::npos)
       << warnings[0];
+}
+
+// Issue 29: a mesh with no area has no surface for particles; `run` used to
+// answer "--sigma 0 is too small to compute with" though no --sigma was given.
+TEST(MeshChecks, AMeshWithNoAreaIsRefusedInOneLine) {
+  for (const char* name : {"no_area.off", "no_area_collinear.off"}) {
+    const std::string expected =
+        data(name) + ": the mesh has no area: every triangle is degenerate (its corners at one point or on one line)";
+    std::vector<std::string> warnings;
+    try {
+      read_mesh(data(name), warnings);
+      ADD_FAILURE() << name << " was accepted";
+    } catch (const UserError& error) {
+      EXPECT_EQ(std::string(error.what()), expected);
+      EXPECT_EQ(error.exit_code(), 2);
+    }
+    EXPECT_EQ(strict_refusal(data(name)), expected);
+  }
+}
+
+PolygonSoup scaled_tetrahedron(double scale) {
+  PolygonSoup soup;
+  for (const Vec3& p : std::vector<Vec3>{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}) {
+    soup.vertices.push_back({p.x * scale, p.y * scale, p.z * scale});
+  }
+  for (const auto& [a, b, c] : {std::array{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}) soup.add_triangle(a, b, c);
+  return soup;
+}
+
+TEST(MeshChecks, AnAreaThatOverflowsIsRefused) {
+  std::vector<std::string> warnings;
+  try {
+    build_checked_mesh(scaled_tetrahedron(1e200), "huge", warnings);
+    ADD_FAILURE() << "an area of about 1e400 was accepted";
+  } catch (const UserError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "huge: the mesh's area is not a finite number (coordinates too large to compute with)");
+  }
+}
+
+TEST(MeshChecks, SmallAndLargeMeshesKeepTheirArea) {
+  // Micrometres, far below and far above: "no area" is relative to each
+  // triangle's own edges, never to an absolute size.
+  for (const double scale : {1e-6, 1e-60, 1e60}) {
+    std::vector<std::string> warnings;
+    const SurfaceMesh mesh = build_checked_mesh(scaled_tetrahedron(scale), "small", warnings);
+    EXPECT_NEAR(mesh.area() / (scale * scale), 8 * std::sqrt(3.0), 1e-12) << scale;
+    EXPECT_TRUE(warnings.empty()) << scale << ": " << warnings.front();
+  }
+  // One triangle with area among degenerate ones is enough: kept, one warning.
+  PolygonSoup soup;
+  soup.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  soup.add_triangle(0, 1, 2);
+  soup.add_triangle(3, 4, 5);
+  std::vector<std::string> warnings;
+  const SurfaceMesh mesh = build_checked_mesh(soup, "one", warnings);
+  EXPECT_DOUBLE_EQ(mesh.area(), 0.5);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "one: 1 degenerate (zero-area) triangle");
 }
 
 }  // namespace

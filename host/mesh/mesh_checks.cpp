@@ -186,6 +186,23 @@ void check_vertex_fans(const std::vector<Triangle>& triangles, std::size_t verte
   }
 }
 
+// With no area there is no surface to spread particles on: sigma, the
+// spacing and every density come from the area and would be 0 (issue 29).
+// Refused when the sum is not a finite number (coordinates so large that a
+// triangle's area overflows a double), then when every triangle is degenerate
+// (its corners at one point or on one line, by the scale-free test in
+// build_checked_mesh, so a small mesh, in micrometres say, is never refused
+// for its size).
+void check_area(double area, bool all_degenerate, const std::string& label) {
+  if (!std::isfinite(area)) {
+    throw UserError(label + ": the mesh's area is not a finite number (coordinates too large to compute with)");
+  }
+  if (all_degenerate || !(area > 0)) {
+    throw UserError(label +
+                    ": the mesh has no area: every triangle is degenerate (its corners at one point or on one line)");
+  }
+}
+
 }  // namespace
 
 SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label, std::vector<std::string>& warnings,
@@ -222,14 +239,20 @@ SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label
   }
 
   // Zero-area triangles are kept (topology is sound) but worth knowing about:
-  // they make geodesic updates ill-conditioned. "Zero" is relative to the
-  // triangle's own edge lengths, so the test does not depend on the mesh scale.
+  // they make geodesic updates ill-conditioned; a mesh of nothing else is
+  // refused (check_area). "Zero" is relative to the triangle's own edge
+  // lengths, so the test does not depend on the mesh scale (a mesh in
+  // micrometres is as good as one in metres).
   std::size_t degenerate = 0;
+  double area = 0;  // summed in the order SurfaceMesh sums it
   for (const Triangle& t : triangles) {
     const Vec3 &a = positions[t[0]], &b = positions[t[1]], &c = positions[t[2]];
     const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
-    if (triangle_area(a, b, c) <= 1e-12 * longest * longest) ++degenerate;
+    const double triangle = triangle_area(a, b, c);
+    area += triangle;
+    if (triangle <= 1e-12 * longest * longest) ++degenerate;
   }
+  check_area(area, degenerate == triangles.size(), label);
   if (degenerate > 0) warnings.push_back(label + ": " + plural(degenerate, "degenerate (zero-area) triangle"));
 
   return SurfaceMesh(std::move(positions), std::move(triangles), std::move(input_ids), soup.vertices.size());

@@ -1,6 +1,7 @@
 #pragma once
 // What a reader hands on, checked before anything uses it. Refused: no
-// vertices or faces, non-finite coordinates, bad face indices. Tolerated with
+// vertices or faces, non-finite coordinates, bad face indices, no area (every
+// triangle degenerate) or an area that overflows a double. Tolerated with
 // one warning line per kind: polygons (fan-triangulated), degenerate
 // triangles, unreferenced vertices (dropped, input ids remembered),
 // inconsistent orientation, and the non-manifold cases real scans have:
