@@ -25,7 +25,7 @@ std::uint64_t positions_hash(const std::vector<VertexId>& positions) {
 
 SpreadOutcome optimize_farthest_points(const SurfaceMesh& mesh, const GeodesicSolver& solver,
                                        const std::vector<VertexId>& start, std::size_t max_sweeps, double min_gain,
-                                       bool quiet) {
+                                       double stall_gain, bool quiet) {
   SpreadOutcome outcome;
   outcome.positions = start;
   const auto count = std::uint32_t(start.size());
@@ -81,8 +81,15 @@ SpreadOutcome optimize_farthest_points(const SurfaceMesh& mesh, const GeodesicSo
       outcome.cycled = true;
       break;
     }
+    if (sweep > 0 && record.mean_spacing < outcome.sweeps[sweep - 1].mean_spacing + stall_gain) {
+      outcome.stalled = true;
+      break;
+    }
   }
-  progress.finish(outcome.converged ? "converged" : outcome.cycled ? "settled in a cycle" : "sweep limit reached");
+  progress.finish(outcome.converged ? "converged"
+                  : outcome.cycled  ? "settled in a cycle"
+                  : outcome.stalled ? "stalled"
+                                    : "sweep limit reached");
   return outcome;
 }
 

@@ -1,11 +1,13 @@
 #include "pipeline/run_pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
 #include "backends/backend_table.hpp"
 #include "backends/local_device_field_backend.hpp"
 #include "common/user_error.hpp"
+#include "geodesics/memory_guard.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/sigma_check.hpp"
@@ -32,11 +34,14 @@ std::optional<std::string> paper_only_option(const RunRequest& request) {
 }
 
 // The fewest midpoint rounds that give kSpreadVerticesPerParticle vertices
-// per particle, short of passing kSpreadMaxWorkingVertices.
+// per particle, short of passing kSpreadMaxWorkingVertices or what half the
+// usable memory holds: checked before anything is built.
 unsigned spread_refinement_levels(const SurfaceMesh& mesh, std::size_t particles) {
+  const double most = std::min(double(kSpreadMaxWorkingVertices),
+                               0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex);
   unsigned levels = 0;
   while (double(refined_vertex_count(mesh, levels)) < kSpreadVerticesPerParticle * double(particles) &&
-         refined_vertex_count(mesh, levels + 1) <= kSpreadMaxWorkingVertices) {
+         double(refined_vertex_count(mesh, levels + 1)) <= most) {
     ++levels;
   }
   return levels;
@@ -146,13 +151,16 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   // The input's vertices keep their ids on the working mesh.
   result.start = place_particles(surface, plan.placement, request.quiet);
   const auto solver = make_geodesic_solver(surface, request.distances.geodesics.method);
-  const double min_gain = kSpreadMinGain * hexagonal_spacing(mesh.area(), request.particles);
-  SpreadOutcome spread =
-      optimize_farthest_points(surface, *solver, result.start, request.max_iterations, min_gain, request.quiet);
+  const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
+  SpreadOutcome spread = optimize_farthest_points(surface, *solver, result.start, request.max_iterations,
+                                                  kSpreadMinGain * d_hex, kSpreadStallGain * d_hex, request.quiet);
   result.sweeps = std::move(spread.sweeps);
   result.outcome.positions = std::move(spread.positions);
   result.outcome.converged = spread.converged;
-  result.cycled = spread.cycled;
+  result.stopped = spread.converged ? "converged"
+                   : spread.cycled  ? "cycle"
+                   : spread.stalled ? "stalled"
+                                    : "max_iterations";
   result.seconds.particles = seconds_since(particles_started);
 
   const auto geodesics_started = std::chrono::steady_clock::now();

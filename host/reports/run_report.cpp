@@ -128,7 +128,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
       {"device", result.device},
       {"distances", distances_json(result)},
       {"iterations_run", result.sweeps.size()},
-      {"stopped", result.outcome.converged ? "converged" : result.cycled ? "cycle" : "max_iterations"},
+      {"stopped", result.stopped},
       {"final_energy", result.quality.energy},
       {"avg_iteration_ms", result.sweeps.empty() ? 0.0 : ms_sum / double(result.sweeps.size())},
       {"sweeps", sweeps}};
