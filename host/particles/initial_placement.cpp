@@ -25,9 +25,8 @@ std::vector<VertexId> distinct_random_vertices(std::size_t vertex_count, std::si
 // Each new sample is the vertex farthest from all samples so far (ties: the
 // smaller id). Another component is infinitely far, so each gets a sample
 // before any gets a second.
-std::vector<VertexId> farthest_point_samples(const SurfaceMesh& mesh, GeodesicMethod method, std::size_t count,
+std::vector<VertexId> farthest_point_samples(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::size_t count,
                                              VertexId first, bool quiet) {
-  const auto solver = make_geodesic_solver(mesh, method);
   SolverScratch scratch;
   std::vector<float> nearest(mesh.vertex_count(), std::numeric_limits<float>::infinity());
   FarthestVertex farthest(nearest);
@@ -39,7 +38,7 @@ std::vector<VertexId> farthest_point_samples(const SurfaceMesh& mesh, GeodesicMe
     samples.push_back(next);
     farthest.take(next);
     if (samples.size() == count) break;
-    solver->lower_nearest(next, nearest, scratch, lowered);
+    solver.lower_nearest(next, nearest, scratch, lowered);
     farthest.lowered(lowered);
     next = *farthest.farthest();  // count <= vertices: one is left
     progress.update(samples.size());
@@ -48,9 +47,9 @@ std::vector<VertexId> farthest_point_samples(const SurfaceMesh& mesh, GeodesicMe
   return samples;
 }
 
-}  // namespace
-
-std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const PlacementRequest& request, bool quiet) {
+// `solver`: the farthest start's, or null to make one (v0 and random need none).
+std::vector<VertexId> place(const SurfaceMesh& mesh, const GeodesicSolver* solver, const PlacementRequest& request,
+                            bool quiet) {
   const std::size_t vertex_count = mesh.vertex_count();
   switch (request.init) {
     case Init::v0:
@@ -60,10 +59,23 @@ std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const PlacementRe
     case Init::farthest: {
       const VertexId first = request.start_vertex ? *request.start_vertex
                                                   : VertexId(SplitMix64(request.seed).below(vertex_count));
-      return farthest_point_samples(mesh, request.method, request.particle_count, first, quiet);
+      if (solver) return farthest_point_samples(mesh, *solver, request.particle_count, first, quiet);
+      return farthest_point_samples(mesh, *make_geodesic_solver(mesh, request.method), request.particle_count, first,
+                                    quiet);
     }
   }
   return {};
+}
+
+}  // namespace
+
+std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const PlacementRequest& request, bool quiet) {
+  return place(mesh, nullptr, request, quiet);
+}
+
+std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                                      const PlacementRequest& request, bool quiet) {
+  return place(mesh, &solver, request, quiet);
 }
 
 }  // namespace meshparticles

@@ -24,5 +24,9 @@ struct PlacementRequest {
 // it takes over (GeodesicSolver::lower_nearest): no distance table needed.
 // `quiet`: no progress line.
 std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const PlacementRequest& request, bool quiet = true);
+// The same, measuring with `solver` (of `mesh`) instead of one of its own:
+// for a caller that marches on the mesh again afterwards.
+std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                                      const PlacementRequest& request, bool quiet = true);
 
 }  // namespace meshparticles

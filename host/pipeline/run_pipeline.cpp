@@ -148,9 +148,9 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   auto working = std::make_shared<RefinedMesh>(refine_by_midpoints(mesh, plan.refinement_levels));
   result.working = working;
   const SurfaceMesh& surface = working->mesh;
-  // The input's vertices keep their ids on the working mesh.
-  result.start = place_particles(surface, plan.placement, request.quiet);
   const auto solver = make_geodesic_solver(surface, request.distances.geodesics.method);
+  // The input's vertices keep their ids on the working mesh.
+  result.start = place_particles(surface, *solver, plan.placement, request.quiet);
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   SpreadOutcome spread = optimize_farthest_points(surface, *solver, result.start, request.max_iterations,
                                                   kSpreadMinGain * d_hex, kSpreadStallGain * d_hex, request.quiet);
