@@ -72,6 +72,8 @@ expect_exit(run_field_half 0 "converged" run ${TETRA} -n 2 --backend field --wei
 expect_exit(run_spread_default 0 "spread: [0-9]+ done in .*(converged|cycle)" run ${TORUS} -n 16 --out ${RUN_OUT}_spread)
 expect_exit(run_spread_refuses_backend 2 "--backend applies to --method paper" run ${TETRA} -n 2 --method spread --backend tiled --out ${RUN_OUT})
 expect_exit(run_spread_refuses_v0 2 "--init v0 applies to --method paper" run ${TETRA} -n 2 --method spread --init v0 --out ${RUN_OUT})
+expect_exit(run_vertices_per_particle_on_paper 2 "--vertices-per-particle applies to --method spread" run ${TETRA} -n 2 --method paper --vertices-per-particle 50 --out ${RUN_OUT})
+expect_exit(run_vertices_per_particle_zero 2 "--vertices-per-particle: expected a finite number above 0, got \"0\"" run ${TETRA} -n 2 --vertices-per-particle 0 --out ${RUN_OUT})
 expect_exit(run_unknown_method 2 "--method: gradient not in" run ${TETRA} --method gradient --out ${RUN_OUT})
 expect_exit(run_bad_start_vertex 2 "--start-vertex 9 is not a vertex of the surface" run ${TETRA} -n 2 --init v0 --start-vertex 9 --out ${RUN_OUT})
 expect_exit(run_unwritable_out 2 "cannot create the parent of output directory /dev/null: Not a directory" run ${TETRA} -n 2 --out /dev/null/out)

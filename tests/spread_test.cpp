@@ -204,6 +204,12 @@ TEST(SpreadPlan, DefaultsAndImpliedMethod) {
   EXPECT_GE(double(plan.working_vertices), kSpreadVerticesPerParticle * 200);
   EXPECT_LT(double(refined_vertex_count(mesh, plan.refinement_levels - 1)), kSpreadVerticesPerParticle * 200);
 
+  request.vertices_per_particle = 100;  // asked for: more rounds
+  const RunPlan finer = plan_run(mesh, request);
+  EXPECT_GE(double(finer.working_vertices), 100.0 * 200);
+  EXPECT_GT(finer.refinement_levels, plan.refinement_levels);
+  request.vertices_per_particle.reset();
+
   request.scheme = Scheme::sequential;
   plan = plan_run(mesh, request);
   EXPECT_EQ(plan.method, Method::paper);

@@ -2,6 +2,7 @@
 
 #include "backends/backend_table.hpp"
 #include "cli/number_options.hpp"
+#include "common/text_format.hpp"
 #include "tuning/tuning_store.hpp"
 
 namespace meshparticles {
@@ -29,6 +30,10 @@ void add_run_options(CLI::App& command, RunOptions& options) {
                      "vertices (implied by --backend, --scheme, --colors, --weights, --rebuild-every, --wg, --tile "
                      "or --init v0)")
       ->check(CLI::IsMember({"spread", "paper"}));
+  add_positive_number_option(command, "--vertices-per-particle", request.vertices_per_particle,
+                             "spread: refine the mesh until it has this many vertices per particle (default " +
+                                 format_number("%g", kSpreadVerticesPerParticle) +
+                                 "; more spreads further at a larger cover and cost)");
   add_whole_number_option(command, "--iterations", request.max_iterations, kRunIterationRange,
                           "Stop after this many iterations (spread: sweeps), or when nothing moves; 0 writes the "
                           "start and its quality");

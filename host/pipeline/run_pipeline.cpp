@@ -33,14 +33,14 @@ std::optional<std::string> paper_only_option(const RunRequest& request) {
   return std::nullopt;
 }
 
-// The fewest midpoint rounds that give kSpreadVerticesPerParticle vertices
-// per particle, short of passing kSpreadMaxWorkingVertices or what half the
+// The fewest midpoint rounds that give `per_particle` vertices per
+// particle, short of passing kSpreadMaxWorkingVertices or what half the
 // usable memory holds: checked before anything is built.
-unsigned spread_refinement_levels(const SurfaceMesh& mesh, std::size_t particles) {
+unsigned spread_refinement_levels(const SurfaceMesh& mesh, std::size_t particles, double per_particle) {
   const double most = std::min(double(kSpreadMaxWorkingVertices),
                                0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex);
   unsigned levels = 0;
-  while (double(refined_vertex_count(mesh, levels)) < kSpreadVerticesPerParticle * double(particles) &&
+  while (double(refined_vertex_count(mesh, levels)) < per_particle * double(particles) &&
          double(refined_vertex_count(mesh, levels + 1)) <= most) {
     ++levels;
   }
@@ -61,7 +61,8 @@ void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
   if (const auto option = paper_only_option(request)) {
     throw UserError(*option + " applies to --method paper");
   }
-  plan.refinement_levels = spread_refinement_levels(mesh, request.particles);
+  plan.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
+  plan.refinement_levels = spread_refinement_levels(mesh, request.particles, plan.vertices_per_particle);
   plan.working_vertices = refined_vertex_count(mesh, plan.refinement_levels);
   // Planned on the input: the working mesh has its area, so the same radius.
   request.distances = spread_distances(request.distances);
@@ -104,6 +105,7 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
     plan_spread(mesh, plan);
     return plan;
   }
+  if (request.vertices_per_particle) throw UserError("--vertices-per-particle applies to --method spread");
   // The default backend follows the store: the device's field method on a
   // table, its serial twin on local balls (the device streams table rows).
   const bool default_backend = request.backend.name.empty();

@@ -24,8 +24,10 @@
 namespace meshparticles {
 
 // spread: the working mesh has at least this many vertices per particle
-// (the input refined by midpoints until it does): a particle can then land
-// within a fifth of a spacing of anywhere. Measured: docs/ALGORITHM.md.
+// (the input refined by midpoints until it does) unless
+// --vertices-per-particle says otherwise: the fewest that met the issue's
+// floors on the committed meshes; more spreads further (higher rho, lower
+// CV) at a larger cover and cost. Measured: docs/ALGORITHM.md.
 inline constexpr double kSpreadVerticesPerParticle = 24;
 // spread measures its result through balls of this many hexagonal spacings
 // (unless --cutoff says otherwise): every nearest neighbour lies well within
@@ -52,6 +54,8 @@ struct RunRequest {
   // (--backend, --scheme, --colors, --weights, --rebuild-every, --wg,
   // --tile, --init v0), which implies paper.
   std::optional<Method> method;
+  // spread: the working mesh's vertices per particle; default kSpreadVerticesPerParticle.
+  std::optional<double> vertices_per_particle;
   // paper: iterations; spread: sweeps. Both stop early when nothing moves.
   std::size_t max_iterations = kDefaultMaxIterations;  // 0: the start alone, measured
   // Name empty: the default for the store (field on a table, serial-field on balls).
@@ -76,6 +80,7 @@ struct RunPlan {
   RunRequest request;
   Method method = Method::spread;
   std::string method_from;     // "--method", "default", or the option that implies paper
+  double vertices_per_particle = 0;  // spread: asked of the working mesh
   unsigned refinement_levels = 0;  // spread: midpoint rounds of the working mesh
   std::size_t working_vertices = 0;  // spread: the working mesh's vertices
   Scheme scheme = Scheme::colored;

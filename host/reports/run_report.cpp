@@ -21,6 +21,7 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                              {"method", method_option_name(plan.method)},
                              {"method_from", plan.method_from},
                              {"sweeps", request.max_iterations},
+                             {"vertices_per_particle", plan.vertices_per_particle},
                              {"refinement_levels", plan.refinement_levels},
                              {"working_vertices", plan.working_vertices},
                              {"init", init_name(request.init)},
