@@ -13,6 +13,7 @@
 #include "geodesics/local_distances.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mesh/midpoint_refinement.hpp"
+#include "particles/particle_file.hpp"
 #include "particles/farthest_point_optimization.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_voronoi.hpp"
@@ -141,6 +142,41 @@ TEST(MidpointRefinement, IsTheInputSurfaceWithEachVertexPlacedOnIt) {
   }
 }
 
+// Where edges are long: every edge ends no longer than asked, the mesh stays
+// conforming (a closed mesh keeps no boundary, so no edge lost its twin),
+// each vertex lies on the input where its weights say, and on a vertex of
+// the uniform refinement with as many rounds.
+TEST(MidpointRefinement, SplittingLongEdgesConformsAndStaysOnTheSurface) {
+  const SurfaceMesh input = committed("torus.off");
+  for (const double longest : {0.6 * input.mean_edge_length(), 0.3 * input.mean_edge_length()}) {
+    const RefinedMesh refined = refine_long_edges(input, longest, 10'000'000);
+    const SurfaceMesh& mesh = refined.mesh;
+    EXPECT_GT(refined.levels, 0u);
+    EXPECT_EQ(mesh.boundary_vertex_count(), 0u);
+    EXPECT_EQ(mesh.component_count(), input.component_count());
+    EXPECT_NEAR(mesh.area(), input.area(), 1e-9 * input.area());
+    for (const Triangle& t : mesh.triangles()) {
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_LE(distance(mesh.positions()[t[k]], mesh.positions()[t[(k + 1) % 3]]), longest);
+      }
+    }
+    const RefinedMesh uniform = refine_by_midpoints(input, refined.levels);
+    for (VertexId v = 0; v < mesh.vertex_count(); v += 7) {
+      const SurfacePoint& on = refined.on_input[v];
+      Vec3 at{0, 0, 0};
+      for (int k = 0; k < 3; ++k) at = at + on.weights[k] * input.positions()[on.corners[k]];
+      ASSERT_LE(distance(at, mesh.positions()[v]), 1e-12) << v;
+    }
+    std::vector<Vec3> sample;
+    for (VertexId v = 0; v < mesh.vertex_count(); v += 7) sample.push_back(mesh.positions()[v]);
+    EXPECT_LE(snap_to_vertices(uniform.mesh, sample).largest_snap, 1e-12);
+  }
+  // The cap is decided before a round: the mesh never passes it.
+  const RefinedMesh capped = refine_long_edges(input, 0.1 * input.mean_edge_length(), 20'000);
+  EXPECT_LE(capped.mesh.vertex_count(), 20'000u);
+  EXPECT_GT(capped.mesh.vertex_count(), input.vertex_count());
+}
+
 struct Evenness {
   double cv, rho, cover;
 };
@@ -164,7 +200,9 @@ TEST_P(SpreadImproves, OnTheFarthestStart) {
   constexpr std::size_t kParticles = 256;
   RunRequest request;  // the working mesh a run would take
   request.particles = kParticles;
-  const RefinedMesh working = refine_by_midpoints(input, plan_run(input, request).refinement_levels);
+  const RunPlan plan = plan_run(input, request);
+  const RefinedMesh working =
+      refine_by_midpoints_then_long_edges(input, plan.refinement_levels, plan.longest_edge, plan.max_working_vertices);
   const auto solver = make_geodesic_solver(working.mesh, GeodesicMethod::fast_marching);
   const auto start = place_particles(working.mesh, {Init::farthest, kParticles, 1, std::nullopt});
   const double min_gain = kSpreadMinGain * hexagonal_spacing(input.area(), kParticles);
@@ -177,9 +215,9 @@ TEST_P(SpreadImproves, OnTheFarthestStart) {
   EXPECT_GT(after.rho, before.rho + 0.03);
   EXPECT_LE(after.cover, 1.1 * before.cover);
   // The smallest spacing does not shrink from one sweep to the next, but
-  // for fast marching's noise (one-sided distances: 3e-4 relative measured).
+  // for fast marching's noise (one-sided distances: up to 2e-3 relative measured).
   for (std::size_t k = 1; k < spread.sweeps.size(); ++k) {
-    EXPECT_GE(spread.sweeps[k].min_spacing, (1 - 1e-3) * spread.sweeps[k - 1].min_spacing) << "sweep " << k;
+    EXPECT_GE(spread.sweeps[k].min_spacing, (1 - 1e-2) * spread.sweeps[k - 1].min_spacing) << "sweep " << k;
   }
   const SpreadOutcome again = optimize_farthest_points(working.mesh, *solver, start, 100, min_gain, stall_gain, true);
   EXPECT_EQ(again.positions, spread.positions);
@@ -201,13 +239,13 @@ TEST(SpreadPlan, DefaultsAndImpliedMethod) {
   RunPlan plan = plan_run(mesh, request);
   EXPECT_EQ(plan.method, Method::spread);
   EXPECT_EQ(plan.method_from, "default");
-  EXPECT_GE(double(plan.working_vertices), kSpreadVerticesPerParticle * 200);
+  EXPECT_DOUBLE_EQ(plan.longest_edge, kSpreadLongestEdge * hexagonal_spacing(mesh.area(), 200));
+  EXPECT_GE(plan.max_working_vertices, mesh.vertex_count());
+  EXPECT_GE(double(refined_vertex_count(mesh, plan.refinement_levels)), kSpreadVerticesPerParticle * 200);
   EXPECT_LT(double(refined_vertex_count(mesh, plan.refinement_levels - 1)), kSpreadVerticesPerParticle * 200);
 
   request.vertices_per_particle = 100;  // asked for: more rounds
-  const RunPlan finer = plan_run(mesh, request);
-  EXPECT_GE(double(finer.working_vertices), 100.0 * 200);
-  EXPECT_GT(finer.refinement_levels, plan.refinement_levels);
+  EXPECT_GT(plan_run(mesh, request).refinement_levels, plan.refinement_levels);
   request.vertices_per_particle.reset();
 
   request.scheme = Scheme::sequential;
@@ -232,7 +270,6 @@ TEST(SpreadRun, LandsEveryParticleOnTheInputSurfaceAndMeasuresOnTheWorkingMesh) 
   request.quiet = true;
   const RunResult result = run_pipeline(mesh, request);
   ASSERT_TRUE(result.working);
-  EXPECT_EQ(result.working->mesh.vertex_count(), result.plan.working_vertices);
   EXPECT_EQ(result.distance_to_nearest.size(), result.working->mesh.vertex_count());
   ASSERT_EQ(result.outcome.positions.size(), 300u);
   EXPECT_FALSE(result.sweeps.empty());

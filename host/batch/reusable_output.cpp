@@ -76,9 +76,13 @@ std::optional<nlohmann::json> reusable_report(const std::filesystem::path& direc
   if (plan.distances.kind == StoreKind::local && distances.value("radius", -1.0) != plan.distances.radius) {
     return std::nullopt;
   }
-  const std::size_t vertices = plan.method == Method::spread ? plan.working_vertices : mesh.vertex_count();
-  if (!rows_match(directory, plan.request.particles, vertices)) return std::nullopt;
   try {
+    // spread: the vertices of the working mesh, as the report says (the
+    // plan does not know them).
+    const std::size_t vertices = plan.method == Method::spread
+                                     ? report.at("working_mesh").at("vertices").get<std::size_t>()
+                                     : mesh.vertex_count();
+    if (!rows_match(directory, plan.request.particles, vertices)) return std::nullopt;
     finished_row(plan.request.mesh_label, directory.filename().string(), report);  // every figure the summary reads
   } catch (const nlohmann::json::exception&) {
     return std::nullopt;

@@ -30,9 +30,9 @@ void print_summary(const RunResult& result, const nlohmann::json& report, const 
               report["mesh"]["vertices"].get<std::size_t>());
   if (result.working) {
     const auto& working = report["working_mesh"];
-    std::printf("particles   %zu, spread on a working mesh of %zu vertices (%u midpoint rounds)\n",
+    std::printf("particles   %zu, spread on a working mesh of %zu vertices (%u rounds of splitting edges)\n",
                 result.plan.request.particles, working["vertices"].get<std::size_t>(),
-                working["refinement_levels"].get<unsigned>());
+                working["refinement_rounds"].get<unsigned>());
     std::printf("sweeps      %zu (%s)\n", report["iterations_run"].get<std::size_t>(),
                 report["stopped"].get<std::string>().c_str());
     std::printf("time        %.3f ms/sweep", report["avg_iteration_ms"].get<double>());

@@ -1,6 +1,7 @@
 #include "mesh/midpoint_refinement.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <unordered_map>
 
 namespace meshparticles {
@@ -30,70 +31,176 @@ std::size_t refined_vertex_count(const SurfaceMesh& input, unsigned levels) {
 
 namespace {
 
+using Weights = std::array<double, 3>;  // over an input triangle's corners
+
 // A triangle of the refined mesh with its corners' weights in the input
 // triangle it lies in.
 struct Piece {
   Triangle corners;
   std::uint32_t input_triangle;
-  std::array<std::array<double, 3>, 3> weights;  // per corner, over the input triangle's corners
+  std::array<Weights, 3> weights;  // per corner
+};
+
+std::uint64_t edge_key(VertexId a, VertexId b) {
+  return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+}
+
+// The input cut into pieces, round after round: each round splits the
+// edges it is told to at their midpoints, and each piece with one, two or
+// three split edges into two, three or four (a conforming mesh, since
+// both pieces along an edge see the same decision).
+class Refiner {
+ public:
+  explicit Refiner(const SurfaceMesh& input) : input_(input), positions_(input.positions()), on_input_(positions_.size()) {
+    std::vector<std::uint8_t> placed(positions_.size(), 0);
+    const auto& triangles = input.triangles();
+    pieces_.reserve(triangles.size());
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+      pieces_.push_back({triangles[t], t, {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
+      for (int k = 0; k < 3; ++k) {
+        if (placed[triangles[t][k]]) continue;
+        placed[triangles[t][k]] = 1;
+        on_input_[triangles[t][k]] = {triangles[t], pieces_.back().weights[k]};
+      }
+    }
+    for (VertexId v = 0; v < positions_.size(); ++v) {  // in no triangle: itself
+      if (!placed[v]) on_input_[v] = {{v, v, v}, {1, 0, 0}};
+    }
+  }
+
+  std::size_t vertex_count() const { return positions_.size(); }
+  const std::vector<Vec3>& positions() const { return positions_; }
+
+  // The distinct edges of the pieces for which `split` holds.
+  std::size_t count_edges(const std::function<bool(VertexId, VertexId)>& split) const {
+    std::unordered_map<std::uint64_t, bool> seen;
+    seen.reserve(pieces_.size() * 3 / 2 + 1);
+    std::size_t count = 0;
+    for (const Piece& piece : pieces_) {
+      for (int k = 0; k < 3; ++k) {
+        const VertexId a = piece.corners[(k + 1) % 3], b = piece.corners[(k + 2) % 3];
+        if (seen.try_emplace(edge_key(a, b), true).second && split(a, b)) ++count;
+      }
+    }
+    return count;
+  }
+
+  void split_round(const std::function<bool(VertexId, VertexId)>& split) {
+    std::unordered_map<std::uint64_t, VertexId> midpoint_of_edge;
+    midpoint_of_edge.reserve(pieces_.size() * 3 / 2 + 1);
+    std::vector<Piece> finer;
+    finer.reserve(pieces_.size() * 4);
+    for (const Piece& piece : pieces_) {
+      // The midpoint of the edge opposite corner k, if that edge is split.
+      std::array<VertexId, 3> mid{};
+      std::array<Weights, 3> mid_weights{};
+      std::array<bool, 3> cut{};
+      for (int k = 0; k < 3; ++k) {
+        const int a = (k + 1) % 3, b = (k + 2) % 3;
+        cut[k] = split(piece.corners[a], piece.corners[b]);
+        if (!cut[k]) continue;
+        for (int c = 0; c < 3; ++c) mid_weights[k][c] = 0.5 * (piece.weights[a][c] + piece.weights[b][c]);
+        mid[k] = midpoint(piece, piece.corners[a], piece.corners[b], mid_weights[k], midpoint_of_edge);
+      }
+      cut_piece(piece, cut, mid, mid_weights, finer);
+    }
+    pieces_.swap(finer);
+  }
+
+  RefinedMesh finish(unsigned rounds) {
+    std::vector<Triangle> triangles(pieces_.size());
+    std::transform(pieces_.begin(), pieces_.end(), triangles.begin(), [](const Piece& p) { return p.corners; });
+    return {SurfaceMesh(std::move(positions_), std::move(triangles)), rounds, std::move(on_input_)};
+  }
+
+ private:
+  VertexId midpoint(const Piece& piece, VertexId a, VertexId b, const Weights& weights,
+                    std::unordered_map<std::uint64_t, VertexId>& midpoint_of_edge) {
+    const auto [it, created] = midpoint_of_edge.try_emplace(edge_key(a, b), VertexId(positions_.size()));
+    if (!created) return it->second;
+    // Placed by its weights, so that position and weights agree exactly.
+    const Triangle& corners = input_.triangles()[piece.input_triangle];
+    Vec3 at{0, 0, 0};
+    for (int c = 0; c < 3; ++c) at = at + weights[c] * input_.positions()[corners[c]];
+    positions_.push_back(at);
+    on_input_.push_back({corners, weights});
+    return it->second;
+  }
+
+  // The pieces of `piece` once the edges marked in `cut` are split; every
+  // piece keeps the orientation of its parent.
+  void cut_piece(const Piece& piece, const std::array<bool, 3>& cut, const std::array<VertexId, 3>& mid,
+                 const std::array<Weights, 3>& mid_weights, std::vector<Piece>& out) const {
+    const auto& p = piece.corners;
+    const auto& w = piece.weights;
+    const std::uint32_t t = piece.input_triangle;
+    const int count = int(cut[0]) + int(cut[1]) + int(cut[2]);
+    if (count == 0) {
+      out.push_back(piece);
+      return;
+    }
+    if (count == 3) {
+      out.push_back({{p[0], mid[2], mid[1]}, t, {w[0], mid_weights[2], mid_weights[1]}});
+      out.push_back({{mid[2], p[1], mid[0]}, t, {mid_weights[2], w[1], mid_weights[0]}});
+      out.push_back({{mid[1], mid[0], p[2]}, t, {mid_weights[1], mid_weights[0], w[2]}});
+      out.push_back({{mid[0], mid[1], mid[2]}, t, {mid_weights[0], mid_weights[1], mid_weights[2]}});
+      return;
+    }
+    if (count == 1) {  // the midpoint joined to the opposite corner k
+      const int k = cut[0] ? 0 : cut[1] ? 1 : 2, a = (k + 1) % 3, b = (k + 2) % 3;
+      out.push_back({{p[k], p[a], mid[k]}, t, {w[k], w[a], mid_weights[k]}});
+      out.push_back({{p[k], mid[k], p[b]}, t, {w[k], mid_weights[k], w[b]}});
+      return;
+    }
+    // Two: the uncut edge is opposite corner k; its ends a, b. The corner
+    // triangle at k, then the quad a, b, mid[a], mid[b] cut along its
+    // shorter diagonal (the first on a tie).
+    const int k = !cut[0] ? 0 : !cut[1] ? 1 : 2, a = (k + 1) % 3, b = (k + 2) % 3;
+    out.push_back({{mid[b], mid[a], p[k]}, t, {mid_weights[b], mid_weights[a], w[k]}});
+    const double a_diagonal = distance(positions_[p[a]], positions_[mid[a]]);
+    const double b_diagonal = distance(positions_[p[b]], positions_[mid[b]]);
+    if (a_diagonal <= b_diagonal) {
+      out.push_back({{p[a], p[b], mid[a]}, t, {w[a], w[b], mid_weights[a]}});
+      out.push_back({{p[a], mid[a], mid[b]}, t, {w[a], mid_weights[a], mid_weights[b]}});
+    } else {
+      out.push_back({{p[a], p[b], mid[b]}, t, {w[a], w[b], mid_weights[b]}});
+      out.push_back({{p[b], mid[a], mid[b]}, t, {w[b], mid_weights[a], mid_weights[b]}});
+    }
+  }
+
+  const SurfaceMesh& input_;
+  std::vector<Vec3> positions_;
+  std::vector<SurfacePoint> on_input_;
+  std::vector<Piece> pieces_;
 };
 
 }  // namespace
 
 RefinedMesh refine_by_midpoints(const SurfaceMesh& input, unsigned levels) {
-  const auto& input_triangles = input.triangles();
-  std::vector<Vec3> positions = input.positions();
-  std::vector<SurfacePoint> on_input(positions.size());
-  std::vector<std::uint8_t> placed(positions.size(), 0);
-  std::vector<Piece> pieces;
-  pieces.reserve(input_triangles.size());
-  for (std::uint32_t t = 0; t < input_triangles.size(); ++t) {
-    const Triangle& corners = input_triangles[t];
-    pieces.push_back({corners, t, {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
-    for (int k = 0; k < 3; ++k) {
-      if (placed[corners[k]]) continue;
-      placed[corners[k]] = 1;
-      on_input[corners[k]] = {corners, pieces.back().weights[k]};
-    }
+  Refiner refiner(input);
+  for (unsigned level = 0; level < levels; ++level) refiner.split_round([](VertexId, VertexId) { return true; });
+  return refiner.finish(levels);
+}
+
+RefinedMesh refine_long_edges(const SurfaceMesh& input, double longest, std::size_t max_vertices) {
+  return refine_by_midpoints_then_long_edges(input, 0, longest, max_vertices);
+}
+
+RefinedMesh refine_by_midpoints_then_long_edges(const SurfaceMesh& input, unsigned levels, double longest,
+                                                std::size_t max_vertices) {
+  Refiner refiner(input);
+  for (unsigned level = 0; level < levels; ++level) refiner.split_round([](VertexId, VertexId) { return true; });
+  const auto too_long = [&](VertexId a, VertexId b) {
+    return distance(refiner.positions()[a], refiner.positions()[b]) > longest;
+  };
+  unsigned rounds = levels;
+  while (true) {
+    const std::size_t splits = refiner.count_edges(too_long);
+    if (splits == 0 || refiner.vertex_count() + splits > max_vertices) break;
+    refiner.split_round(too_long);
+    ++rounds;
   }
-  for (VertexId v = 0; v < positions.size(); ++v) {  // in no triangle: itself
-    if (!placed[v]) on_input[v] = {{v, v, v}, {1, 0, 0}};
-  }
-  for (unsigned level = 0; level < levels; ++level) {
-    std::unordered_map<std::uint64_t, VertexId> midpoint_of_edge;
-    midpoint_of_edge.reserve(pieces.size() * 3 / 2 + 1);
-    std::vector<Piece> finer;
-    finer.reserve(pieces.size() * 4);
-    for (const Piece& piece : pieces) {
-      const Triangle& corner_ids = input_triangles[piece.input_triangle];
-      std::array<VertexId, 3> mid{};
-      std::array<std::array<double, 3>, 3> mid_weights{};
-      for (int k = 0; k < 3; ++k) {  // the midpoint of the edge opposite corner k
-        const int a = (k + 1) % 3, b = (k + 2) % 3;
-        for (int c = 0; c < 3; ++c) mid_weights[k][c] = 0.5 * (piece.weights[a][c] + piece.weights[b][c]);
-        const VertexId u = std::min(piece.corners[a], piece.corners[b]), w = std::max(piece.corners[a], piece.corners[b]);
-        const auto [it, created] = midpoint_of_edge.try_emplace((std::uint64_t(u) << 32) | w, VertexId(positions.size()));
-        mid[k] = it->second;
-        if (!created) continue;
-        // Placed by its weights, so that position and weights agree exactly.
-        Vec3 at{0, 0, 0};
-        for (int c = 0; c < 3; ++c) at = at + mid_weights[k][c] * input.positions()[corner_ids[c]];
-        positions.push_back(at);
-        on_input.push_back({corner_ids, mid_weights[k]});
-      }
-      const auto& [p0, p1, p2] = piece.corners;
-      const auto& w = piece.weights;
-      // The corner triangles keep the orientation, and so does the middle one.
-      finer.push_back({{p0, mid[2], mid[1]}, piece.input_triangle, {w[0], mid_weights[2], mid_weights[1]}});
-      finer.push_back({{mid[2], p1, mid[0]}, piece.input_triangle, {mid_weights[2], w[1], mid_weights[0]}});
-      finer.push_back({{mid[1], mid[0], p2}, piece.input_triangle, {mid_weights[1], mid_weights[0], w[2]}});
-      finer.push_back({{mid[0], mid[1], mid[2]}, piece.input_triangle, {mid_weights[0], mid_weights[1], mid_weights[2]}});
-    }
-    pieces.swap(finer);
-  }
-  std::vector<Triangle> triangles(pieces.size());
-  std::transform(pieces.begin(), pieces.end(), triangles.begin(), [](const Piece& p) { return p.corners; });
-  return {SurfaceMesh(std::move(positions), std::move(triangles)), levels, std::move(on_input)};
+  return refiner.finish(rounds);
 }
 
 }  // namespace meshparticles

@@ -1,8 +1,10 @@
 #pragma once
-// The input surface cut finer: each triangle into four at the midpoints of
-// its edges, `levels` times over. The refined mesh is the input surface
-// exactly (its vertices lie on the input's flat triangles), with 4^levels
-// times the triangles, so particles on its vertices sit anywhere on the
+// The input surface cut finer at the midpoints of its edges, everywhere
+// (each triangle into four, `levels` times over) or where the edges are
+// long (each edge longer than a length split, a triangle with one, two or
+// three split edges into two, three or four, round after round). The
+// refined mesh is the input surface exactly (its vertices lie on the
+// input's flat triangles), so particles on its vertices sit anywhere on the
 // input at that resolution. Each vertex knows where it lies on the input: a
 // triangle of the input and barycentric weights.
 #include <array>
@@ -24,13 +26,25 @@ struct SurfacePoint {
 
 struct RefinedMesh {
   SurfaceMesh mesh;
-  unsigned levels = 0;
+  unsigned levels = 0;  // rounds of splitting
   std::vector<SurfacePoint> on_input;  // per vertex of `mesh`
 };
 
 // `levels` rounds of midpoint subdivision. At 0, the input itself (copied).
 // Vertices 0..V-1 are the input's, in its order.
 RefinedMesh refine_by_midpoints(const SurfaceMesh& input, unsigned levels);
+
+// Splits every edge longer than `longest` at its midpoint, round after
+// round, until none is, or until the next round would pass `max_vertices`
+// (decided before the round, so the mesh never does). Vertices 0..V-1 are
+// the input's. Every vertex has barycentric weights with denominators of at
+// most 2^rounds, so it is also a vertex of refine_by_midpoints at `levels`
+// = the rounds.
+RefinedMesh refine_long_edges(const SurfaceMesh& input, double longest, std::size_t max_vertices);
+// `levels` rounds of refine_by_midpoints (they do not count against
+// `max_vertices`), then refine_long_edges.
+RefinedMesh refine_by_midpoints_then_long_edges(const SurfaceMesh& input, unsigned levels, double longest,
+                                                std::size_t max_vertices);
 
 // The vertex count `levels` rounds give, from the input's counts (exact:
 // V + E new vertices a round, triangles times four).

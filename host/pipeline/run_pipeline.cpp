@@ -33,15 +33,20 @@ std::optional<std::string> paper_only_option(const RunRequest& request) {
   return std::nullopt;
 }
 
+// The working mesh's cap: kSpreadMaxWorkingVertices, or what half the
+// usable memory holds, known before anything is built.
+std::size_t spread_max_working_vertices() {
+  return std::size_t(std::min(double(kSpreadMaxWorkingVertices),
+                              0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex));
+}
+
 // The fewest midpoint rounds that give `per_particle` vertices per
-// particle, short of passing kSpreadMaxWorkingVertices or what half the
-// usable memory holds: checked before anything is built.
-unsigned spread_refinement_levels(const SurfaceMesh& mesh, std::size_t particles, double per_particle) {
-  const double most = std::min(double(kSpreadMaxWorkingVertices),
-                               0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex);
+// particle, short of passing `most` vertices.
+unsigned spread_refinement_levels(const SurfaceMesh& mesh, std::size_t particles, double per_particle,
+                                  std::size_t most) {
   unsigned levels = 0;
   while (double(refined_vertex_count(mesh, levels)) < per_particle * double(particles) &&
-         double(refined_vertex_count(mesh, levels + 1)) <= most) {
+         refined_vertex_count(mesh, levels + 1) <= most) {
     ++levels;
   }
   return levels;
@@ -62,8 +67,10 @@ void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
     throw UserError(*option + " applies to --method paper");
   }
   plan.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
-  plan.refinement_levels = spread_refinement_levels(mesh, request.particles, plan.vertices_per_particle);
-  plan.working_vertices = refined_vertex_count(mesh, plan.refinement_levels);
+  plan.max_working_vertices = std::max(spread_max_working_vertices(), mesh.vertex_count());
+  plan.refinement_levels =
+      spread_refinement_levels(mesh, request.particles, plan.vertices_per_particle, plan.max_working_vertices);
+  plan.longest_edge = kSpreadLongestEdge * hexagonal_spacing(mesh.area(), request.particles);
   // Planned on the input: the working mesh has its area, so the same radius.
   request.distances = spread_distances(request.distances);
   plan.distances = plan_distances(mesh, request.distances, request.particles, false);
@@ -147,7 +154,8 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   result.device = "serial";
   const RunRequest& request = plan.request;
   const auto particles_started = std::chrono::steady_clock::now();
-  auto working = std::make_shared<RefinedMesh>(refine_by_midpoints(mesh, plan.refinement_levels));
+  auto working = std::make_shared<RefinedMesh>(refine_by_midpoints_then_long_edges(
+      mesh, plan.refinement_levels, plan.longest_edge, plan.max_working_vertices));
   result.working = working;
   const SurfaceMesh& surface = working->mesh;
   const auto solver = make_geodesic_solver(surface, request.distances.geodesics.method);

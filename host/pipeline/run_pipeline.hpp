@@ -29,6 +29,10 @@ namespace meshparticles {
 // floors on the committed meshes; more spreads further (higher rho, lower
 // CV) at a larger cover and cost. Measured: docs/ALGORITHM.md.
 inline constexpr double kSpreadVerticesPerParticle = 24;
+// ... and then no edge longer than this many hexagonal spacings (split where
+// they are: on meshes that mix large and small triangles, the closest pairs
+// sat in the large ones; the uniform rounds leave a regular mesh alone).
+inline constexpr double kSpreadLongestEdge = 0.5;
 // spread measures its result through balls of this many hexagonal spacings
 // (unless --cutoff says otherwise): every nearest neighbour lies well within
 // it, and balls of 7 cost five times as much. The energy it reports leaves
@@ -81,8 +85,12 @@ struct RunPlan {
   Method method = Method::spread;
   std::string method_from;     // "--method", "default", or the option that implies paper
   double vertices_per_particle = 0;  // spread: asked of the working mesh
-  unsigned refinement_levels = 0;  // spread: midpoint rounds of the working mesh
-  std::size_t working_vertices = 0;  // spread: the working mesh's vertices
+  // spread: the working mesh is the input after this many midpoint rounds,
+  // then with every edge longer than longest_edge (mesh units) split,
+  // short of max_working_vertices.
+  unsigned refinement_levels = 0;
+  double longest_edge = 0;
+  std::size_t max_working_vertices = 0;
   Scheme scheme = Scheme::colored;
   unsigned colors = kDefaultColors;
   EnergyParams energy;

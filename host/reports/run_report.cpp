@@ -22,8 +22,6 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                              {"method_from", plan.method_from},
                              {"sweeps", request.max_iterations},
                              {"vertices_per_particle", plan.vertices_per_particle},
-                             {"refinement_levels", plan.refinement_levels},
-                             {"working_vertices", plan.working_vertices},
                              {"init", init_name(request.init)},
                              {"seed", request.seed},
                              {"sigma", plan.energy.sigma},
@@ -121,7 +119,8 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
   const SurfaceMesh& working = result.working->mesh;
   nlohmann::json report = {
       {"mesh", mesh_json(mesh, result, mesh_sha256)},
-      {"working_mesh", {{"refinement_levels", result.working->levels},
+      {"working_mesh", {{"refinement_rounds", result.working->levels},
+                        {"longest_edge", result.plan.longest_edge},
                         {"vertices", working.vertex_count()},
                         {"faces", working.triangle_count()},
                         {"vertices_per_particle", double(working.vertex_count()) / double(result.plan.request.particles)}}},
