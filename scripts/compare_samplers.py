@@ -380,28 +380,34 @@ def measure_row(binary, mesh, row, particles, refine=None):
 
 
 def remeasure_at_common_refinement(binary, mesh, rows):
-    """Measure every sample of one mesh and n on the same refined mesh, the finest any of them needed.
+    """Measure every sample of one mesh and n on the same refined mesh.
 
-    `quality` measures points between vertices on a mesh refined by midpoint rounds, the fewest
-    that bring every point near a vertex (`refinement_levels` in its answer; absent from a yardstick
-    without refinement, and then there is nothing to do). Samples on the input's vertices (MeshLab's
-    vertex sampler) need none, but the covering radius is the largest distance from any *measured*
-    vertex, so on the coarse mesh it misses the holes between vertices: at different levels the
-    covers are not comparable (MeshLab vertex on the torus, n = 1024: 0.677 at level 0, 0.917 at 3).
+    `quality` measures points between vertices on a refined mesh (`refinement` in its answer):
+    spread's working mesh when every point lies on it (our default run's particles; MeshLab's
+    vertex samples, on the input's vertices, lie on it too), else the fewest uniform midpoint
+    rounds that bring every point near a vertex (`refinement_levels`). The covering radius is the
+    largest distance from any *measured* vertex, so on different meshes the covers are not
+    comparable (MeshLab vertex on the torus, n = 1024: 0.677 at level 0, 0.917 at 3). Every sample
+    is measured again where the others are: on spread's working mesh if any was measured there
+    (other points are snapped to its vertices, `largest_snap` says how far), else at the finest
+    uniform level any needed. A yardstick without refinement has nothing to do.
     """
     measured = [row for row in rows if "refinement_levels" in row.get("measurement", {})]
-    levels = {row["measurement"]["refinement_levels"] for row in measured}
-    if len(levels) < 2:
+    where = {(row["measurement"].get("refinement", "uniform"), row["measurement"]["refinement_levels"])
+             for row in measured}
+    if len(where) < 2:
         return
-    common = max(levels)
+    spread = any(kind == "spread" for kind, _ in where)
+    common = ("spread", None) if spread else ("uniform", max(levels for _, levels in where))
     for row in measured:
-        auto = row["measurement"]["refinement_levels"]
-        if auto == common:
+        auto = (row["measurement"].get("refinement", "uniform"), row["measurement"]["refinement_levels"])
+        if auto[0] == common[0] and (spread or auto[1] == common[1]):
             continue
-        progress(f"{row['mesh']} n={row['n']}: {row['sampler']}: measured again at refinement {common} (auto {auto})")
-        row.pop("quality")  # a failure must not leave the other level's figures
-        measure_row(binary, mesh, row, row["particles"], refine=common)
-        row.setdefault("measurement", {})["auto_refinement_levels"] = auto
+        refine = "spread" if spread else common[1]
+        progress(f"{row['mesh']} n={row['n']}: {row['sampler']}: measured again at refinement {refine} (auto {auto[0]} {auto[1]})")
+        row.pop("quality")  # a failure must not leave the other mesh's figures
+        measure_row(binary, mesh, row, row["particles"], refine=refine)
+        row.setdefault("measurement", {})["auto_refinement"] = list(auto)
 
 
 def target_checks(rows):
@@ -490,12 +496,12 @@ def results_table(rows):
 
 
 def refinement_summary(rows):
-    """"sphere.off n=256: 1, ..." from the yardstick's answers ("" when it does not refine)."""
+    """"sphere.off n=256: spread 1, ..." from the yardstick's answers ("" when it does not refine)."""
     levels = {}
     for row in rows:
         level = row.get("measurement", {}).get("refinement_levels")
         if level is not None:
-            levels[f"{row['mesh']} n={row['n']}"] = level
+            levels[f"{row['mesh']} n={row['n']}"] = f"{row['measurement'].get('refinement', 'uniform')} {level}"
     return ", ".join(f"{case}: {level}" for case, level in levels.items())
 
 
@@ -645,7 +651,7 @@ def main(argv):
           f"{options.repeat} timing repetition{'s' if options.repeat > 1 else ''}")
     levels = refinement_summary(rows)
     if levels:
-        print(f"yardstick's midpoint refinement rounds: {levels}")
+        print(f"yardstick's measuring mesh (spread's working mesh or uniform midpoint rounds): {levels}")
     for note in skipped:
         print(f"note: {note['note']}")
     if options.json:

@@ -201,8 +201,7 @@ TEST_P(SpreadImproves, OnTheFarthestStart) {
   RunRequest request;  // the working mesh a run would take
   request.particles = kParticles;
   const RunPlan plan = plan_run(input, request);
-  const RefinedMesh working =
-      refine_by_midpoints_then_long_edges(input, plan.refinement_levels, plan.longest_edge, plan.max_working_vertices);
+  const RefinedMesh working = build_working_mesh(input, plan.working_mesh);
   const auto solver = make_geodesic_solver(working.mesh, GeodesicMethod::fast_marching);
   const auto start = place_particles(working.mesh, {Init::farthest, kParticles, 1, std::nullopt});
   const double min_gain = kSpreadMinGain * hexagonal_spacing(input.area(), kParticles);
@@ -239,13 +238,14 @@ TEST(SpreadPlan, DefaultsAndImpliedMethod) {
   RunPlan plan = plan_run(mesh, request);
   EXPECT_EQ(plan.method, Method::spread);
   EXPECT_EQ(plan.method_from, "default");
-  EXPECT_DOUBLE_EQ(plan.longest_edge, kSpreadLongestEdge * hexagonal_spacing(mesh.area(), 200));
-  EXPECT_GE(plan.max_working_vertices, mesh.vertex_count());
-  EXPECT_GE(double(refined_vertex_count(mesh, plan.refinement_levels)), kSpreadVerticesPerParticle * 200);
-  EXPECT_LT(double(refined_vertex_count(mesh, plan.refinement_levels - 1)), kSpreadVerticesPerParticle * 200);
+  const WorkingMeshPlan& working = plan.working_mesh;
+  EXPECT_DOUBLE_EQ(working.longest_edge, kSpreadLongestEdge * hexagonal_spacing(mesh.area(), 200));
+  EXPECT_GE(working.max_vertices, mesh.vertex_count());
+  EXPECT_GE(double(refined_vertex_count(mesh, working.levels)), kSpreadVerticesPerParticle * 200);
+  EXPECT_LT(double(refined_vertex_count(mesh, working.levels - 1)), kSpreadVerticesPerParticle * 200);
 
   request.vertices_per_particle = 100;  // asked for: more rounds
-  EXPECT_GT(plan_run(mesh, request).refinement_levels, plan.refinement_levels);
+  EXPECT_GT(plan_run(mesh, request).working_mesh.levels, working.levels);
   request.vertices_per_particle.reset();
 
   request.scheme = Scheme::sequential;

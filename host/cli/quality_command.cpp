@@ -30,9 +30,9 @@ struct QualityOptions {
   DistanceStoreOptions store;
 };
 
-std::optional<unsigned> parse_refine(const std::string& refine) {
-  if (refine == "auto") return std::nullopt;
-  return unsigned(std::stoul(refine));  // the option's validator admits "auto" or 0..8
+std::optional<unsigned> uniform_levels(const std::string& refine) {
+  if (refine == "auto" || refine == "spread") return std::nullopt;
+  return unsigned(std::stoul(refine));  // the option's validator admits auto, spread or 0..8
 }
 
 void run_quality(const QualityOptions& options) {
@@ -42,8 +42,9 @@ void run_quality(const QualityOptions& options) {
   for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
   if (options.sigma) check_sigma_computable({parse_potential(options.potential), *options.sigma});
   // Points between the input's vertices are measured where they lie on vertices.
-  const RefinedMesh measuring = measuring_mesh(input, points, parse_refine(options.refine));
-  const SurfaceMesh& mesh = measuring.mesh;
+  const MeasuringMesh measuring =
+      measuring_mesh(input, points, uniform_levels(options.refine), options.refine == "spread");
+  const SurfaceMesh& mesh = measuring.refined.mesh;
   const GeodesicMethod method = parse_method(options.geodesic);
   // A local store's cutoff scales with the spacing of the set with the fewest particles (the widest).
   std::size_t fewest = points.front().size();
@@ -68,7 +69,8 @@ void run_quality(const QualityOptions& options) {
   }
   if (options.json) {
     nlohmann::json out = {{"mesh", options.mesh},
-                          {"refinement_levels", measuring.levels},
+                          {"refinement", measuring.spread ? "spread" : "uniform"},
+                          {"refinement_levels", measuring.refined.levels},
                           {"measured_vertices", mesh.vertex_count()}};
     if (comparing) {
       out["a"] = measured_set_json(sets[0]);
@@ -83,9 +85,9 @@ void run_quality(const QualityOptions& options) {
   }
   std::cout << "mesh " << options.mesh << " (" << input.vertex_count() << " vertices, mean edge "
             << input.mean_edge_length() << "); geodesic distances, " << potential_name(potential) << " potential";
-  if (measuring.levels > 0) {
-    std::cout << "; measured on the mesh refined " << measuring.levels << " times (" << mesh.vertex_count()
-              << " vertices)";
+  if (measuring.refined.levels > 0) {
+    std::cout << "; measured on " << (measuring.spread ? "spread's working mesh" : "the mesh refined uniformly")
+              << " (" << measuring.refined.levels << " rounds, " << mesh.vertex_count() << " vertices)";
   }
   std::cout << "\n\n";
   std::vector<const MeasuredSet*> columns;
@@ -108,9 +110,10 @@ void add_shared_options(CLI::App& command, QualityOptions& options) {
   add_distance_table_options(command, options.table);
   command
       .add_option("--refine", options.refine,
-                  "Midpoint rounds of the mesh the points are measured on: auto (the fewest that put every point "
-                  "within 0.5% of a spacing of a vertex) or 0 to 8")
-      ->check(CLI::IsMember({"auto", "0", "1", "2", "3", "4", "5", "6", "7", "8"}))
+                  "The refined mesh the points are measured on: auto (spread's working mesh if every point lies on "
+                  "it, else the fewest uniform midpoint rounds that put every point within 0.5% of a spacing of a "
+                  "vertex), spread (that working mesh), or 0 to 8 uniform rounds")
+      ->check(CLI::IsMember({"auto", "spread", "0", "1", "2", "3", "4", "5", "6", "7", "8"}))
       ->capture_default_str();
 }
 

@@ -7,7 +7,6 @@
 #include "backends/backend_table.hpp"
 #include "backends/local_device_field_backend.hpp"
 #include "common/user_error.hpp"
-#include "geodesics/memory_guard.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/sigma_check.hpp"
@@ -33,25 +32,6 @@ std::optional<std::string> paper_only_option(const RunRequest& request) {
   return std::nullopt;
 }
 
-// The working mesh's cap: kSpreadMaxWorkingVertices, or what half the
-// usable memory holds, known before anything is built.
-std::size_t spread_max_working_vertices() {
-  return std::size_t(std::min(double(kSpreadMaxWorkingVertices),
-                              0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex));
-}
-
-// The fewest midpoint rounds that give `per_particle` vertices per
-// particle, short of passing `most` vertices.
-unsigned spread_refinement_levels(const SurfaceMesh& mesh, std::size_t particles, double per_particle,
-                                  std::size_t most) {
-  unsigned levels = 0;
-  while (double(refined_vertex_count(mesh, levels)) < per_particle * double(particles) &&
-         refined_vertex_count(mesh, levels + 1) <= most) {
-    ++levels;
-  }
-  return levels;
-}
-
 // spread reads distances only to measure the result: local balls around
 // the particles, unless the dense table is asked for.
 DistancesRequest spread_distances(const DistancesRequest& request) {
@@ -67,10 +47,7 @@ void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
     throw UserError(*option + " applies to --method paper");
   }
   plan.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
-  plan.max_working_vertices = std::max(spread_max_working_vertices(), mesh.vertex_count());
-  plan.refinement_levels =
-      spread_refinement_levels(mesh, request.particles, plan.vertices_per_particle, plan.max_working_vertices);
-  plan.longest_edge = kSpreadLongestEdge * hexagonal_spacing(mesh.area(), request.particles);
+  plan.working_mesh = plan_working_mesh(mesh, request.particles, plan.vertices_per_particle);
   // Planned on the input: the working mesh has its area, so the same radius.
   request.distances = spread_distances(request.distances);
   plan.distances = plan_distances(mesh, request.distances, request.particles, false);
@@ -154,8 +131,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   result.device = "serial";
   const RunRequest& request = plan.request;
   const auto particles_started = std::chrono::steady_clock::now();
-  auto working = std::make_shared<RefinedMesh>(refine_by_midpoints_then_long_edges(
-      mesh, plan.refinement_levels, plan.longest_edge, plan.max_working_vertices));
+  auto working = std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.working_mesh));
   result.working = working;
   const SurfaceMesh& surface = working->mesh;
   const auto solver = make_geodesic_solver(surface, request.distances.geodesics.method);

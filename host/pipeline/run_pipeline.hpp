@@ -19,20 +19,11 @@
 #include "particles/farthest_point_optimization.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
+#include "particles/spread_working_mesh.hpp"
 #include "quality/distribution_quality.hpp"
 
 namespace meshparticles {
 
-// spread: the working mesh has at least this many vertices per particle
-// (the input refined by midpoints until it does) unless
-// --vertices-per-particle says otherwise: the fewest that met the issue's
-// floors on the committed meshes; more spreads further (higher rho, lower
-// CV) at a larger cover and cost. Measured: docs/ALGORITHM.md.
-inline constexpr double kSpreadVerticesPerParticle = 24;
-// ... and then no edge longer than this many hexagonal spacings (split where
-// they are: on meshes that mix large and small triangles, the closest pairs
-// sat in the large ones; the uniform rounds leave a regular mesh alone).
-inline constexpr double kSpreadLongestEdge = 0.5;
 // spread measures its result through balls of this many hexagonal spacings
 // (unless --cutoff says otherwise): every nearest neighbour lies well within
 // it, and balls of 7 cost five times as much. The energy it reports leaves
@@ -44,13 +35,6 @@ inline constexpr double kSpreadMinGain = 1e-3;
 // spread stops when a sweep raises the mean spacing by less than this many
 // hexagonal spacings.
 inline constexpr double kSpreadStallGain = 1e-4;
-// ... unless that would pass this many vertices (time grows with them: the
-// 1M sphere at n = 100,000 takes 4M, 101 s against 31 s unrefined, for rho
-// 0.78 against 0.69), or half the usable memory at this many bytes a
-// vertex (measured peak of that run: 4.46 GB for 3,994,242 vertices).
-inline constexpr std::size_t kSpreadMaxWorkingVertices = 5'000'000;
-inline constexpr double kSpreadBytesPerWorkingVertex = 1200;
-
 struct RunRequest {
   std::string mesh_label;  // names the mesh in messages and reports: its path
   std::size_t particles = 1024;
@@ -85,12 +69,7 @@ struct RunPlan {
   Method method = Method::spread;
   std::string method_from;     // "--method", "default", or the option that implies paper
   double vertices_per_particle = 0;  // spread: asked of the working mesh
-  // spread: the working mesh is the input after this many midpoint rounds,
-  // then with every edge longer than longest_edge (mesh units) split,
-  // short of max_working_vertices.
-  unsigned refinement_levels = 0;
-  double longest_edge = 0;
-  std::size_t max_working_vertices = 0;
+  WorkingMeshPlan working_mesh;      // spread
   Scheme scheme = Scheme::colored;
   unsigned colors = kDefaultColors;
   EnergyParams energy;

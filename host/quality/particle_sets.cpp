@@ -2,22 +2,31 @@
 
 #include <algorithm>
 
+#include "particles/spread_working_mesh.hpp"
+
 namespace meshparticles {
 
-RefinedMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vector<Vec3>>& sets,
-                           std::optional<unsigned> levels) {
-  if (levels) return refine_by_midpoints(mesh, *levels);
+MeasuringMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vector<Vec3>>& sets,
+                             std::optional<unsigned> uniform_levels, bool spread) {
+  if (uniform_levels) return {refine_by_midpoints(mesh, *uniform_levels), false};
   std::size_t fewest = mesh.vertex_count();
   for (const auto& set : sets) fewest = std::min(fewest, set.size());
-  const double tolerance = kOnVertex * hexagonal_spacing(mesh.area(), std::max<std::size_t>(fewest, 1));
+  fewest = std::max<std::size_t>(fewest, 1);
+  const double tolerance = kOnVertex * hexagonal_spacing(mesh.area(), fewest);
+  const auto on_vertices = [&](const SurfaceMesh& refined) {
+    return std::all_of(sets.begin(), sets.end(), [&](const std::vector<Vec3>& set) {
+      return snap_to_vertices(refined, set).largest_snap <= tolerance;
+    });
+  };
+  MeasuringMesh working{build_working_mesh(mesh, plan_working_mesh(mesh, fewest, kSpreadVerticesPerParticle)), true};
+  if (spread || on_vertices(working.refined.mesh)) return working;
   const double most = std::min(double(kMeasuringMaxVertices),
                                std::max(double(mesh.vertex_count()), kMeasuringVerticesPerParticle * double(fewest)));
   for (unsigned level = 0;; ++level) {
     RefinedMesh refined = refine_by_midpoints(mesh, level);
-    const bool on_vertices = std::all_of(sets.begin(), sets.end(), [&](const std::vector<Vec3>& set) {
-      return snap_to_vertices(refined.mesh, set).largest_snap <= tolerance;
-    });
-    if (on_vertices || double(refined_vertex_count(mesh, level + 1)) > most) return refined;
+    if (on_vertices(refined.mesh) || double(refined_vertex_count(mesh, level + 1)) > most) {
+      return {std::move(refined), false};
+    }
   }
 }
 

@@ -19,18 +19,24 @@ struct MeasuredSet {
 };
 
 // Points between vertices (a spread run's, or another tool's on the
-// surface) are measured on the mesh refined by midpoints, where they lie on
-// vertices or close to them: `levels` rounds when given, else the fewest at
-// which every point of every set lies within kOnVertex hexagonal spacings
-// of a vertex (a nearest-neighbour distance then moves by at most twice
-// that by snapping), stopping short of kMeasuringVerticesPerParticle
-// vertices per particle of the smallest set (and of
-// kMeasuringMaxVertices). Round 0 is the mesh itself.
+// surface) are measured on a refined mesh where they lie on vertices or
+// close to them (within kOnVertex hexagonal spacings: a nearest-neighbour
+// distance then moves by at most twice that by snapping). `uniform_levels`
+// given: that many midpoint rounds everywhere. `spread`: the working mesh a
+// default spread run of the smallest set's n takes. Neither (auto): that
+// working mesh if every point of every set lies on it, else the fewest
+// uniform rounds at which every point does, stopping short of
+// kMeasuringVerticesPerParticle vertices per particle of the smallest set
+// (and of kMeasuringMaxVertices). Round 0 is the mesh itself.
 inline constexpr double kOnVertex = 0.005;
 inline constexpr double kMeasuringVerticesPerParticle = 100;
 inline constexpr std::size_t kMeasuringMaxVertices = 2'000'000;
-RefinedMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vector<Vec3>>& sets,
-                           std::optional<unsigned> levels);
+struct MeasuringMesh {
+  RefinedMesh refined;
+  bool spread = false;  // the spread working mesh, else uniform rounds
+};
+MeasuringMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vector<Vec3>>& sets,
+                             std::optional<unsigned> uniform_levels, bool spread);
 
 // `points`: read_particle_points(path), read by the caller before the
 // distances so that a bad file fails fast.

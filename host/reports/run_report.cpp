@@ -120,7 +120,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
   nlohmann::json report = {
       {"mesh", mesh_json(mesh, result, mesh_sha256)},
       {"working_mesh", {{"refinement_rounds", result.working->levels},
-                        {"longest_edge", result.plan.longest_edge},
+                        {"longest_edge", result.plan.working_mesh.longest_edge},
                         {"vertices", working.vertex_count()},
                         {"faces", working.triangle_count()},
                         {"vertices_per_particle", double(working.vertex_count()) / double(result.plan.request.particles)}}},

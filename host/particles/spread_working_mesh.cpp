@@ -1,0 +1,28 @@
+#include "particles/spread_working_mesh.hpp"
+
+#include <algorithm>
+
+#include "geodesics/memory_guard.hpp"
+#include "particles/particle_params.hpp"
+
+namespace meshparticles {
+
+WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particles, double vertices_per_particle) {
+  WorkingMeshPlan plan;
+  plan.max_vertices = std::max(
+      std::size_t(std::min(double(kSpreadMaxWorkingVertices),
+                           0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex)),
+      input.vertex_count());
+  while (double(refined_vertex_count(input, plan.levels)) < vertices_per_particle * double(particles) &&
+         refined_vertex_count(input, plan.levels + 1) <= plan.max_vertices) {
+    ++plan.levels;
+  }
+  plan.longest_edge = kSpreadLongestEdge * hexagonal_spacing(input.area(), particles);
+  return plan;
+}
+
+RefinedMesh build_working_mesh(const SurfaceMesh& input, const WorkingMeshPlan& plan) {
+  return refine_by_midpoints_then_long_edges(input, plan.levels, plan.longest_edge, plan.max_vertices);
+}
+
+}  // namespace meshparticles
