@@ -16,29 +16,9 @@ double mean(const std::vector<IterationRecord>& trace, double IterationRecord::*
 
 nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& out) {
   const RunRequest& request = plan.request;
-  if (plan.method == Method::spread) {
-    nlohmann::json params = {{"n", request.particles},
-                             {"method", method_option_name(plan.method)},
-                             {"method_from", plan.method_from},
-                             {"sweeps", request.max_iterations},
-                             {"vertices_per_particle", plan.vertices_per_particle},
-                             {"init", init_name(request.init)},
-                             {"seed", request.seed},
-                             {"sigma", plan.energy.sigma},
-                             {"sigma_from", request.sigma ? "--sigma" : "default rule"},
-                             {"potential", potential_name(plan.energy.potential)},
-                             {"geodesic", method_name(request.distances.geodesics.method)},
-                             {"out", out.string()}};
-    if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
-    return params;
-  }
   nlohmann::json params = {{"n", request.particles},
                            {"method", method_option_name(plan.method)},
                            {"method_from", plan.method_from},
-                           {"iterations", request.max_iterations},
-                           {"backend", plan.backend.name()},
-                           {"backend_from", plan.backend_from},
-                           {"scheme", scheme_name(plan.scheme)},
                            {"init", init_name(request.init)},
                            {"seed", request.seed},
                            {"sigma", plan.energy.sigma},
@@ -46,12 +26,21 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                            {"potential", potential_name(plan.energy.potential)},
                            {"geodesic", method_name(request.distances.geodesics.method)},
                            {"out", out.string()}};
+  if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
+  if (plan.method == Method::spread) {
+    params["sweeps"] = request.max_iterations;
+    params["vertices_per_particle"] = plan.vertices_per_particle;
+    return params;
+  }
+  params["iterations"] = request.max_iterations;
+  params["backend"] = plan.backend.name();
+  params["backend_from"] = plan.backend_from;
+  params["scheme"] = scheme_name(plan.scheme);
   if (uses_colors(plan.scheme)) params["colors"] = plan.colors;
   if (plan.backend.descriptor->field_method) {
     params["weights"] = weight_format_name(plan.backend.weights);
     params["rebuild_every"] = plan.backend.rebuild_every;
   }
-  if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
   if (const auto& kernel = plan.backend.kernel) {
     params["wg"] = kernel->work_group_size;
     if (kernel->spec().takes_tile) params["tile"] = kernel->tile_size;
