@@ -37,7 +37,7 @@ std::optional<std::string> paper_only_option(const RunRequest& request) {
 DistancesRequest spread_distances(const DistancesRequest& request) {
   DistancesRequest spread = request;
   if (spread.kind == StoreKind::automatic) spread.kind = StoreKind::local;
-  if (spread.cutoff == kDefaultCutoff) spread.cutoff = kSpreadQualityCutoff;
+  if (spread.cutoff == kDefaultCutoff) spread.cutoff = kSpreadQualityCutoff;  // --cutoff absent (or 7)
   return spread;
 }
 
