@@ -17,6 +17,22 @@ VertexId SurfacePoint::nearest_corner(const SurfaceMesh& input) const {
   return corners[best];
 }
 
+std::vector<SurfacePoint> vertex_surface_points(const SurfaceMesh& mesh) {
+  std::vector<SurfacePoint> points(mesh.vertex_count());
+  std::vector<std::uint8_t> placed(mesh.vertex_count(), 0);
+  for (const Triangle& corners : mesh.triangles()) {
+    for (int k = 0; k < 3; ++k) {
+      if (placed[corners[k]]) continue;
+      placed[corners[k]] = 1;
+      points[corners[k]] = {corners, {k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0}};
+    }
+  }
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    if (!placed[v]) points[v] = {{v, v, v}, {1, 0, 0}};
+  }
+  return points;
+}
+
 std::size_t refined_vertex_count(const SurfaceMesh& input, unsigned levels) {
   // Each round adds a vertex per edge; a closed or open triangle mesh has
   // E' = 2E + 3F edges and F' = 4F faces after it.
@@ -51,20 +67,12 @@ std::uint64_t edge_key(VertexId a, VertexId b) {
 // both pieces along an edge see the same decision).
 class Refiner {
  public:
-  explicit Refiner(const SurfaceMesh& input) : input_(input), positions_(input.positions()), on_input_(positions_.size()) {
-    std::vector<std::uint8_t> placed(positions_.size(), 0);
+  explicit Refiner(const SurfaceMesh& input)
+      : input_(input), positions_(input.positions()), on_input_(vertex_surface_points(input)) {
     const auto& triangles = input.triangles();
     pieces_.reserve(triangles.size());
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
       pieces_.push_back({triangles[t], t, {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
-      for (int k = 0; k < 3; ++k) {
-        if (placed[triangles[t][k]]) continue;
-        placed[triangles[t][k]] = 1;
-        on_input_[triangles[t][k]] = {triangles[t], pieces_.back().weights[k]};
-      }
-    }
-    for (VertexId v = 0; v < positions_.size(); ++v) {  // in no triangle: itself
-      if (!placed[v]) on_input_[v] = {{v, v, v}, {1, 0, 0}};
     }
   }
 

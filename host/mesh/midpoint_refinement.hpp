@@ -24,6 +24,10 @@ struct SurfacePoint {
   VertexId nearest_corner(const SurfaceMesh& input) const;
 };
 
+// Each vertex of `mesh` as a point of it: the first triangle holding it,
+// with all the weight on that corner (a vertex in no triangle: itself, thrice).
+std::vector<SurfacePoint> vertex_surface_points(const SurfaceMesh& mesh);
+
 struct RefinedMesh {
   SurfaceMesh mesh;
   unsigned levels = 0;  // rounds of splitting
