@@ -382,9 +382,10 @@ def measure_row(binary, mesh, row, particles, refine=None):
 def remeasure_at_common_refinement(binary, mesh, rows):
     """Measure every sample of one mesh and n on the same refined mesh.
 
-    `quality` measures points between vertices on a refined mesh (`refinement` in its answer):
-    spread's working mesh when every point lies on it (our default run's particles; MeshLab's
-    vertex samples, on the input's vertices, lie on it too), else the fewest uniform midpoint
+    `quality` measures points on the input's vertices on the input itself (MeshLab's vertex
+    samples), and points between them on a refined mesh (`refinement` in its answer): spread's
+    working mesh when every point lies on it (our default run's particles; it holds the input's
+    vertices too), else the fewest uniform midpoint
     rounds that bring every point near a vertex (`refinement_levels`). The covering radius is the
     largest distance from any *measured* vertex, so on different meshes the covers are not
     comparable (MeshLab vertex on the torus, n = 1024: 0.677 at level 0, 0.917 at 3). Every sample

@@ -110,9 +110,10 @@ void add_shared_options(CLI::App& command, QualityOptions& options) {
   add_distance_table_options(command, options.table);
   command
       .add_option("--refine", options.refine,
-                  "The refined mesh the points are measured on: auto (spread's working mesh if every point lies on "
-                  "it, else the fewest uniform midpoint rounds that put every point within 0.5% of a spacing of a "
-                  "vertex), spread (that working mesh), or 0 to 8 uniform rounds")
+                  "The refined mesh the points are measured on: auto (the mesh itself if every point lies on its "
+                  "vertices, else spread's working mesh if they lie on it, else the fewest uniform midpoint rounds "
+                  "that put every point within 0.5% of a spacing of a vertex), spread (that working mesh), or 0 to "
+                  "8 uniform rounds")
       ->check(CLI::IsMember({"auto", "spread", "0", "1", "2", "3", "4", "5", "6", "7", "8"}))
       ->capture_default_str();
 }

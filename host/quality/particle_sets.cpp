@@ -18,13 +18,16 @@ MeasuringMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vec
       return snap_to_vertices(refined, set).largest_snap <= tolerance;
     });
   };
+  // Points on the input's vertices (a paper run's, a vertex sampler's) are
+  // measured on the input, as the paper run measured them itself.
+  if (!spread && on_vertices(mesh)) return {refine_by_midpoints(mesh, 0), false};
   MeasuringMesh working{build_working_mesh(mesh, plan_working_mesh(mesh, fewest, kSpreadVerticesPerParticle)), true};
   if (spread || on_vertices(working.refined.mesh)) return working;
   const double most = std::min(double(kMeasuringMaxVertices),
                                std::max(double(mesh.vertex_count()), kMeasuringVerticesPerParticle * double(fewest)));
-  for (unsigned level = 0;; ++level) {
+  for (unsigned level = 0;; ++level) {  // (round 0, the mesh itself, is known to miss)
     RefinedMesh refined = refine_by_midpoints(mesh, level);
-    if (on_vertices(refined.mesh) || double(refined_vertex_count(mesh, level + 1)) > most) {
+    if ((level > 0 && on_vertices(refined.mesh)) || double(refined_vertex_count(mesh, level + 1)) > most) {
       return {std::move(refined), false};
     }
   }

@@ -23,9 +23,10 @@ struct MeasuredSet {
 // close to them (within kOnVertex hexagonal spacings: a nearest-neighbour
 // distance then moves by at most twice that by snapping). `uniform_levels`
 // given: that many midpoint rounds everywhere. `spread`: the working mesh a
-// default spread run of the smallest set's n takes. Neither (auto): that
-// working mesh if every point of every set lies on it, else the fewest
-// uniform rounds at which every point does, stopping short of
+// default spread run of the smallest set's n takes. Neither (auto): the
+// mesh itself if every point of every set lies on its vertices, else that
+// working mesh if they lie on it, else the fewest uniform rounds at which
+// every point does, stopping short of
 // kMeasuringVerticesPerParticle vertices per particle of the smallest set
 // (and of kMeasuringMaxVertices). Round 0 is the mesh itself.
 inline constexpr double kOnVertex = 0.005;
