@@ -111,20 +111,34 @@ Ball GeodesicSolver::solve_ball(VertexId source, double radius, SolverScratch& s
   return ball;
 }
 
-void GeodesicSolver::lower_nearest(VertexId source, std::span<float> nearest, SolverScratch& scratch,
-                                   std::vector<VertexId>& lowered) const {
-  scratch.fit(vertex_count_);
-  march(std::span<const VertexId>(&source, 1), scratch.distances, scratch, kNoDistanceLimit, nearest);
+namespace {
+
+// After a march bounded by `nearest`: lowers nearest[v] where the march
+// found v nearer, lists those vertices (and, given `sources`, the source
+// each now measures from), and leaves the scratch clean.
+void keep_nearer(std::span<float> nearest, SolverScratch& scratch, std::vector<VertexId>& lowered,
+                 std::vector<std::uint32_t>* sources) {
   lowered.clear();
+  if (sources) sources->clear();
   for (const VertexId v : scratch.touched) {
     if (scratch.accepted[v] && float(scratch.distances[v]) < nearest[v]) {
       nearest[v] = float(scratch.distances[v]);
       lowered.push_back(v);
+      if (sources) sources->push_back(scratch.origin[v]);
     }
     scratch.distances[v] = std::numeric_limits<double>::infinity();
     scratch.accepted[v] = 0;
   }
   scratch.touched.clear();
+}
+
+}  // namespace
+
+void GeodesicSolver::lower_nearest(VertexId source, std::span<float> nearest, SolverScratch& scratch,
+                                   std::vector<VertexId>& lowered) const {
+  scratch.fit(vertex_count_);
+  march(std::span<const VertexId>(&source, 1), scratch.distances, scratch, kNoDistanceLimit, nearest);
+  keep_nearer(nearest, scratch, lowered, nullptr);
 }
 
 void GeodesicSolver::lower_nearest_from(std::span<const VertexId> rim, std::span<const std::uint32_t> rim_sources,
@@ -137,18 +151,7 @@ void GeodesicSolver::lower_nearest_from(std::span<const VertexId> rim, std::span
     scratch.touched.push_back(v);
   }
   march(rim, scratch.distances, scratch, kNoDistanceLimit, nearest, rim_sources);
-  lowered.clear();
-  lowered_sources.clear();
-  for (const VertexId v : scratch.touched) {
-    if (scratch.accepted[v] && float(scratch.distances[v]) < nearest[v]) {
-      nearest[v] = float(scratch.distances[v]);
-      lowered.push_back(v);
-      lowered_sources.push_back(scratch.origin[v]);
-    }
-    scratch.distances[v] = std::numeric_limits<double>::infinity();
-    scratch.accepted[v] = 0;
-  }
-  scratch.touched.clear();
+  keep_nearer(nearest, scratch, lowered, &lowered_sources);
 }
 
 std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {
