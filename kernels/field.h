@@ -61,4 +61,37 @@ static inline void choose_and_claim(__private float* energies, __private const u
   claim_target(claims, c, here, target);
 }
 
+// Particle c's decision from the field: every candidate's energy is
+// E_c(v) = F(v) - W[p_c][v], two reads, where the direct-sum kernels sum
+// over all n particles. W is symmetric, so W[p_c][v] is read from row p_c at
+// the candidates' nearby columns. One work-item decides for one particle, so
+// its scratch is private: no __local memory, which would limit how many
+// work-groups a GPU runs at once.
+static inline void field_decide(uint c, __global const long* field, __global const weight_t* weights,
+                                uint vertex_count, __global const uint* ring_offsets,
+                                __global const uint* ring_neighbors, __global const uint* occupancy,
+                                __global const uint* positions, uint rank_stacks, __global uint* chosen,
+                                __global uint* claims) {
+  float energies[CANDIDATE_SLOTS];
+  uchar occupied[CANDIDATE_SLOTS];
+  const uint here = positions[c];
+  const uint count = candidate_count(ring_offsets, here);
+  __global const weight_t* own_row = weights + (ulong)here * vertex_count;
+  for (uint j = 0; j < count; ++j) {
+    const uint v = candidate_vertex(ring_offsets, ring_neighbors, here, j);
+    energies[j] = field_energy(field[v] - field_units(stored_weight(own_row, v)));
+    occupied[j] = occupancy[v] > (j == 0 ? 1u : 0u);  // c itself sits on candidate 0
+  }
+  choose_and_claim(energies, occupied, count, c, here, ring_offsets, ring_neighbors, occupancy, positions,
+                   rank_stacks, chosen, claims);
+}
+
+// E_c(p_c) = F(p_c) - W[p_c][p_c] in field units: what particle c feels
+// where it is. Half the sum over particles is the total pair energy.
+static inline long particle_energy_units(uint c, __global const long* field, __global const weight_t* weights,
+                                         uint vertex_count, __global const uint* positions) {
+  const uint p = positions[c];
+  return field[p] - field_units(stored_weight(weights, (ulong)p * vertex_count + p));
+}
+
 #endif
