@@ -40,8 +40,9 @@ struct DeviceKernelSpec {
   std::vector<std::string> program_files;  // every kernel file of the backend's one program
   bool takes_tile = false;                 // TILE_SIZE (--tile)
   bool takes_weight_format = false;        // WEIGHTS_HALF (--weights)
-  // Sets the built-in work-group (and tile) size for `kernel.candidate_slots`.
-  std::function<void(UpdateKernel& kernel)> default_sizes;
+  // Sets the built-in work-group (and tile) size for `kernel.candidate_slots`
+  // on a device of `device_type` ("GPU", "CPU", ...: DeviceDescription::type).
+  std::function<void(UpdateKernel& kernel, const std::string& device_type)> default_sizes;
   // The particles one work-group updates.
   std::function<std::size_t(const UpdateKernel& kernel)> particles_per_group;
   // The kernel's __local arrays, in bytes (checked before building; the

@@ -102,7 +102,8 @@ CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& m
   if (!backend.on_device()) return checked;
 
   checked.device = select_device(request.device);
-  UpdateKernel kernel = default_update_kernel(backend, mesh.max_valence() + 1, checked.device->max_work_group_size);
+  UpdateKernel kernel = default_update_kernel(backend, mesh.max_valence() + 1, checked.device->max_work_group_size,
+                                              checked.device->type);
   kernel.weights = checked.weights;
   checked.sizes_from = "built-in default";
   if (request.work_group_size || request.tile_size) {

@@ -35,20 +35,20 @@ void check_device_memory(const DeviceDescription& device, const UpdateKernel& ke
                    "the memory of " + device.name + " (after its other buffers)");
 }
 
+double device_milliseconds(const cl::Event& event) {
+  return double(event.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                event.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-6;
+}
+
 namespace {
 
 cl_uint particles_of_color(cl_uint particle_count, cl_uint color, cl_uint colors) {
   return color < particle_count ? (particle_count - color + colors - 1) / colors : 0;
 }
 
-double event_milliseconds(const cl::Event& event) {
-  return double(event.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                event.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-6;
-}
-
 double total_milliseconds(const std::vector<cl::Event>& events) {
   double milliseconds = 0;
-  for (const auto& event : events) milliseconds += event_milliseconds(event);
+  for (const auto& event : events) milliseconds += device_milliseconds(event);
   return milliseconds;
 }
 
@@ -117,9 +117,30 @@ cl::Event DeviceBackend::launch_update(cl::Kernel& update, cl_uint color_arg, cl
   update.setArg(color_arg + 2, rank_stacks);
   const std::size_t work_group = kernel_.work_group_size;
   cl::Event event;
-  queue_.enqueueNDRangeKernel(update, cl::NullRange, cl::NDRange(kernel_.work_groups_for(particles) * work_group),
-                              cl::NDRange(work_group), nullptr, &event);
+  launch(update, cl::NDRange(kernel_.work_groups_for(particles) * work_group), cl::NDRange(work_group), &event);
   return event;
+}
+
+void DeviceBackend::launch(const cl::Kernel& kernel, const cl::NDRange& global, const cl::NDRange& local,
+                           cl::Event* event) {
+  queue_.enqueueNDRangeKernel(kernel, cl::NullRange, global, local, nullptr, event);
+  ++traffic_.launches;
+}
+
+void DeviceBackend::read_blocking(const cl::Buffer& buffer, std::size_t offset, std::size_t bytes, void* into) {
+  queue_.enqueueReadBuffer(buffer, CL_TRUE, offset, bytes, into);
+  ++traffic_.host_waits;
+}
+
+void DeviceBackend::write_blocking(const cl::Buffer& buffer, std::size_t offset, std::size_t bytes,
+                                   const void* from) {
+  queue_.enqueueWriteBuffer(buffer, CL_TRUE, offset, bytes, from);
+  ++traffic_.host_waits;
+}
+
+void DeviceBackend::wait_for_device() {
+  queue_.finish();
+  ++traffic_.host_waits;
 }
 
 void DeviceBackend::reset_claims() {
@@ -144,19 +165,19 @@ void DeviceBackend::set_positions(std::span<const VertexId> positions) {
     apply_moves_.setArg(6, move_counts_);
     apply_moves_.setArg(7, moves_);
   }
-  queue_.enqueueWriteBuffer(positions_, CL_TRUE, 0, positions.size() * sizeof(cl_uint), positions.data());
+  write_blocking(positions_, 0, positions.size() * sizeof(cl_uint), positions.data());
   positions_changed(resized);
 }
 
 std::vector<VertexId> DeviceBackend::last_choices() {
   std::vector<VertexId> choices(particle_count_);
-  queue_.enqueueReadBuffer(chosen_, CL_TRUE, 0, choices.size() * sizeof(cl_uint), choices.data());
+  read_blocking(chosen_, 0, choices.size() * sizeof(cl_uint), choices.data());
   return choices;
 }
 
 std::vector<VertexId> DeviceBackend::positions() {
   std::vector<VertexId> positions(particle_count_);
-  queue_.enqueueReadBuffer(positions_, CL_TRUE, 0, positions.size() * sizeof(cl_uint), positions.data());
+  read_blocking(positions_, 0, positions.size() * sizeof(cl_uint), positions.data());
   return positions;
 }
 
@@ -175,7 +196,7 @@ IterationStats DeviceBackend::iterate(Scheme scheme, unsigned colors) {
     kernel_events.push_back(enqueue_update(color, groups, particles, rank_stacks));
     apply_moves_.setArg(3, color);
     apply_moves_.setArg(4, groups);
-    queue_.enqueueNDRangeKernel(apply_moves_, cl::NullRange, cl::NDRange(particles));
+    launch(apply_moves_, cl::NDRange(particles));
     after_commit(color, groups, kernel_events);
   }
   after_iteration(kernel_events);
@@ -204,7 +225,7 @@ double DeviceBackend::time_update_kernels(Scheme scheme, unsigned colors) {
   }
   enqueue_measured_extras(events);
   reset_claims();
-  queue_.finish();
+  wait_for_device();
   return total_milliseconds(events);
 }
 

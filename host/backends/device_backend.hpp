@@ -37,6 +37,9 @@ void check_device_limits(const DeviceDescription& device, const UpdateKernel& ke
 void check_device_memory(const DeviceDescription& device, const UpdateKernel& kernel, std::size_t vertex_count,
                          std::size_t edge_count, std::size_t particle_count, bool dense_table = true);
 
+// A profiled command's time on the device.
+double device_milliseconds(const cl::Event& event);
+
 class DeviceBackend : public ParticleBackend {
  public:
   std::string device_name() const override { return device_.name; }
@@ -58,6 +61,8 @@ class DeviceBackend : public ParticleBackend {
   // profiling events.
   double time_update_kernels(Scheme scheme, unsigned colors);
 
+  std::optional<DeviceTraffic> traffic() const override { return traffic_; }
+
  protected:
   DeviceBackend(const DeviceDescription& device, const SurfaceMesh& mesh, const UpdateKernel& kernel,
                 bool dense_table = true);
@@ -76,6 +81,14 @@ class DeviceBackend : public ParticleBackend {
   // (color, colors, rank_stacks), over the work-groups `particles` need.
   cl::Event launch_update(cl::Kernel& update, cl_uint color_arg, cl_uint color, cl_uint colors, cl_uint particles,
                           cl_uint rank_stacks);
+
+  // Every launch and every wait for the device goes through these, so a run
+  // can say how many an iteration took (traffic()).
+  void launch(const cl::Kernel& kernel, const cl::NDRange& global, const cl::NDRange& local = cl::NullRange,
+              cl::Event* event = nullptr);
+  void read_blocking(const cl::Buffer& buffer, std::size_t offset, std::size_t bytes, void* into);
+  void write_blocking(const cl::Buffer& buffer, std::size_t offset, std::size_t bytes, const void* from);
+  void wait_for_device();
 
   // The update kernel for the particles of `color` (rank_stacks 0: the
   // sequential rule, every particle takes its best candidate).
@@ -104,6 +117,7 @@ class DeviceBackend : public ParticleBackend {
   cl::Buffer claims_;       // per vertex: the smallest index that chose it (claims.h)
   cl::Buffer move_counts_;  // per colour of the iteration
   cl::Buffer moves_;        // per colour: (from, to) of each committed move
+  DeviceTraffic traffic_;
 
  private:
   cl_uint group_count(Scheme scheme, unsigned colors) const;

@@ -50,8 +50,8 @@ cl::Event DirectSumBackend::enqueue_update(cl_uint color, cl_uint colors, cl_uin
 
 double DirectSumBackend::total_energy() {
   std::vector<float> energies(particle_count_);
-  queue_.enqueueNDRangeKernel(particle_energies_, cl::NullRange, cl::NDRange(particle_count_));
-  queue_.enqueueReadBuffer(energies_, CL_TRUE, 0, energies.size() * sizeof(float), energies.data());
+  launch(particle_energies_, cl::NDRange(particle_count_));
+  read_blocking(energies_, 0, energies.size() * sizeof(float), energies.data());
   double sum = 0;
   for (const float e : energies) sum += e;
   return sum / 2;  // every pair was counted from both ends
@@ -95,7 +95,9 @@ const BackendDescriptor& naive_backend() {
     d.paper_row = PaperRow::gpu1_naive;
     d.device = direct_sum_spec("naive_update");
     // One work-item per candidate, rounded up to a multiple of 8.
-    d.device->default_sizes = [](UpdateKernel& kernel) { kernel.work_group_size = (kernel.candidate_slots + 7) / 8 * 8; };
+    d.device->default_sizes = [](UpdateKernel& kernel, const std::string&) {
+      kernel.work_group_size = (kernel.candidate_slots + 7) / 8 * 8;
+    };
     d.device->particles_per_group = [](const UpdateKernel&) { return std::size_t{1}; };
     return d;
   }();
@@ -114,7 +116,7 @@ const BackendDescriptor& tiled_backend() {
     d.device->takes_tile = true;
     // The best or near-best of repeated sweeps on PoCL at sphere/1024
     // (docs/PERFORMANCE.md); `sweep --save` finds a device's own.
-    d.device->default_sizes = [](UpdateKernel& kernel) {
+    d.device->default_sizes = [](UpdateKernel& kernel, const std::string&) {
       kernel.work_group_size = 32;
       kernel.tile_size = 64;
     };

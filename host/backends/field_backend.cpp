@@ -1,6 +1,7 @@
 #include "backends/field_backend.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "backends/local_device_field_backend.hpp"
 #include "particles/field_units.hpp"
@@ -14,6 +15,15 @@ enum UpdateArg : cl_uint {
 };
 // Arguments of field_apply_moves, in order (field_rebuild takes the first four
 // of them, then field and occupancy).
+// Arguments of field_iterations, in order.
+enum IterationsArg : cl_uint {
+  kItField, kItWeights, kItVertexCount, kItRingOffsets, kItRingNeighbors, kItOccupancy, kItPositions,
+  kItParticleCount, kItColors, kItMonotone, kItIterations, kItChosen, kItClaims, kItMoveCounts, kItMoves,
+  kItStartPositions, kItHistory
+};
+// field_iterations' history: two words, then these per iteration.
+constexpr std::size_t kHistoryHead = 2, kHistoryWords = 4;
+constexpr cl_ulong kKeptSequential = 0, kKeptNone = 0xffffffffULL;
 enum ApplyArg : cl_uint {
   kApplyWeights, kApplyVertexCount, kApplyPositions, kApplyParticleCount, kApplyColor, kApplyColors,
   kApplyMoveCounts, kApplyMoves, kApplyField, kApplyOccupancy
@@ -27,7 +37,11 @@ FieldBackend::FieldBackend(const DeviceDescription& device, const UpdateKernel& 
   rebuild_ = cl::Kernel(built, "field_rebuild");
   apply_to_field_ = cl::Kernel(built, "field_apply_moves");
   particle_energies_ = cl::Kernel(built, "field_energies");
+  one_launch_kernel_ = cl::Kernel(built, "field_iterations");
   for (const cl::Kernel* launched : {&update_, &rebuild_, &apply_to_field_}) check_kernel_limits(*launched, device);
+  // One launch needs the whole work-group in one kernel that holds more state.
+  one_launch_ =
+      kernel_.work_group_size <= one_launch_kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device.device);
 
   compute_weight_table(built, distances, inputs.energy);
   field_ = allocate(CL_MEM_READ_WRITE, vertex_count_ * sizeof(cl_long), "the field");
@@ -48,6 +62,13 @@ FieldBackend::FieldBackend(const DeviceDescription& device, const UpdateKernel& 
   rebuild_.setArg(5, occupancy_);
   apply_to_field_.setArg(kApplyField, field_);
   apply_to_field_.setArg(kApplyOccupancy, occupancy_);
+  one_launch_kernel_.setArg(kItField, field_);
+  one_launch_kernel_.setArg(kItWeights, weights_);
+  one_launch_kernel_.setArg(kItVertexCount, vertex_count_);
+  one_launch_kernel_.setArg(kItRingOffsets, ring_offsets_);
+  one_launch_kernel_.setArg(kItRingNeighbors, ring_neighbors_);
+  one_launch_kernel_.setArg(kItOccupancy, occupancy_);
+  one_launch_kernel_.setArg(kItClaims, claims_);
   particle_energies_.setArg(0, weights_);
   particle_energies_.setArg(1, vertex_count_);
   particle_energies_.setArg(4, field_);
@@ -73,9 +94,8 @@ void FieldBackend::compute_weight_table(const cl::Program& program, const Distan
   }
   const std::size_t columns_per_group = std::min<std::size_t>(64, device_.max_work_group_size);
   const std::size_t columns = (vertex_count_ + columns_per_group - 1) / columns_per_group * columns_per_group;
-  queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(columns, vertex_count_),
-                              cl::NDRange(columns_per_group, 1));
-  queue_.finish();
+  launch(kernel, cl::NDRange(columns, vertex_count_), cl::NDRange(columns_per_group, 1));
+  wait_for_device();
 }
 
 void FieldBackend::positions_changed(bool resized) {
@@ -92,6 +112,14 @@ void FieldBackend::positions_changed(bool resized) {
       kernel_per_vertex->setArg(kApplyPositions, positions_);
       kernel_per_vertex->setArg(kApplyParticleCount, particle_count_);
     }
+    start_positions_ = allocate(CL_MEM_READ_WRITE, std::max<std::size_t>(1, particle_count_) * sizeof(cl_uint),
+                                "the attempts' start positions");
+    one_launch_kernel_.setArg(kItPositions, positions_);
+    one_launch_kernel_.setArg(kItParticleCount, particle_count_);
+    one_launch_kernel_.setArg(kItChosen, chosen_);
+    one_launch_kernel_.setArg(kItMoveCounts, move_counts_);
+    one_launch_kernel_.setArg(kItMoves, moves_);
+    one_launch_kernel_.setArg(kItStartPositions, start_positions_);
     apply_to_field_.setArg(kApplyMoveCounts, move_counts_);
     apply_to_field_.setArg(kApplyMoves, moves_);
     particle_energies_.setArg(2, positions_);
@@ -110,32 +138,31 @@ cl::NDRange FieldBackend::vertex_range() const {
 
 cl::Event FieldBackend::enqueue_rebuild() {
   cl::Event event;
-  queue_.enqueueNDRangeKernel(rebuild_, cl::NullRange, vertex_range(), cl::NDRange(kernel_.work_group_size),
-                              nullptr, &event);
+  launch(rebuild_, vertex_range(), cl::NDRange(kernel_.work_group_size), &event);
   return event;
 }
 
 void FieldBackend::rebuild_field() {
   enqueue_rebuild();
-  queue_.finish();
+  wait_for_device();
 }
 
 std::vector<float> FieldBackend::weights() {
   const std::size_t entries = std::size_t(vertex_count_) * vertex_count_;
   std::vector<float> widened(entries);
   if (kernel_.weights == WeightFormat::float32) {
-    queue_.enqueueReadBuffer(weights_, CL_TRUE, 0, entries * sizeof(float), widened.data());
+    read_blocking(weights_, 0, entries * sizeof(float), widened.data());
     return widened;
   }
   std::vector<_Float16> stored(entries);
-  queue_.enqueueReadBuffer(weights_, CL_TRUE, 0, entries * sizeof(cl_half), stored.data());
+  read_blocking(weights_, 0, entries * sizeof(cl_half), stored.data());
   for (std::size_t i = 0; i < entries; ++i) widened[i] = float(stored[i]);
   return widened;
 }
 
 std::vector<std::int64_t> FieldBackend::field() {
   std::vector<std::int64_t> field(vertex_count_);
-  queue_.enqueueReadBuffer(field_, CL_TRUE, 0, field.size() * sizeof(cl_long), field.data());
+  read_blocking(field_, 0, field.size() * sizeof(cl_long), field.data());
   return field;
 }
 
@@ -147,8 +174,7 @@ void FieldBackend::after_commit(cl_uint color, cl_uint colors, std::vector<cl::E
   apply_to_field_.setArg(kApplyColor, color);
   apply_to_field_.setArg(kApplyColors, colors);
   cl::Event event;
-  queue_.enqueueNDRangeKernel(apply_to_field_, cl::NullRange, vertex_range(), cl::NDRange(kernel_.work_group_size),
-                              nullptr, &event);
+  launch(apply_to_field_, vertex_range(), cl::NDRange(kernel_.work_group_size), &event);
   events.push_back(event);
 }
 
@@ -161,13 +187,52 @@ void FieldBackend::after_iteration(std::vector<cl::Event>& events) {
 // the particles move (each move is two rows).
 void FieldBackend::enqueue_measured_extras(std::vector<cl::Event>& events) { events.push_back(enqueue_rebuild()); }
 
+std::vector<IterationStats> FieldBackend::iterate_without_host(Scheme scheme, unsigned colors, std::size_t count) {
+  const bool schemed = scheme == Scheme::monotone || scheme == Scheme::colored;
+  if (!one_launch_ || !schemed || rebuild_every_ > 0 || particle_count_ == 0 ||
+      particle_count_ > kMaxOneLaunchParticles || count == 0) {
+    return {};
+  }
+  count = std::min<std::size_t>(count, std::numeric_limits<cl_uint>::max());
+  const std::size_t words = kHistoryHead + kHistoryWords * count;
+  if (count > history_iterations_) {
+    history_ = allocate(CL_MEM_READ_WRITE, words * sizeof(cl_ulong), "the iterations' history");
+    history_iterations_ = count;
+    one_launch_kernel_.setArg(kItHistory, history_);
+  }
+  one_launch_kernel_.setArg(kItColors, cl_uint(colors));
+  one_launch_kernel_.setArg(kItMonotone, cl_uint(scheme == Scheme::monotone));
+  one_launch_kernel_.setArg(kItIterations, cl_uint(count));
+  const cl::NDRange work_group(kernel_.work_group_size);
+  cl::Event event;
+  launch(one_launch_kernel_, work_group, work_group, &event);
+  std::vector<cl_ulong> history(words);
+  read_blocking(history_, 0, words * sizeof(cl_ulong), history.data());
+
+  const std::size_t run = history[0];
+  const double kernel_ms = device_milliseconds(event) / double(std::max<std::size_t>(1, run));
+  std::vector<IterationStats> done(run);
+  for (std::size_t i = 0; i < run; ++i) {
+    const cl_ulong* record = history.data() + kHistoryHead + kHistoryWords * i;
+    IterationStats& stats = done[i];
+    stats.moved = record[0];
+    stats.energy = pair_energy_of_total(record[1]);
+    stats.kernel_ms = kernel_ms;
+    stats.attempts = unsigned(record[2]);
+    if (scheme == Scheme::monotone) {
+      stats.kept = record[3] == kKeptNone         ? "none"
+                   : record[3] == kKeptSequential ? "sequential"
+                                                  : "colored K=" + std::to_string(record[3]);
+    }
+  }
+  return done;
+}
+
 double FieldBackend::total_energy() {
   std::vector<std::int64_t> energies(particle_count_);
-  queue_.enqueueNDRangeKernel(particle_energies_, cl::NullRange, cl::NDRange(particle_count_));
-  queue_.enqueueReadBuffer(energies_, CL_TRUE, 0, energies.size() * sizeof(cl_long), energies.data());
-  double sum = 0;
-  for (const std::int64_t units : energies) sum += double(units);
-  return sum / (2.0 * double(kFieldUnitsPerWeight));  // every pair was counted from both ends
+  launch(particle_energies_, cl::NDRange(particle_count_));
+  read_blocking(energies_, 0, energies.size() * sizeof(cl_long), energies.data());
+  return pair_energy(energies);
 }
 
 const BackendDescriptor& field_backend() {
@@ -180,12 +245,18 @@ const BackendDescriptor& field_backend() {
     d.paper_row = PaperRow::gpu2_tiled;  // beside the paper's fastest
     DeviceKernelSpec& spec = d.device.emplace();
     spec.update_function = "field_update";
-    spec.program_files = {"field_weights.cl", "field_accumulate.cl", "field_update.cl", "apply_moves.cl"};
+    spec.program_files = {"field_weights.cl", "field_accumulate.cl", "field_update.cl", "apply_moves.cl",
+                          "field_iterations.cl"};
     spec.takes_weight_format = true;
-    // wg 8 - 32 were best or near best in three sweeps on PoCL at
-    // sphere/1024, larger groups leave the cores idle (V / 8 work-items);
-    // 32 is also one NVIDIA warp (docs/PERFORMANCE.md).
-    spec.default_sizes = [](UpdateKernel& kernel) { kernel.work_group_size = 32; };
+    // On a CPU (PoCL) wg 8 - 32 were best or near best in three sweeps at
+    // sphere/1024, larger groups leave the cores idle (V / 8 work-items).
+    // On a GPU the one-launch iterations run as one work-group, which wants
+    // to be large: on the H100 at sphere/1024, 0.80 ms an iteration at wg 32,
+    // 0.25 ms at 256; the per-colour kernels are within 30% from 1 to 256
+    // there (docs/PERFORMANCE.md).
+    spec.default_sizes = [](UpdateKernel& kernel, const std::string& device_type) {
+      kernel.work_group_size = device_type == "GPU" ? 256 : 32;
+    };
     spec.particles_per_group = [](const UpdateKernel& kernel) { return kernel.work_group_size; };
     // Each work-item keeps its candidates in private memory: no __local.
     spec.local_memory_bytes = [](const UpdateKernel&) { return std::size_t{0}; };

@@ -11,6 +11,10 @@
 
 namespace meshparticles {
 
+// field_iterations sums the particles' energies in 64 bits: below n^2 2^40,
+// which fits for n < 2^12.
+inline constexpr std::size_t kMaxOneLaunchParticles = 4095;
+
 class FieldBackend : public DeviceBackend {
  public:
   // Computes W on the device from the dense distance table (float32 in the
@@ -20,6 +24,16 @@ class FieldBackend : public DeviceBackend {
   FieldBackend(const DeviceDescription& device, const UpdateKernel& kernel, const BackendInputs& inputs);
 
   double total_energy() override;
+
+  // monotone and colored K run without the host: one launch of
+  // field_iterations (one work-group, kernels/field_iterations.cl) and one
+  // read for up to `count` iterations. Empty (the per-colour launches, one
+  // iteration at a time) for the other schemes, for n above
+  // kMaxOneLaunchParticles, with --rebuild-every, or once set_one_launch(false).
+  std::vector<IterationStats> iterate_without_host(Scheme scheme, unsigned colors, std::size_t count) override;
+  // For tests and measurements: the per-colour launches even where one
+  // launch would serve.
+  void set_one_launch(bool enabled) { one_launch_ = enabled; }
 
   // For tests: F(v) of every vertex in field units (2^-40), the stored
   // weights (half values widened), and a rebuild from the current positions.
@@ -38,15 +52,20 @@ class FieldBackend : public DeviceBackend {
   void compute_weight_table(const cl::Program& program, const DistanceTable& distances, const EnergyParams& energy);
 
   std::size_t rebuild_every_;
+  bool one_launch_ = true;  // false also where the device cannot run field_iterations at this work-group size
   std::size_t iterations_ = 0;
   cl::Kernel update_;
   cl::Kernel rebuild_;
   cl::Kernel apply_to_field_;
   cl::Kernel particle_energies_;
+  cl::Kernel one_launch_kernel_;
   cl::Buffer weights_;
   cl::Buffer field_;      // F(v), 64-bit fixed point
   cl::Buffer occupancy_;  // particles on each vertex
   cl::Buffer energies_;   // per particle, fixed point
+  cl::Buffer start_positions_;  // field_iterations: where an attempt started, for its undo
+  cl::Buffer history_;          // field_iterations: what each iteration did
+  std::size_t history_iterations_ = 0;
 };
 
 // The field method's descriptor (backend_table.hpp).

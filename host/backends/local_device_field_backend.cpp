@@ -176,9 +176,9 @@ void LocalDeviceFieldBackend::repack() {
   pool_used_ = upload_rows(kept, 0);
   for (const VertexId v : kept) starts[v] = row_start_host_[v];
   ++repacks_;
-  queue_.enqueueWriteBuffer(row_start_, CL_TRUE, 0, starts.size() * sizeof(cl_uint), starts.data());
-  queue_.enqueueWriteBuffer(row_length_, CL_TRUE, 0, lengths.size() * sizeof(cl_uint), lengths.data());
-  queue_.enqueueWriteBuffer(candidate_flags_, CL_TRUE, 0, flags.size(), flags.data());
+  write_blocking(row_start_, 0, starts.size() * sizeof(cl_uint), starts.data());
+  write_blocking(row_length_, 0, lengths.size() * sizeof(cl_uint), lengths.data());
+  write_blocking(candidate_flags_, 0, flags.size(), flags.data());
 }
 
 // The rows go up in pieces (by default 4 M entries, 32 MiB): one copy of
@@ -189,9 +189,9 @@ std::uint64_t LocalDeviceFieldBackend::upload_rows(const std::vector<VertexId>& 
   std::vector<cl_float> distances;
   const auto send = [&] {
     if (vertices.empty()) return;
-    queue_.enqueueWriteBuffer(row_vertices_, CL_TRUE, at * sizeof(cl_uint), vertices.size() * sizeof(cl_uint),
+    write_blocking(row_vertices_, at * sizeof(cl_uint), vertices.size() * sizeof(cl_uint),
                               vertices.data());
-    queue_.enqueueWriteBuffer(row_distances_, CL_TRUE, at * sizeof(cl_float), distances.size() * sizeof(cl_float),
+    write_blocking(row_distances_, at * sizeof(cl_float), distances.size() * sizeof(cl_float),
                               distances.data());
     at += vertices.size();
     vertices.clear();
@@ -220,10 +220,10 @@ void LocalDeviceFieldBackend::launch_over_list(cl::Kernel& kernel, ListBuffer& l
   }
   // Blocking: the list lives on the caller's stack. In order after the
   // launches before it, so the last reader of the old contents is done.
-  queue_.enqueueWriteBuffer(list.buffer, CL_TRUE, 0, bytes, items);
+  write_blocking(list.buffer, 0, bytes, items);
   kernel.setArg(0, list.buffer);
   kernel.setArg(1, cl_uint(count));
-  queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(count));
+  launch(kernel, cl::NDRange(count));
 }
 
 void LocalDeviceFieldBackend::upload_marks(const std::vector<cl_uint4>& changes) {
@@ -297,9 +297,9 @@ void LocalDeviceFieldBackend::rebuild_field() {
     if (!held_[v]) held_[v] = balls_.ball(v);
   }
   repack();
-  queue_.enqueueWriteBuffer(occupancy_, CL_TRUE, 0, occupancy.size() * sizeof(cl_uint), occupancy.data());
+  write_blocking(occupancy_, 0, occupancy.size() * sizeof(cl_uint), occupancy.data());
   enqueue_sums(all);
-  queue_.finish();
+  wait_for_device();
   ++rebuilds_;
 }
 
@@ -314,11 +314,11 @@ cl::Event LocalDeviceFieldBackend::enqueue_update(cl_uint color, cl_uint colors,
 // already moved), the old ones that no particle reads any more are unmarked.
 void LocalDeviceFieldBackend::after_commit(cl_uint color, cl_uint colors, std::vector<cl::Event>& events) {
   cl_uint count = 0;
-  queue_.enqueueReadBuffer(move_counts_, CL_TRUE, color * sizeof(cl_uint), sizeof(cl_uint), &count);
+  read_blocking(move_counts_, color * sizeof(cl_uint), sizeof(cl_uint), &count);
   if (count == 0) return;
   const cl_uint first = color * ((particle_count_ + colors - 1) / colors);  // as apply_moves.cl
   std::vector<cl_uint2> moves(count);
-  queue_.enqueueReadBuffer(moves_, CL_TRUE, first * sizeof(cl_uint2), count * sizeof(cl_uint2), moves.data());
+  read_blocking(moves_, first * sizeof(cl_uint2), count * sizeof(cl_uint2), moves.data());
   apply_moves(first, moves, events);
 }
 
@@ -333,12 +333,12 @@ void LocalDeviceFieldBackend::set_positions(std::span<const VertexId> positions)
     if (before[i] != positions[i]) moves.push_back({{before[i], positions[i]}});
   }
   if (2 * moves.size() > positions.size()) return DeviceBackend::set_positions(positions);
-  queue_.enqueueWriteBuffer(positions_, CL_TRUE, 0, positions.size() * sizeof(cl_uint), positions.data());
+  write_blocking(positions_, 0, positions.size() * sizeof(cl_uint), positions.data());
   if (moves.empty()) return;
-  queue_.enqueueWriteBuffer(moves_, CL_TRUE, 0, moves.size() * sizeof(cl_uint2), moves.data());
+  write_blocking(moves_, 0, moves.size() * sizeof(cl_uint2), moves.data());
   std::vector<cl::Event> events;
   apply_moves(0, moves, events);
-  queue_.finish();
+  wait_for_device();
 }
 
 void LocalDeviceFieldBackend::apply_moves(cl_uint first, std::span<const cl_uint2> moves,
@@ -347,8 +347,7 @@ void LocalDeviceFieldBackend::apply_moves(cl_uint first, std::span<const cl_uint
   scatter_.setArg(kScatterFirst, first);
   const std::size_t group = kernel_.work_group_size;
   cl::Event event;
-  queue_.enqueueNDRangeKernel(scatter_, cl::NullRange, cl::NDRange(std::size_t(2) * moves.size() * group),
-                              cl::NDRange(group), nullptr, &event);
+  launch(scatter_, cl::NDRange(std::size_t(2) * moves.size() * group), cl::NDRange(group), &event);
   events.push_back(event);
 
   // Every arrival first, then every departure: a vertex that stays a
@@ -367,7 +366,7 @@ void LocalDeviceFieldBackend::after_iteration(std::vector<cl::Event>& /*events*/
 
 std::vector<std::int64_t> LocalDeviceFieldBackend::candidate_field() {
   std::vector<std::int64_t> field(vertex_count_);
-  queue_.enqueueReadBuffer(field_, CL_TRUE, 0, field.size() * sizeof(cl_long), field.data());
+  read_blocking(field_, 0, field.size() * sizeof(cl_long), field.data());
   std::vector<std::int64_t> at_candidates;
   for (const VertexId v : candidates()) at_candidates.push_back(field[v]);
   return at_candidates;
@@ -376,11 +375,9 @@ std::vector<std::int64_t> LocalDeviceFieldBackend::candidate_field() {
 double LocalDeviceFieldBackend::total_energy() {
   std::vector<std::int64_t> energies(particle_count_);
   if (particle_count_ == 0) return 0;
-  queue_.enqueueNDRangeKernel(energies_kernel_, cl::NullRange, cl::NDRange(particle_count_));
-  queue_.enqueueReadBuffer(energies_, CL_TRUE, 0, energies.size() * sizeof(cl_long), energies.data());
-  double sum = 0;
-  for (const std::int64_t units : energies) sum += double(units);
-  return sum / (2.0 * double(kFieldUnitsPerWeight));  // every pair was counted from both ends
+  launch(energies_kernel_, cl::NDRange(particle_count_));
+  read_blocking(energies_, 0, energies.size() * sizeof(cl_long), energies.data());
+  return pair_energy(energies);
 }
 
 }  // namespace meshparticles

@@ -99,9 +99,9 @@ IterationStats SerialFieldMethod::iterate(Scheme scheme, unsigned colors) {
 
 // Half the sum over particles of the energy each feels where it is.
 double SerialFieldMethod::total_energy() {
-  double sum = 0;
-  for (const VertexId p : positions_) sum += double(field_at(p) - weight_units(p, p));
-  return sum / (2.0 * double(kFieldUnitsPerWeight));
+  FieldEnergySum sum;
+  for (const VertexId p : positions_) sum.add(field_at(p) - weight_units(p, p));
+  return sum.pair_energy();
 }
 
 }  // namespace meshparticles

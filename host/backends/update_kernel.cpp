@@ -28,11 +28,11 @@ std::string UpdateKernel::sizes_text() const {
 }
 
 UpdateKernel default_update_kernel(const BackendDescriptor& backend, std::size_t candidate_slots,
-                                   std::size_t device_max_work_group) {
+                                   std::size_t device_max_work_group, const std::string& device_type) {
   UpdateKernel kernel;
   kernel.backend = &backend;
   kernel.candidate_slots = candidate_slots;
-  kernel.spec().default_sizes(kernel);
+  kernel.spec().default_sizes(kernel, device_type);
   kernel.work_group_size = std::max<std::size_t>(1, std::min(kernel.work_group_size, device_max_work_group));
   return kernel;
 }

@@ -31,9 +31,10 @@ struct UpdateKernel {
   std::string sizes_text() const;
 };
 
-// The built-in sizes of `backend`'s kernel (chosen by measurement,
-// docs/PERFORMANCE.md), capped to the device's maximum work-group size.
+// The built-in sizes of `backend`'s kernel on a device of `device_type`
+// (chosen by measurement, docs/PERFORMANCE.md), capped to the device's
+// maximum work-group size.
 UpdateKernel default_update_kernel(const BackendDescriptor& backend, std::size_t candidate_slots,
-                                   std::size_t device_max_work_group);
+                                   std::size_t device_max_work_group, const std::string& device_type = "CPU");
 
 }  // namespace meshparticles

@@ -4,6 +4,7 @@
 // step; docs/ALGORITHM.md ("The field backend") says why fixed point.
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 #include "particles/particle_params.hpp"
 
@@ -31,5 +32,31 @@ inline std::int64_t field_units(float weight) { return static_cast<std::int64_t>
 
 // One rounding to the float the candidate rule compares.
 inline float field_energy(std::int64_t units) { return float(units) * (1.0f / kFieldUnitsPerWeight); }
+
+// The total pair energy from each particle's energy where it is, in field
+// units: summed exactly (n * 2^63 fits 128 bits) and rounded to a double
+// once, so every field backend, and the device's one-launch iterations that
+// compare energies as these doubles compare (field_iterations.cl), agree
+// whatever the order of the sum. Every pair is counted from both ends.
+inline double pair_energy_of_total(std::uint64_t total_units) {
+  return double(total_units) / (2.0 * double(kFieldUnitsPerWeight));
+}
+
+class FieldEnergySum {
+ public:
+  void add(std::int64_t particle_units) { units_ += static_cast<Units>(particle_units); }
+  // The same rounding as pair_energy_of_total where the sum fits 64 bits.
+  double pair_energy() const { return double(units_) / (2.0 * double(kFieldUnitsPerWeight)); }
+
+ private:
+  __extension__ typedef unsigned __int128 Units;
+  Units units_ = 0;
+};
+
+inline double pair_energy(std::span<const std::int64_t> particle_units) {
+  FieldEnergySum sum;
+  for (const std::int64_t units : particle_units) sum.add(units);
+  return sum.pair_energy();
+}
 
 }  // namespace meshparticles

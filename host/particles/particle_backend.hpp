@@ -23,6 +23,13 @@ struct IterationStats {
   std::string kept;
 };
 
+// What a device backend asked of its device: kernel launches, and the times
+// the host stopped to wait for it (blocking reads and writes, finish).
+struct DeviceTraffic {
+  std::size_t launches = 0;
+  std::size_t host_waits = 0;
+};
+
 class ParticleBackend {
  public:
   virtual ~ParticleBackend() = default;
@@ -36,6 +43,16 @@ class ParticleBackend {
   virtual IterationStats iterate(Scheme scheme, unsigned colors) = 0;
   // Total pair energy sum_{i<j} w(d(p_i, p_j)) of the current positions.
   virtual double total_energy() = 0;
+  // Up to `count` iterations of `scheme`, the same as iterate_scheme would
+  // make them, without the host between them; ends after the first that
+  // moves nothing. Empty where this backend cannot (most): the caller then
+  // iterates one at a time (iterate_schemes, scheme_step.hpp).
+  virtual std::vector<IterationStats> iterate_without_host(Scheme /*scheme*/, unsigned /*colors*/,
+                                                           std::size_t /*count*/) {
+    return {};
+  }
+  // Device backends: what they asked of the device so far.
+  virtual std::optional<DeviceTraffic> traffic() const { return std::nullopt; }
 };
 
 // The number of colour groups a scheme updates one after the other.

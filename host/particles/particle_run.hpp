@@ -14,6 +14,11 @@ class LocalDistances;
 // The iteration limit of a run when --iterations is absent.
 constexpr std::size_t kDefaultMaxIterations = 500;
 
+// How many iterations a backend that can may run before the host looks at
+// them (the trace, the progress line, the limit): one launch and one read
+// on the field backend. A run stops after the first that moves nothing.
+constexpr std::size_t kIterationsWithoutHost = 16;
+
 struct RunSettings {
   Scheme scheme = Scheme::colored;
   unsigned colors = 8;
@@ -37,6 +42,8 @@ struct RunOutcome {
   double initial_energy = 0;
   std::vector<IterationRecord> trace;
   bool converged = false;  // an iteration moved no particle
+  // Device backends: the launches and host waits of the iterations.
+  std::optional<DeviceTraffic> traffic;
   std::vector<VertexId> positions;
 };
 

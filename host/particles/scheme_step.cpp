@@ -49,4 +49,11 @@ IterationStats iterate_scheme(ParticleBackend& backend, Scheme scheme, unsigned 
   return backend.iterate(scheme, colors);
 }
 
+std::vector<IterationStats> iterate_schemes(ParticleBackend& backend, Scheme scheme, unsigned colors,
+                                            std::size_t count, double energy_before) {
+  std::vector<IterationStats> done = backend.iterate_without_host(scheme, colors, count);
+  if (done.empty()) done.push_back(iterate_scheme(backend, scheme, colors, energy_before));
+  return done;
+}
+
 }  // namespace meshparticles

@@ -10,6 +10,8 @@
 //   the sequential loop; if even that does not lower the energy, nothing
 //   moves. Every kept iteration lowers the energy, so a run cannot cycle and
 //   ends with no particle moving.
+#include <vector>
+
 #include "particles/particle_backend.hpp"
 
 namespace meshparticles {
@@ -17,5 +19,10 @@ namespace meshparticles {
 // `energy_before`: the backend's total energy at the current positions (the
 // previous iteration's, or the start's).
 IterationStats iterate_scheme(ParticleBackend& backend, Scheme scheme, unsigned colors, double energy_before);
+
+// Between 1 and `count` iterations: as many as the backend runs without the
+// host (ParticleBackend::iterate_without_host), else one by iterate_scheme.
+std::vector<IterationStats> iterate_schemes(ParticleBackend& backend, Scheme scheme, unsigned colors,
+                                            std::size_t count, double energy_before);
 
 }  // namespace meshparticles

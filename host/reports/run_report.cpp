@@ -1,5 +1,7 @@
 #include "reports/run_report.hpp"
 
+#include <algorithm>
+
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {
@@ -159,6 +161,15 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
       {"avg_iteration_ms", mean(outcome.trace, &IterationRecord::ms)},
       {"trace", trace}};
   if (has_kernel_times) report["avg_kernel_ms"] = kernel_ms_sum / double(outcome.trace.size());
+  if (outcome.traffic) {
+    // What the iterations asked of the device; one launch and one wait can
+    // cover many iterations (field_iterations).
+    const double iterations = double(std::max<std::size_t>(1, outcome.trace.size()));
+    report["device_traffic"] = {{"launches", outcome.traffic->launches},
+                                {"host_waits", outcome.traffic->host_waits},
+                                {"launches_per_iteration", double(outcome.traffic->launches) / iterations},
+                                {"host_waits_per_iteration", double(outcome.traffic->host_waits) / iterations}};
+  }
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
   return report;
