@@ -212,6 +212,14 @@ expect_exit(sigma_huge_warns 0 "warning: --sigma 1e\\+300 with d_hex .*the energ
 # The environment: named when it is the cause; `devices` always lists.
 expect_exit_of(devices_bogus_variable 0 "warning: \\$MESHPARTICLES_DEVICE='bogus' matches no device above"
                env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> devices)
+# The paper method without an OpenCL runtime, no device named: its default
+# is the CPU twin, and says why; a device named stays an error (exit 3).
+expect_exit_of(run_paper_without_runtime 0 "particles: .*converged"
+               env -u MESHPARTICLES_DEVICE OCL_ICD_VENDORS=${CMAKE_CURRENT_BINARY_DIR}/no-such-vendors-dir
+               $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --method paper --no-cache --out ${RUN_OUT}_no_runtime)
+expect_exit_of(run_paper_device_without_runtime 3 "no OpenCL platform found"
+               env MESHPARTICLES_DEVICE=pocl OCL_ICD_VENDORS=${CMAKE_CURRENT_BINARY_DIR}/no-such-vendors-dir
+               $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --method paper --no-cache --out ${RUN_OUT}_no_runtime)
 expect_exit_of(run_bogus_variable 2 "no OpenCL device matches \\$MESHPARTICLES_DEVICE='bogus'"
                env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --method paper --out ${RUN_OUT})
 expect_exit_of(bad_pocl_cache 3 "\\$POCL_CACHE_DIR='/proc/no-such-dir' is not a directory PoCL can write"

@@ -13,7 +13,6 @@ namespace meshparticles {
 
 namespace {
 
-constexpr int kNoRuntimeExitCode = 3;
 const char* const kInstallHint =
     "install an OpenCL runtime (on Debian: apt-get install pocl-opencl-icd for the CPU, or your GPU vendor's ICD)";
 

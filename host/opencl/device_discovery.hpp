@@ -26,6 +26,9 @@ struct DeviceDescription {
   std::string index() const { return std::to_string(platform_index) + ":" + std::to_string(device_index); }
 };
 
+// The exit code of a run that needs OpenCL where no runtime is usable.
+inline constexpr int kNoRuntimeExitCode = 3;
+
 // Every device of every platform. Throws UserError (naming the package to
 // install) when there is no OpenCL runtime or no device at all.
 std::vector<DeviceDescription> list_devices();

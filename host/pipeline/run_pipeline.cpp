@@ -7,6 +7,7 @@
 #include "backends/backend_table.hpp"
 #include "backends/local_device_field_backend.hpp"
 #include "common/user_error.hpp"
+#include "pipeline/default_backend.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/sigma_check.hpp"
@@ -14,6 +15,22 @@
 namespace meshparticles {
 
 namespace {
+
+// The device a device backend would use, or why there is none: no usable
+// OpenCL runtime, when no device was asked for (a device asked for that
+// does not exist stays an error).
+struct SelectedDevice {
+  std::optional<DeviceDescription> device;
+  std::string why_none;
+};
+SelectedDevice selected_device_if_any(const std::string& option) {
+  try {
+    return {select_device(option), ""};
+  } catch (const UserError& error) {
+    if (error.exit_code() == kNoRuntimeExitCode && device_request(option).text.empty()) return {{}, error.what()};
+    throw;
+  }
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -90,21 +107,24 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
     return plan;
   }
   if (request.vertices_per_particle) throw UserError("--vertices-per-particle applies to --method spread");
-  // The default backend follows the store: the device's field method on a
-  // table, its serial twin on local balls (the device streams table rows).
   const bool default_backend = request.backend.name.empty();
   plan.distances = plan_distances(mesh, request.distances, request.particles,
                                   !default_backend && find_backend(request.backend.name).needs_dense_table);
   BackendRequest backend = request.backend;
+  std::optional<Scheme> default_scheme;
   if (default_backend) {
-    const bool dense = plan.distances.kind == StoreKind::dense;
-    backend.name = dense ? "field" : "serial-field";
-    plan.backend_from = dense ? "default: field on the dense table" : "default: serial-field on local distances";
+    const bool dense = plan.distances.kind == StoreKind::dense;  // on local distances no device is asked
+    const SelectedDevice selected = dense ? selected_device_if_any(request.backend.device) : SelectedDevice{};
+    const DefaultBackend chosen = default_paper_backend(plan.distances.kind, request.particles,
+                                                        selected.device ? &*selected.device : nullptr);
+    backend.name = chosen.name;
+    default_scheme = chosen.scheme;
+    plan.backend_from = chosen.reason + (selected.why_none.empty() ? "" : " (" + selected.why_none + ")");
   } else {
     plan.backend_from = "--backend";
   }
   plan.request.backend.name = backend.name;
-  plan.scheme = request.scheme.value_or(find_backend(backend.name).default_scheme);
+  plan.scheme = request.scheme.value_or(default_scheme.value_or(find_backend(backend.name).default_scheme));
   if (request.colors && !uses_colors(plan.scheme)) {
     throw UserError("--colors applies to --scheme colored and monotone, not " + scheme_name(plan.scheme));
   }
