@@ -28,6 +28,9 @@ expect_exit(nan_ply 2 "nan_coordinate\\.ply: vertex 2 has a NaN or infinite coor
 expect_exit(index_out_of_range 2 "index_out_of_range\\.off: face 2 refers to vertex 7, out of range" info ${DATA}/index_out_of_range.off)
 expect_exit(index_out_of_range_obj 2 "index_out_of_range\\.obj: .*out of range" info ${DATA}/index_out_of_range.obj)
 expect_exit(repeated_index 2 "repeated_index\\.off: face 2 uses vertex 2 more than once" info ${DATA}/repeated_index.off)
+# A VTK file from a segmentation pipeline runs like any mesh; a volume grid is refused.
+expect_exit(run_vtk 0 "spread: [0-9]+ done" run ${DATA}/vtk/patch_vtk51_binary.vtk -n 20 --no-cache --out ${CMAKE_CURRENT_BINARY_DIR}/cli_run_vtk)
+expect_exit(vtk_truncated 2 "patch_meshio_binary_truncated\\.vtk: line [0-9]+: POINTS: 1200 values, more than the" info ${DATA}/vtk/patch_meshio_binary_truncated.vtk)
 # Tolerated with a one-line warning, exit 0.
 expect_exit(degenerate_warns 0 "1 degenerate \\(zero-area\\) triangle" info ${DATA}/degenerate_triangle.off)
 expect_exit(unreferenced_warns 0 "2 unreferenced vertices dropped" info ${DATA}/unreferenced_vertices.off)

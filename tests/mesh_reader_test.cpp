@@ -10,6 +10,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <algorithm>
+#include <array>
 
 #include "common/user_error.hpp"
 #include "mesh/mesh_file.hpp"
@@ -256,6 +259,77 @@ TEST(PlyReader, TruncatedBinaryAndDataAfterTheElements) {
   expect_tetrahedron(read_text(whole + "extra", MeshFormat::ply, warnings), "data after the elements");
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0], "text: data after the elements the header declares ignored");
+}
+
+// --- legacy VTK ---
+
+// The committed patch mesh as VTK's own writer (legacy 4.2 and 5.1, ASCII
+// and binary, with point normals, cell labels and field data; and as
+// triangle strips from vtkStripper) and meshio (UNSTRUCTURED_GRID) wrote it
+// (tests/data/vtk/make_vtk_files.py): the same points, to the precision the
+// ASCII writers print, and the same triangles, each turning the same way.
+TEST(VtkReader, FilesFromVtkAndMeshioReadAsTheSameMeshAsOff) {
+  std::vector<std::string> warnings;
+  const SurfaceMesh off = read_mesh(std::string(MESHES_DIR) + "/patch.off", warnings);
+  const auto triangles_of = [](const SurfaceMesh& mesh) {
+    std::set<std::array<VertexId, 3>> triangles;
+    for (Triangle corners : mesh.triangles()) {
+      std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+      triangles.insert(corners);
+    }
+    return triangles;
+  };
+  const auto expected = triangles_of(off);
+  for (const char* name : {"patch_vtk42_ascii.vtk", "patch_vtk42_binary.vtk", "patch_vtk51_ascii.vtk",
+                           "patch_vtk51_binary.vtk", "patch_strips_vtk42_ascii.vtk", "patch_strips_vtk51_binary.vtk",
+                           "patch_meshio_ascii.vtk", "patch_meshio_binary.vtk"}) {
+    SCOPED_TRACE(name);
+    std::vector<std::string> vtk_warnings;
+    const SurfaceMesh vtk = read_mesh(data(std::string("vtk/") + name), vtk_warnings);
+    EXPECT_TRUE(vtk_warnings.empty()) << vtk_warnings.front();
+    ASSERT_EQ(vtk.vertex_count(), off.vertex_count());
+    for (VertexId v = 0; v < off.vertex_count(); ++v) {
+      ASSERT_LT(distance(vtk.positions()[v], off.positions()[v]), 1e-6) << "vertex " << v;
+    }
+    EXPECT_EQ(triangles_of(vtk), expected);
+  }
+}
+
+TEST(VtkReader, RefusesWhatItCannotRead) {
+  const auto vtk = MeshFormat::vtk;
+  const std::string head = "# vtk DataFile Version 3.0\ntitle\nASCII\nDATASET POLYDATA\n";
+  const std::string points = "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
+  EXPECT_EQ(refusal(head + points + "POLYGONS 1 4\n3 0 1 2\n", vtk), "accepted");
+  EXPECT_EQ(refusal(head + points + "LINES 1 3\n2 0 1\nPOLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nanything", vtk),
+            "accepted");
+  EXPECT_REFUSED("OFF\n", vtk, "line 1: expected '# vtk DataFile Version'");
+  EXPECT_REFUSED("# vtk DataFile Version 3.0\ntitle\nTEXT\n", vtk, "line 3: expected ASCII or BINARY");
+  EXPECT_REFUSED("# vtk DataFile Version 3.0\ntitle\nASCII\nDATASET STRUCTURED_POINTS\n", vtk,
+                 "DATASET 'STRUCTURED_POINTS': only POLYDATA and UNSTRUCTURED_GRID are read");
+  EXPECT_REFUSED(head + "POINTS 3 float128\n", vtk, "unknown data type 'float128'");
+  EXPECT_REFUSED(head + "POINTS 3 float\n0 0 0 1 0 0 0 one 0\n", vtk, "point 2: expected a number, got 'one'");
+  EXPECT_REFUSED(head + points + "POLYGONS 1 4\n4 0 1 2\n", vtk, "POLYGONS: cell 0 claims 4 points, past the list");
+  EXPECT_REFUSED(head + points + "POLYGONS 2 4\n3 0 1 2\n", vtk, "POLYGONS: the list ends after 1 cell of 2");
+  EXPECT_REFUSED(head + points + "CELLS 1 4\n3 0 1 2\n", vtk, "unexpected 'CELLS' in a POLYDATA dataset");
+  EXPECT_REFUSED(head + "POLYGONS 0 0\n", vtk, "the dataset has no POINTS");
+  // Counts no file this size can hold, refused before allocating.
+  EXPECT_REFUSED("# vtk DataFile Version 3.0\ntitle\nBINARY\nDATASET POLYDATA\nPOINTS 2000000000 double\n" +
+                     std::string(24, '\0'),
+                 vtk, "POINTS: 6000000000 values, more than the 24 bytes after it can hold");
+  EXPECT_REFUSED(head + points + "POLYGONS 1 4000000000\n3 0 1 2\n", vtk, "more than the");
+  // Version 5.1's offsets must span the connectivity.
+  const std::string head51 = "# vtk DataFile Version 5.1\ntitle\nASCII\nDATASET POLYDATA\n";
+  EXPECT_EQ(refusal(head51 + points + "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n",
+                    vtk),
+            "accepted");
+  EXPECT_REFUSED(head51 + points + "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 4\nCONNECTIVITY vtktypeint64\n0 1 2\n",
+                 vtk, "the offsets do not span the connectivity's 3 values");
+  // Unstructured grids: surface cells only.
+  const std::string grid = "# vtk DataFile Version 3.0\ntitle\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+  const std::string tetra = "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+  EXPECT_REFUSED(grid + tetra, vtk, "cell 0 has VTK cell type 10, not a surface cell");
+  EXPECT_REFUSED(grid + points + "CELLS 1 4\n3 0 1 2\n", vtk, "CELLS without CELL_TYPES");
+  EXPECT_EQ(refusal(grid + points + "CELLS 2 6\n3 0 1 2\n1 0\nCELL_TYPES 2\n5\n1\n", vtk), "accepted");
 }
 
 // --- OBJ ---

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "pipeline/mesh_input.hpp"
 
 namespace meshparticles {
@@ -59,7 +60,7 @@ void run_info(const InfoOptions& options) {
 void add_info_command(CLI::App& app) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* info = app.add_subcommand("info", "Print statistics of a mesh");
-  info->add_option("mesh", options->mesh, "Mesh file (.off, .obj, .ply, .stl)")->required();
+  info->add_option("mesh", options->mesh, std::string("Mesh file (") + kMeshExtensions + ")")->required();
   info->add_flag("--json", options->json, "Machine-readable output");
   add_strict_option(*info, options->read);
   info->callback([options] { run_info(*options); });

@@ -15,5 +15,6 @@ PolygonSoup read_off(std::span<const char> bytes, const std::string& label);
 PolygonSoup read_ply(std::span<const char> bytes, const std::string& label);
 PolygonSoup read_obj(std::span<const char> bytes, const std::string& label);
 PolygonSoup read_stl(std::span<const char> bytes, const std::string& label);
+PolygonSoup read_vtk(std::span<const char> bytes, const std::string& label);
 
 }  // namespace meshparticles

@@ -15,7 +15,8 @@ MeshFormat mesh_format_of(const std::filesystem::path& file) {
   if (ext == ".obj") return MeshFormat::obj;
   if (ext == ".ply") return MeshFormat::ply;
   if (ext == ".stl") return MeshFormat::stl;
-  throw UserError(file.string() + ": unknown mesh format '" + ext + "' (use .off, .obj, .ply or .stl)");
+  if (ext == ".vtk") return MeshFormat::vtk;
+  throw UserError(file.string() + ": unknown mesh format '" + ext + "' (use " + kMeshExtensions + ")");
 }
 
 PolygonSoup read_polygon_soup(std::span<const char> bytes, MeshFormat format, const std::string& label) {
@@ -28,6 +29,8 @@ PolygonSoup read_polygon_soup(std::span<const char> bytes, MeshFormat format, co
       return read_ply(bytes, label);
     case MeshFormat::stl:
       return read_stl(bytes, label);
+    case MeshFormat::vtk:
+      return read_vtk(bytes, label);
   }
   throw UserError(label + ": unknown mesh format");
 }

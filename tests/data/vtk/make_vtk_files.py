@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""Writes the VTK test files of tests/data/vtk from meshes/patch.off with two
+writers that are not ours: VTK's own (vtkPolyDataWriter, legacy versions 4.2
+and 5.1, ASCII and binary, with point and cell attributes and field data,
+and triangle strips from vtkStripper) and meshio's. Run once with a Python
+that has `vtk` and `meshio` (pip install vtk meshio); the files are committed,
+and the tests read them back against the same mesh read from OFF:
+
+    python3 tests/data/vtk/make_vtk_files.py   # VTK 9.7.2, meshio 5.3.5 wrote the committed files
+"""
+import pathlib
+
+import meshio
+import numpy as np
+import vtk
+
+HERE = pathlib.Path(__file__).resolve().parent
+SOURCE = HERE.parents[2] / "meshes" / "patch.off"
+
+
+def read_off(path):
+    words = path.read_text().split()
+    assert words[0] == "OFF"
+    nv, nf = int(words[1]), int(words[2])
+    at = 4
+    points = np.array(words[at:at + 3 * nv], dtype=float).reshape(nv, 3)
+    at += 3 * nv
+    faces = []
+    for _ in range(nf):
+        k = int(words[at])
+        faces.append([int(w) for w in words[at + 1:at + 1 + k]])
+        at += 1 + k
+    return points, np.array(faces)
+
+
+def polydata(points, faces):
+    data = vtk.vtkPolyData()
+    vtk_points = vtk.vtkPoints()
+    vtk_points.SetDataTypeToDouble()
+    for p in points:
+        vtk_points.InsertNextPoint(*p)
+    cells = vtk.vtkCellArray()
+    for f in faces:
+        cells.InsertNextCell(len(f), [int(i) for i in f])
+    data.SetPoints(vtk_points)
+    data.SetPolys(cells)
+    # Attributes and field data a segmentation tool might leave in the file.
+    normals = vtk.vtkPolyDataNormals()
+    normals.SetInputData(data)
+    normals.SplittingOff()
+    normals.ConsistencyOff()
+    normals.Update()
+    out = normals.GetOutput()
+    labels = vtk.vtkIntArray()
+    labels.SetName("label")
+    for c in range(out.GetNumberOfCells()):
+        labels.InsertNextValue(c % 3)
+    out.GetCellData().AddArray(labels)
+    note = vtk.vtkDoubleArray()
+    note.SetName("scale")
+    note.InsertNextValue(1.5)
+    out.GetFieldData().AddArray(note)
+    return out
+
+
+def write_legacy(data, name, binary, version):
+    writer = vtk.vtkPolyDataWriter()
+    writer.SetInputData(data)
+    writer.SetFileName(str(HERE / name))
+    writer.SetFileVersion(version)
+    if binary:
+        writer.SetFileTypeToBinary()
+    else:
+        writer.SetFileTypeToASCII()
+    assert writer.Write() == 1
+
+
+def main():
+    points, faces = read_off(SOURCE)
+    data = polydata(points, faces)
+    for version in (42, 51):
+        for binary in (False, True):
+            write_legacy(data, f"patch_vtk{version}_{'binary' if binary else 'ascii'}.vtk", binary, version)
+    stripper = vtk.vtkStripper()
+    stripper.SetInputData(data)
+    stripper.Update()
+    strips = stripper.GetOutput()
+    assert strips.GetNumberOfStrips() > 0
+    write_legacy(strips, "patch_strips_vtk51_binary.vtk", True, 51)
+    write_legacy(strips, "patch_strips_vtk42_ascii.vtk", False, 42)
+    mesh = meshio.Mesh(points, [("triangle", faces)])
+    meshio.write(HERE / "patch_meshio_binary.vtk", mesh, file_format="vtk", binary=True)
+    meshio.write(HERE / "patch_meshio_ascii.vtk", mesh, file_format="vtk", binary=False)
+
+
+if __name__ == "__main__":
+    main()
