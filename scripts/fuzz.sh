@@ -11,7 +11,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SECONDS_TOTAL="${1:-120}"
 BUILD="$ROOT/build-fuzz"
-FORMATS=(off ply obj stl vtk)
+FORMATS=(off ply obj stl vtk vtp)
 CXX_FOR_FUZZ="${CXX_FOR_FUZZ:-$(command -v clang++-14 || command -v clang++ || true)}"
 [ -n "$CXX_FOR_FUZZ" ] || { echo "fuzz: needs clang++ (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
 

@@ -12,7 +12,7 @@ PACKAGES=(
   libopenmesh-dev libgtest-dev libcli11-dev nlohmann-json3-dev
   python3-matplotlib python3-numpy python3-meshio
   clang-14 libclc-14 libclang-rt-14-dev
-  libssl-dev openmpi-bin libopenmpi-dev libnanoflann-dev
+  libssl-dev openmpi-bin libopenmpi-dev libnanoflann-dev libexpat1-dev zlib1g-dev
 )
 
 missing=()

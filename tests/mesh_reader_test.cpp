@@ -263,9 +263,11 @@ TEST(PlyReader, TruncatedBinaryAndDataAfterTheElements) {
 
 // --- legacy VTK ---
 
-// The committed patch mesh as VTK's own writer (legacy 4.2 and 5.1, ASCII
-// and binary, with point normals, cell labels and field data; and as
-// triangle strips from vtkStripper) and meshio (UNSTRUCTURED_GRID) wrote it
+// The committed patch mesh as VTK's own writers (legacy 4.2 and 5.1, ASCII
+// and binary, with point normals, cell labels and field data; as triangle
+// strips from vtkStripper; XML .vtp in ascii, inline binary and appended raw
+// and base64 data, zlib-compressed or not, 32- and 64-bit headers) and
+// meshio (UNSTRUCTURED_GRID) wrote it
 // (tests/data/vtk/make_vtk_files.py): the same points, to the precision the
 // ASCII writers print, and the same triangles, each turning the same way.
 TEST(VtkReader, FilesFromVtkAndMeshioReadAsTheSameMeshAsOff) {
@@ -282,7 +284,9 @@ TEST(VtkReader, FilesFromVtkAndMeshioReadAsTheSameMeshAsOff) {
   const auto expected = triangles_of(off);
   for (const char* name : {"patch_vtk42_ascii.vtk", "patch_vtk42_binary.vtk", "patch_vtk51_ascii.vtk",
                            "patch_vtk51_binary.vtk", "patch_strips_vtk42_ascii.vtk", "patch_strips_vtk51_binary.vtk",
-                           "patch_meshio_ascii.vtk", "patch_meshio_binary.vtk"}) {
+                           "patch_meshio_ascii.vtk", "patch_meshio_binary.vtk", "patch_ascii.vtp", "patch_binary.vtp",
+                           "patch_binary_zlib.vtp", "patch_appended_raw.vtp", "patch_appended_raw_zlib.vtp",
+                           "patch_appended_base64_zlib.vtp", "patch_strips_appended_raw.vtp"}) {
     SCOPED_TRACE(name);
     std::vector<std::string> vtk_warnings;
     const SurfaceMesh vtk = read_mesh(data(std::string("vtk/") + name), vtk_warnings);
@@ -330,6 +334,44 @@ TEST(VtkReader, RefusesWhatItCannotRead) {
   EXPECT_REFUSED(grid + tetra, vtk, "cell 0 has VTK cell type 10, not a surface cell");
   EXPECT_REFUSED(grid + points + "CELLS 1 4\n3 0 1 2\n", vtk, "CELLS without CELL_TYPES");
   EXPECT_EQ(refusal(grid + points + "CELLS 2 6\n3 0 1 2\n1 0\nCELL_TYPES 2\n5\n1\n", vtk), "accepted");
+}
+
+TEST(VtpReader, RefusesWhatItCannotRead) {
+  const auto vtp = MeshFormat::vtp;
+  const auto file = [](const std::string& attributes, const std::string& piece, const std::string& body) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\"" +
+           attributes + ">\n<PolyData>\n<Piece " + piece + ">\n" + body + "</Piece>\n</PolyData>\n</VTKFile>\n";
+  };
+  const std::string points =
+      "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0"
+      "</DataArray></Points>\n";
+  const std::string polys =
+      "<Polys><DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2</DataArray>"
+      "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3</DataArray></Polys>\n";
+  const std::string triangle = "NumberOfPoints=\"3\" NumberOfPolys=\"1\"";
+  EXPECT_EQ(refusal(file("", triangle, points + polys), vtp), "accepted");
+  EXPECT_REFUSED("not xml", vtp, "not well-formed XML");
+  EXPECT_REFUSED("<?xml version=\"1.0\"?><Mesh/>", vtp, "expected a <VTKFile> element, found <Mesh>");
+  EXPECT_REFUSED(file(" compressor=\"vtkLZ4DataCompressor\"", triangle, points + polys), vtp,
+                 "compressor 'vtkLZ4DataCompressor' is not read");
+  EXPECT_REFUSED(file("", "NumberOfPoints=\"4\" NumberOfPolys=\"1\"", points + polys), vtp,
+                 "<Points>: 12 values, more than its 17 bytes can hold");
+  EXPECT_REFUSED(file("", triangle, points), vtp, "<Polys> has no DataArray named 'offsets'");
+  EXPECT_REFUSED(file("", triangle, points + polys.substr(0, polys.find("<DataArray type=\"Int32\" Name=\"offsets")) +
+                                        "<DataArray type=\"Int32\" Name=\"offsets\" format=\"binary\">AAAAAA==</DataArray>"
+                                        "</Polys>"),
+                 vtp, "<Polys> offsets: its header claims 0 bytes where the array's values take 4");
+  // A compressed block whose header claims a gigabyte from a few bytes:
+  // refused before anything that size is allocated. (3 blocks of 2^30
+  // bytes, compressed sizes 1, 1, 1, in base64.)
+  EXPECT_REFUSED(file(" compressor=\"vtkZLibDataCompressor\"", "NumberOfPoints=\"268435456\"",
+                      "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"binary\">"
+                      "AwAAAAAAAEAAAAAAAQAAAAEAAAABAAAA eJwDAAAAAAE=</DataArray></Points>"),
+                 vtp, "NumberOfPoints 268435456 is more than the file can hold");
+  EXPECT_REFUSED(file(" compressor=\"vtkZLibDataCompressor\"", "NumberOfPoints=\"1\"",
+                      "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"binary\">"
+                      "AwAAAAAAAEAAAAAAAQAAAAEAAAABAAAA eJwDAAAAAAE=</DataArray></Points>"),
+                 vtp, "its header claims 1073741824 bytes where the array's values take 12");
 }
 
 // --- OBJ ---

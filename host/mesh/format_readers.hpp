@@ -16,5 +16,6 @@ PolygonSoup read_ply(std::span<const char> bytes, const std::string& label);
 PolygonSoup read_obj(std::span<const char> bytes, const std::string& label);
 PolygonSoup read_stl(std::span<const char> bytes, const std::string& label);
 PolygonSoup read_vtk(std::span<const char> bytes, const std::string& label);
+PolygonSoup read_vtp(std::span<const char> bytes, const std::string& label);
 
 }  // namespace meshparticles

@@ -16,6 +16,7 @@ MeshFormat mesh_format_of(const std::filesystem::path& file) {
   if (ext == ".ply") return MeshFormat::ply;
   if (ext == ".stl") return MeshFormat::stl;
   if (ext == ".vtk") return MeshFormat::vtk;
+  if (ext == ".vtp") return MeshFormat::vtp;
   throw UserError(file.string() + ": unknown mesh format '" + ext + "' (use " + kMeshExtensions + ")");
 }
 
@@ -31,6 +32,8 @@ PolygonSoup read_polygon_soup(std::span<const char> bytes, MeshFormat format, co
       return read_stl(bytes, label);
     case MeshFormat::vtk:
       return read_vtk(bytes, label);
+    case MeshFormat::vtp:
+      return read_vtp(bytes, label);
   }
   throw UserError(label + ": unknown mesh format");
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Mesh input: OFF, OBJ, PLY, STL and legacy VTK read by our own strict readers
+// Mesh input: OFF, OBJ, PLY, STL and VTK (legacy and XML) read by our own strict readers
 // (format_readers) into a polygon soup, then checked (mesh_checks) and handed
 // on as a SurfaceMesh. Why not a library: docs/MESHES.md.
 #include <filesystem>
@@ -13,10 +13,10 @@
 
 namespace meshparticles {
 
-enum class MeshFormat { off, obj, ply, stl, vtk };
+enum class MeshFormat { off, obj, ply, stl, vtk, vtp };
 
-// The extensions of the formats read, for messages: ".off, .obj, .ply, .stl, .vtk".
-inline constexpr const char* kMeshExtensions = ".off, .obj, .ply, .stl, .vtk";
+// The extensions of the formats read, for messages.
+inline constexpr const char* kMeshExtensions = ".off, .obj, .ply, .stl, .vtk, .vtp";
 
 // The format a file name's extension (any case) names; throws UserError for
 // any other extension.

@@ -2,7 +2,8 @@
 """Writes the VTK test files of tests/data/vtk from meshes/patch.off with two
 writers that are not ours: VTK's own (vtkPolyDataWriter, legacy versions 4.2
 and 5.1, ASCII and binary, with point and cell attributes and field data,
-and triangle strips from vtkStripper) and meshio's. Run once with a Python
+and triangle strips from vtkStripper; and vtkXMLPolyDataWriter's .vtp in every
+data mode, compressed or not, with 32- and 64-bit headers) and meshio's. Run once with a Python
 that has `vtk` and `meshio` (pip install vtk meshio); the files are committed,
 and the tests read them back against the same mesh read from OFF:
 
@@ -75,6 +76,26 @@ def write_legacy(data, name, binary, version):
     assert writer.Write() == 1
 
 
+def write_xml(data, name, mode, compressed, header64):
+    writer = vtk.vtkXMLPolyDataWriter()
+    writer.SetInputData(data)
+    writer.SetFileName(str(HERE / name))
+    if mode == "ascii":
+        writer.SetDataModeToAscii()
+    elif mode == "binary":
+        writer.SetDataModeToBinary()
+    else:
+        writer.SetDataModeToAppended()
+        writer.SetEncodeAppendedData(mode == "appended_base64")
+    if compressed:
+        writer.SetCompressorTypeToZLib()
+        writer.SetBlockSize(4096)  # several blocks per array
+    else:
+        writer.SetCompressorTypeToNone()
+    writer.SetHeaderTypeToUInt64() if header64 else writer.SetHeaderTypeToUInt32()
+    assert writer.Write() == 1
+
+
 def main():
     points, faces = read_off(SOURCE)
     data = polydata(points, faces)
@@ -88,6 +109,16 @@ def main():
     assert strips.GetNumberOfStrips() > 0
     write_legacy(strips, "patch_strips_vtk51_binary.vtk", True, 51)
     write_legacy(strips, "patch_strips_vtk42_ascii.vtk", False, 42)
+    for name, mode, compressed, header64 in [
+        ("ascii", "ascii", False, False),
+        ("binary", "binary", False, False),
+        ("binary_zlib", "binary", True, False),
+        ("appended_raw", "appended_raw", False, True),
+        ("appended_raw_zlib", "appended_raw", True, False),
+        ("appended_base64_zlib", "appended_base64", True, True),
+    ]:
+        write_xml(data, f"patch_{name}.vtp", mode, compressed, header64)
+    write_xml(strips, "patch_strips_appended_raw.vtp", "appended_raw", False, False)
     mesh = meshio.Mesh(points, [("triangle", faces)])
     meshio.write(HERE / "patch_meshio_binary.vtk", mesh, file_format="vtk", binary=True)
     meshio.write(HERE / "patch_meshio_ascii.vtk", mesh, file_format="vtk", binary=False)
