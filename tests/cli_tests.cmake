@@ -36,8 +36,11 @@ expect_exit(degenerate_warns 0 "1 degenerate \\(zero-area\\) triangle" info ${DA
 expect_exit(unreferenced_warns 0 "2 unreferenced vertices dropped" info ${DATA}/unreferenced_vertices.off)
 expect_exit(quads_warn 0 "6 polygons with more than 3 vertices triangulated" info ${DATA}/cube_quads.off)
 # Arguments and devices.
-expect_exit(no_subcommand 2 "error: " )
-expect_exit(unknown_subcommand 2 "error: " frobnicate)
+expect_exit(unknown_subcommand 2 "error: unknown command 'frobnicate' \\(commands: info, " frobnicate)
+expect_exit(bad_option_before_command 2 "error: .*--frobnicate" --frobnicate run)
+add_test(NAME cli.command_guide COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/command_guide.sh $<TARGET_FILE:meshparticles>
+                                        ${PROJECT_VERSION})
+set_tests_properties(cli.command_guide PROPERTIES LABELS fast)
 expect_exit(unknown_device 2 "--device='no-such-device' matches no device above" devices --device no-such-device)
 # No OpenCL runtime at all: the ICD loader finds no vendor, the message names the package.
 expect_exit_of(no_opencl_runtime 3 "no OpenCL platform found: install an OpenCL runtime .*pocl-opencl-icd"

@@ -4,7 +4,9 @@
 #include <iostream>
 
 #include "batch/failure.hpp"
+#include "cli/command_guide.hpp"
 #include "cli/commands.hpp"
+#include "common/version.hpp"
 
 namespace meshparticles {
 
@@ -26,6 +28,7 @@ int main(int argc, char** argv) {
   using namespace meshparticles;
   CLI::App app{"meshparticles: spread particles evenly over triangulated surface meshes"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "meshparticles " + program_version());
   add_info_command(app);
   add_devices_command(app);
   add_generate_command(app);
@@ -36,12 +39,24 @@ int main(int argc, char** argv) {
   add_bench_command(app);
   add_quality_command(app);
   add_compare_command(app);
+  add_completion_command(app);
+  if (argc == 1) {
+    std::cerr << short_usage(app);
+    return 2;
+  }
+  // CLI11 alone would answer a misspelt command with "A subcommand is required".
+  if (const auto error = unknown_command_error(app, argv[1])) {
+    std::cerr << "meshparticles: error: " << *error << "\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
     return app.exit(help);
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
+  } catch (const CLI::CallForVersion& version) {
+    return app.exit(version);
   } catch (const CLI::ParseError& error) {
     std::cerr << "meshparticles: error: " << error.what() << " (see --help)\n";
     return 2;

@@ -6,6 +6,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/text_format.hpp"
+#include "common/version.hpp"
 
 namespace meshparticles {
 
@@ -86,7 +87,7 @@ void write_batch_summary(const std::filesystem::path& directory, const std::vect
   std::map<std::string, std::size_t> counts;
   for (const MeshStatus status : kStatuses) counts[mesh_status_name(status)] = 0;
   for (const nlohmann::json& row : rows) ++counts[row.at("status").get<std::string>()];
-  const nlohmann::json summary = {{"timing_fields", kTimingFields}, {"counts", counts}, {"meshes", rows}};
+  const nlohmann::json summary = {{"version", program_version()}, {"timing_fields", kTimingFields}, {"counts", counts}, {"meshes", rows}};
   write_file_atomically(directory / "summary.json", [&](std::ostream& out) { out << summary.dump(2) << "\n"; });
   write_file_atomically(directory / "summary.csv", [&](std::ostream& out) {
     for (std::size_t c = 0; c < kColumns.size(); ++c) out << (c ? "," : "") << kColumns[c];

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/version.hpp"
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {
@@ -109,6 +110,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
   }
   const SurfaceMesh& working = result.working->mesh;
   nlohmann::json report = {
+      {"version", program_version()},
       {"mesh", mesh_json(mesh, result, mesh_sha256)},
       {"working_mesh", {{"refinement_rounds", result.working->levels},
                         {"longest_edge", result.plan.working_mesh.longest_edge},
@@ -150,6 +152,7 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
     trace.push_back(entry);
   }
   nlohmann::json report = {
+      {"version", program_version()},
       {"mesh", mesh_json(mesh, result, mesh_sha256)},
       {"params", run_parameters(result.plan, out)},
       {"device", result.device},
