@@ -31,6 +31,8 @@ expect_exit(repeated_index 2 "repeated_index\\.off: face 2 uses vertex 2 more th
 # A VTK file from a segmentation pipeline runs like any mesh; a volume grid is refused.
 expect_exit(run_vtk 0 "spread: [0-9]+ done" run ${DATA}/vtk/patch_vtk51_binary.vtk -n 20 --no-cache --out ${CMAKE_CURRENT_BINARY_DIR}/cli_run_vtk)
 expect_exit(vtk_truncated 2 "patch_meshio_binary_truncated\\.vtk: line [0-9]+: POINTS: 1200 values, more than the" info ${DATA}/vtk/patch_meshio_binary_truncated.vtk)
+# Found by fuzz_vtp: a base64 problem was reported without the file's name.
+expect_exit(vtp_not_base64 2 "error: [^ ]*not_base64_connectivity\\.vtp: <Polys> connectivity: not base64 data$" info ${DATA}/vtk/not_base64_connectivity.vtp)
 # Tolerated with a one-line warning, exit 0.
 expect_exit(degenerate_warns 0 "1 degenerate \\(zero-area\\) triangle" info ${DATA}/degenerate_triangle.off)
 expect_exit(unreferenced_warns 0 "2 unreferenced vertices dropped" info ${DATA}/unreferenced_vertices.off)

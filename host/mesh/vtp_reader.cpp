@@ -148,8 +148,9 @@ int base64_value(char c) {
 // Base64 in groups of four characters, whitespace skipped. A group with
 // padding ends a stream and the next group starts another: VTK's writers
 // encode a header and its data as two streams, meshio sometimes as one.
-// `max_bytes`: stop once that many bytes are decoded.
-std::vector<unsigned char> decode_base64(std::string_view text, std::size_t max_bytes, const std::string& what) {
+// `max_bytes`: stop once that many bytes are decoded. Text that is not
+// base64 sets `problem` (the caller names the file and the array).
+std::vector<unsigned char> decode_base64(std::string_view text, std::size_t max_bytes, std::string& problem) {
   std::vector<unsigned char> bytes;
   bytes.reserve(std::min(max_bytes, text.size() / 4 * 3 + 3));
   std::array<int, 4> group{};
@@ -158,12 +159,18 @@ std::vector<unsigned char> decode_base64(std::string_view text, std::size_t max_
     if (bytes.size() >= max_bytes) break;
     if (is_space(c)) continue;
     if (c == '=') {
-      if (filled < 2) throw UserError(what + ": base64 padding out of place");
+      if (filled < 2) {
+        problem = "base64 padding out of place";
+        return {};
+      }
       ++padding;
       group[filled++] = 0;
     } else {
       const int value = base64_value(c);
-      if (value < 0 || padding > 0) throw UserError(what + ": not base64 data");
+      if (value < 0 || padding > 0) {
+        problem = "not base64 data";
+        return {};
+      }
       group[filled++] = value;
     }
     if (filled < 4) continue;
@@ -174,7 +181,10 @@ std::vector<unsigned char> decode_base64(std::string_view text, std::size_t max_
     bytes.insert(bytes.end(), decoded, decoded + 3 - padding);
     filled = padding = 0;
   }
-  if (filled != 0 && bytes.size() < max_bytes) throw UserError(what + ": base64 data ends inside a group");
+  if (filled != 0 && bytes.size() < max_bytes) {
+    problem = "base64 data ends inside a group";
+    return {};
+  }
   if (bytes.size() > max_bytes) bytes.resize(max_bytes);
   return bytes;
 }
@@ -359,9 +369,11 @@ class VtpReader {
     // The first n bytes of the block, header included.
     const auto first_bytes = [&](std::uint64_t n) {
       if (n > available) fail(what + ": data ends before the " + plural(n, "byte") + " its header claims");
-      std::vector<unsigned char> bytes = base64 ? decode_base64(encoded, std::size_t(n), what)
+      std::string problem;
+      std::vector<unsigned char> bytes = base64 ? decode_base64(encoded, std::size_t(n), problem)
                                                 : std::vector<unsigned char>(encoded.begin(), encoded.begin() +
                                                                                               std::ptrdiff_t(n));
+      if (!problem.empty()) fail(what + ": " + problem);
       if (bytes.size() < n) fail(what + ": data ends before the " + plural(n, "byte") + " its header claims");
       return bytes;
     };
