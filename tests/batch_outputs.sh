@@ -104,7 +104,7 @@ same_results() {
   diff <(rows "$1") <(rows "$2") > /dev/null || { diff <(rows "$1") <(rows "$2") || true; fail "$2: summary differs from $1"; }
   for folder in "$1"/*/; do
     local name=$(basename "$folder")
-    for file in particles.particles particles.csv particles.ply mesh_distance.vtk; do
+    for file in particles.particles particles.csv particles.ply mesh_distance.vtk mesh_distance.vtp; do
       cmp -s "$folder/$file" "$2/$name/$file" || fail "$2/$name/$file differs from $1's"
     done
   done
@@ -143,8 +143,8 @@ broken)
   # Two patch.off: two folders, patch+HASH each, neither a plain "patch".
   [ "$(ls -d "$reference"/patch+* | wc -l)" -eq 2 ] && [ ! -e "$reference/patch" ] || fail "two patch.off share a folder"
   for folder in "$reference"/*/; do
-    [ "$(ls "$folder" | tr '\n' ' ')" = "mesh_distance.vtk particles.csv particles.particles particles.ply report.json " ] ||
-      fail "$folder does not hold a run's five files"
+    [ "$(ls "$folder" | tr '\n' ' ')" = "mesh_distance.vtk mesh_distance.vtp particles.csv particles.particles particles.ply report.json " ] ||
+      fail "$folder does not hold a run's six files"
   done
   [ ! -e "$reference/broken" ] || fail "a refused mesh left a folder"
   grep -q "^meshparticles: \[9/9\] " "$reference.log" || fail "no progress line per mesh"
@@ -238,7 +238,7 @@ for expected, row in zip(reference["meshes"], out["meshes"]):
 assert lost <= 1, f"{lost} meshes lost with one rank"
 EOF
   for folder in "$out"/*/; do
-    [ "$(ls "$folder" | wc -l)" -eq 5 ] || fail "$folder is not a whole output after the kill"
+    [ "$(ls "$folder" | wc -l)" -eq 6 ] || fail "$folder is not a whole output after the kill"
   done
   stamps "$out" > "$work/before.txt"
   mpi 3 "$out" --rank-timeout 3

@@ -64,7 +64,7 @@ kill_at_random() {
 }
 writing_kills=0
 
-same_files() { for name in particles.particles particles.csv particles.ply mesh_distance.vtk; do cmp -s "$1/$name" "$2/$name" || return 1; done; }
+same_files() { for name in particles.particles particles.csv particles.ply mesh_distance.vtk mesh_distance.vtp; do cmp -s "$1/$name" "$2/$name" || return 1; done; }
 check_run_set() {
   for n in 256 512; do
     if same_files "$out" "$work/reference_$n"; then

@@ -6,9 +6,14 @@
 #include <fstream>
 #include <sstream>
 
+#include <openssl/evp.h>
 #include <unistd.h>
 
+#include <cstring>
+
 #include "common/user_error.hpp"
+#include "common/version.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "particle_test_support.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "reports/run_outputs.hpp"
@@ -22,6 +27,20 @@ std::string slurp(const std::filesystem::path& file) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+// The Float32 values of the first base64 DataArray in a .vtp after `after`.
+std::vector<float> first_float_array(const std::string& xml, const std::string& after) {
+  const std::size_t start = xml.find('>', xml.find("<DataArray", xml.find(after))) + 1;
+  const std::string text = xml.substr(start, xml.find('<', start) - start);
+  std::vector<unsigned char> bytes(text.size() / 4 * 3 + 3);
+  const int decoded = EVP_DecodeBlock(bytes.data(), reinterpret_cast<const unsigned char*>(text.data()), int(text.size()));
+  std::uint64_t count = 0;
+  if (decoded < 8) return {};
+  std::memcpy(&count, bytes.data(), 8);
+  std::vector<float> values(count / sizeof(float));
+  std::memcpy(values.data(), bytes.data() + 8, count);
+  return values;
 }
 
 TEST(RunOutputs, WritesParticlesCsvAndReport) {
@@ -94,6 +113,26 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   for (double value; values >> value; ++count) zeros += value == 0.0;
   EXPECT_EQ(count, mesh.vertex_count());
   EXPECT_GE(zeros, 1u);  // the vertices the particles sit on
+
+  // The same mesh and values as XML PolyData, which our own reader takes back.
+  std::vector<std::string> vtp_warnings;
+  const SurfaceMesh from_vtp = read_mesh((directory / "nested" / "mesh_distance.vtp").string(), vtp_warnings);
+  ASSERT_EQ(from_vtp.vertex_count(), mesh.vertex_count());
+  EXPECT_EQ(from_vtp.triangles(), mesh.triangles());
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    EXPECT_EQ(from_vtp.positions()[v].x, float(mesh.positions()[v].x)) << v;
+    EXPECT_EQ(from_vtp.positions()[v].z, float(mesh.positions()[v].z)) << v;
+  }
+  const std::vector<float> vtp_values =
+      first_float_array(slurp(directory / "nested" / "mesh_distance.vtp"), "<PointData");
+  std::istringstream vtk_values(vtk.substr(values_at + 21));
+  ASSERT_EQ(vtp_values.size(), mesh.vertex_count());
+  for (const float value : vtp_values) {
+    double text_value = 0;
+    vtk_values >> text_value;
+    EXPECT_FLOAT_EQ(value, float(text_value));
+  }
+  EXPECT_EQ(written["version"], program_version());
   std::filesystem::remove_all(directory);
 }
 

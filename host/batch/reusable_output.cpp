@@ -44,7 +44,13 @@ nlohmann::json without_out(nlohmann::json params) {
 // `vertices`: of the mesh the particles moved on (spread: the working mesh).
 bool rows_match(const std::filesystem::path& directory, std::size_t particles, std::size_t vertices) {
   const auto field = lines_of(directory / "mesh_distance.vtk");
-  return rows_after(lines_of(directory / "particles.particles"), "") == particles &&
+  const auto xml_field = lines_of(directory / "mesh_distance.vtp");
+  const std::string xml_points = "NumberOfPoints=\"" + std::to_string(vertices) + "\"";
+  const bool xml_matches = std::any_of(xml_field.begin(), xml_field.end(), [&](const std::string& line) {
+    return line.find(xml_points) != std::string::npos;
+  });
+  return xml_matches && xml_field.size() > 1 && xml_field.back() == "</VTKFile>" &&
+         rows_after(lines_of(directory / "particles.particles"), "") == particles &&
          rows_after(lines_of(directory / "particles.csv"), kParticlesCsvHeader) == particles &&
          rows_after(lines_of(directory / "particles.ply"), "end_header") == particles &&
          std::count(field.begin(), field.end(), "POINTS " + std::to_string(vertices) + " float") == 1 &&

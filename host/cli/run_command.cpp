@@ -48,7 +48,8 @@ void print_summary(const RunResult& result, const nlohmann::json& report, const 
     if (report.contains("avg_kernel_ms")) std::printf(" (update kernels %.3f ms)", report["avg_kernel_ms"].get<double>());
   }
   std::printf("\nquality     %s", quality_line(result.quality).c_str());
-  std::printf("\noutput      %s/{particles.particles, particles.csv, report.json, particles.ply, mesh_distance.vtk}\n",
+  std::printf("\noutput      %s/{particles.particles, particles.csv, report.json, particles.ply, "
+              "mesh_distance.vtk, mesh_distance.vtp}\n",
               out.c_str());
 }
 

@@ -53,6 +53,8 @@ void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh
     // On the mesh the particles moved on: for spread, the refined input.
     write_mesh_field_vtk(staging / "mesh_distance.vtk", result.particle_mesh(mesh), result.distance_to_nearest,
                          "distance_to_nearest_particle");
+    write_mesh_field_vtp(staging / "mesh_distance.vtp", result.particle_mesh(mesh), result.distance_to_nearest,
+                         "distance_to_nearest_particle");
     write_new_file(staging / "report.json", [&](std::ostream& out) { out << report.dump(2) << "\n"; });
   });
 }

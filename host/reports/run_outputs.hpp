@@ -5,9 +5,9 @@
 // particles.csv (kParticlesCsvHeader: the nearest input vertex, the point,
 // and a triangle of the input with barycentric weights; ids as in the
 // file), report.json (mesh, parameters, device, trace, timings, quality),
-// and for ParaView particles.ply (point cloud) and mesh_distance.vtk (the
-// mesh the particles moved on, with the distance from each vertex to its
-// nearest particle).
+// and for ParaView particles.ply (point cloud) and mesh_distance.vtk and
+// mesh_distance.vtp (legacy and XML VTK: the mesh the particles moved on,
+// with the distance from each vertex to its nearest particle).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -20,7 +20,7 @@ namespace meshparticles {
 
 // The names of the files of one run: an output directory holds these and nothing else.
 inline const std::set<std::string> kRunOutputFiles = {"particles.particles", "particles.csv", "particles.ply",
-                                                      "mesh_distance.vtk", "report.json"};
+                                                      "mesh_distance.vtk", "mesh_distance.vtp", "report.json"};
 
 inline constexpr const char* kParticlesCsvHeader =
     "particle,vertex,x,y,z,corner_a,corner_b,corner_c,weight_a,weight_b,weight_c";
