@@ -3,7 +3,7 @@
 
     scripts/compare_samplers.py [MESH ...] [-n 256,1024] [--config NAME=ARGS ...] [--ours-args ARGS]
                                 [--repeat K] [--json FILE] [--keep DIR] [--no-warmup] [--binary FILE]
-                                [--meshlab-timeout S]
+                                [--meshlab-timeout S] [--vertex-only] [--no-farthest]
     scripts/compare_samplers.py --corpus [--limit K] [--max-vertices V] [-n ...]
 
 What it compares, per mesh and particle count n:
@@ -11,7 +11,8 @@ What it compares, per mesh and particle count n:
   (`--config NAME=ARGS`, repeatable; default: `default` with no extra
   arguments and `farthest start` with `--iterations 0`), each with the extra
   arguments of `--ours-args` appended. `farthest start` is always run: the
-  targets measure against it (give a config of that name to change it).
+  targets measure against it (give a config of that name to change it;
+  `--no-farthest` leaves it out, and its cover check with it).
 - MeshLab vertex Poisson disk: `generate_sampling_poisson_disk(samplenum=n,
   exactnumflag=True, subsample=True)`, a subset of the mesh's vertices;
 - MeshLab surface Poisson disk: the same with subsample=False, points
@@ -32,10 +33,13 @@ vertex sampler: nn_cv / MeshLab nn_cv <= 0.8, rho - MeshLab rho >= +0.05,
 cover <= MeshLab's cover, and cover <= 1.1 x the farthest start's cover.
 
 Times: ours is the wall time of the whole `run` process (mesh input, geodesic
-distances from the cache, the particles, five output files), with the
-report's `seconds.total` beside it; MeshLab is the filter call alone
-(time.perf_counter around it; loading the mesh is not counted; MeshLab is
-given up on a mesh and n after `--meshlab-timeout` seconds, default 300).
+distances from the cache, the particles, six output files), with the
+report's `seconds.total` beside it (and in the JSON the process's peak
+memory, `peak_rss_bytes`, from wait4); MeshLab is the filter call alone
+(time.perf_counter around it; loading the mesh is not counted, the JSON has
+it as `load_seconds`; MeshLab is given up on a mesh and n after
+`--meshlab-timeout` seconds, default 300). `--vertex-only` runs (and
+measures) MeshLab's vertex sampler alone.
 One untimed warm-up run per mesh fills the distance cache and the OpenCL
 kernel cache first (`--no-warmup` skips it). `--repeat K` times everything K times,
 alternating ours and MeshLab, and reports min..max; the metrics come from
@@ -104,10 +108,10 @@ def cache_home():
     return Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
 
 
-def run_program(command, **options):
-    """subprocess.run, with a program that cannot start (removed, or relinked by a build) as a one-line error."""
+def run_program(command, runner=subprocess.run, **options):
+    """subprocess.run (or RUNNER), with a program that cannot start (removed, or relinked by a build) as a one-line error."""
     try:
-        return subprocess.run(command, **options)
+        return runner(command, **options)
     except OSError as error:
         die(f"{command[0]}: cannot run it ({error.strerror}; is a build replacing it?)")
 
@@ -119,8 +123,8 @@ def last_line(text):
 
 # ---------------------------------------------------------------- MeshLab side
 
-def meshlab_worker(mesh, n, out_dir, result_path):
-    """Runs inside the peer venv: both MeshLab samplers on MESH, points to files, timings to RESULT."""
+def meshlab_worker(mesh, n, out_dir, result_path, stems):
+    """Runs inside the peer venv: MeshLab's samplers named by STEMS on MESH, points to files, timings to RESULT."""
     import importlib.metadata
 
     import numpy as np
@@ -128,8 +132,12 @@ def meshlab_worker(mesh, n, out_dir, result_path):
 
     result = {"pymeshlab": importlib.metadata.version("pymeshlab"), "samplers": {}}
     for label, stem, subsample in MESHLAB_SAMPLERS:
+        if stem not in stems:
+            continue
         meshes = pymeshlab.MeshSet()
+        loading = time.perf_counter()
         meshes.load_new_mesh(mesh)
+        load_seconds = time.perf_counter() - loading
         input_vertices = meshes.current_mesh().vertex_number()
         start = time.perf_counter()
         meshes.generate_sampling_poisson_disk(samplenum=n, exactnumflag=True, subsample=subsample)
@@ -140,7 +148,7 @@ def meshlab_worker(mesh, n, out_dir, result_path):
         path = Path(out_dir) / f"{stem}.particles"
         np.savetxt(path, points, fmt="%.9g")
         result["samplers"][label] = {"seconds": seconds, "points": int(len(points)), "file": str(path),
-                                     "meshlab_vertices": int(input_vertices)}
+                                     "meshlab_vertices": int(input_vertices), "load_seconds": load_seconds}
     Path(result_path).write_text(json.dumps(result))
 
 
@@ -163,12 +171,12 @@ def peer_venv_python():
     return python
 
 
-def run_meshlab(python, mesh, n, out_dir, timeout):
-    """Both MeshLab samplers in the peer venv: {label: {seconds, points, file, ...}}, and pymeshlab's version."""
+def run_meshlab(python, mesh, n, out_dir, timeout, samplers):
+    """SAMPLERS (of MESHLAB_SAMPLERS) in the peer venv: {label: {seconds, points, file, ...}}, and pymeshlab's version."""
     out_dir.mkdir(parents=True, exist_ok=True)
     result_path = out_dir / "meshlab.json"
     command = [str(python), str(Path(__file__).resolve()), "--meshlab-worker", str(mesh), str(n), str(out_dir),
-               str(result_path)]
+               str(result_path), ",".join(stem for _, stem, _ in samplers)]
     try:
         # The vertex sampler loops for ever when asked for more points than the mesh has vertices.
         worker = run_program(command, capture_output=True, text=True, timeout=timeout)
@@ -202,17 +210,22 @@ def run_ours(binary, mesh, n, args, out_dir):
     """One `meshparticles run`: its wall time, the report's figures and the particle file."""
     command = [str(binary), "run", str(mesh), "-n", str(n), "--out", str(out_dir), "-q", *args]
     start = time.perf_counter()
-    run = run_program(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    run = run_program(command, runner=subprocess.Popen, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    errors = run.stderr.read()
+    _, status, usage = os.wait4(run.pid, 0)  # this child's own peak memory, not the other children's
+    run.returncode = os.waitstatus_to_exitcode(status)
     wall = time.perf_counter() - start
+    run.stderr.close()
     if run.returncode != 0:
-        raise Failure(f"run failed (exit {run.returncode}): {last_line(run.stderr)}")
+        raise Failure(f"run failed (exit {run.returncode}): {errors and last_line(errors)}")
     try:
         report = json.loads((out_dir / "report.json").read_text())
     except (OSError, ValueError) as error:
         raise Failure(f"run left no readable report.json ({error})")
     return {"seconds": wall, "report_total": report["seconds"]["total"], "file": str(out_dir / "particles.particles"),
             "iterations_run": report.get("iterations_run"), "stopped": report.get("stopped"),
-            "device": report.get("device"), "params": report.get("params")}
+            "device": report.get("device"), "params": report.get("params"),
+            "peak_rss_bytes": usage.ru_maxrss * 1024}
 
 
 def measure_quality(binary, mesh, particles, refine=None):
@@ -296,14 +309,14 @@ def named_cases(binary, paths, max_vertices):
 
 # -------------------------------------------------------------- one mesh, one n
 
-def compare_case(binary, python, mesh, vertices, n, configs, repeat, meshlab_timeout, work):
-    """The rows for one mesh and n: each ours configuration, then MeshLab's two samplers, all measured."""
+def compare_case(binary, python, mesh, vertices, n, configs, repeat, meshlab_timeout, work, samplers=MESHLAB_SAMPLERS):
+    """The rows for one mesh and n: each ours configuration, then MeshLab's SAMPLERS, all measured."""
     base = {"mesh": mesh.name, "mesh_path": str(mesh), "vertices": vertices, "n": n}
     rows = {}
     for name, args in configs.items():
         rows[name] = dict(base, sampler=f"ours: {name}", kind="ours", config=name, args=args,
                           seconds=[], report_total=[])
-    for label, _, subsample in MESHLAB_SAMPLERS:
+    for label, _, subsample in samplers:
         rows[label] = dict(base, sampler=label, kind="meshlab", subsample=subsample, seconds=[], points_per_repeat=[])
     files = {}  # row key -> the particle file of the first repetition, to measure
     pymeshlab_version = None
@@ -313,7 +326,8 @@ def compare_case(binary, python, mesh, vertices, n, configs, repeat, meshlab_tim
             out = work / (f"ours-{index}" if repetition == 0 else "ours-timing")
             time_ours(binary, mesh, n, args, out, rows[name], files if repetition == 0 else None, f"{tag}: ours {name}")
         out = work / ("meshlab" if repetition == 0 else "meshlab-timing")
-        version = time_meshlab(python, mesh, n, out, meshlab_timeout, rows, files if repetition == 0 else None, tag)
+        version = time_meshlab(python, mesh, n, out, meshlab_timeout, rows, files if repetition == 0 else None, tag,
+                               samplers)
         pymeshlab_version = version or pymeshlab_version
     for key, row in rows.items():
         measure_row(binary, mesh, row, files.get(key))
@@ -333,6 +347,7 @@ def time_ours(binary, mesh, n, args, out, row, files, tag):
         return
     row["seconds"].append(ran["seconds"])
     row["report_total"].append(ran["report_total"])
+    row.setdefault("peak_rss_bytes", []).append(ran["peak_rss_bytes"])
     if files is not None:
         files[row["config"]] = ran["file"]
         row.update(iterations_run=ran["iterations_run"], stopped=ran["stopped"], device=ran["device"],
@@ -340,14 +355,14 @@ def time_ours(binary, mesh, n, args, out, row, files, tag):
     progress(f"{tag}: {ran['seconds']:.3f} s (report {ran['report_total']:.3f} s)")
 
 
-def time_meshlab(python, mesh, n, out, timeout, rows, files, tag):
-    """One timed call of both MeshLab samplers into ROWS; returns pymeshlab's version (None on failure)."""
+def time_meshlab(python, mesh, n, out, timeout, rows, files, tag, samplers=MESHLAB_SAMPLERS):
+    """One timed call of MeshLab's SAMPLERS into ROWS; returns pymeshlab's version (None on failure)."""
     if "error" in rows[MESHLAB_VERTEX]:
         return None  # failed in an earlier repetition: it would again
     try:
-        sampled, version = run_meshlab(python, mesh, n, out, timeout)
+        sampled, version = run_meshlab(python, mesh, n, out, timeout, samplers)
     except Failure as failure:
-        for label, _, _ in MESHLAB_SAMPLERS:
+        for label, _, _ in samplers:
             rows[label]["error"] = str(failure)
         progress(f"{tag}: {failure}")
         return None
@@ -355,6 +370,7 @@ def time_meshlab(python, mesh, n, out, timeout, rows, files, tag):
         rows[label]["seconds"].append(sample["seconds"])
         rows[label]["points_per_repeat"].append(sample["points"])
         rows[label]["meshlab_vertices"] = sample["meshlab_vertices"]
+        rows[label].setdefault("load_seconds", []).append(sample.get("load_seconds"))
         if files is not None:
             files[label] = sample["file"]
         progress(f"{tag}: {label}: {sample['points']} points, {sample['seconds']:.3f} s")
@@ -576,6 +592,9 @@ def parse_arguments(argv):
     parser.add_argument("--keep", type=Path, metavar="DIR", help="keep the particle files and run outputs here")
     parser.add_argument("--meshlab-timeout", type=positive, default=300, metavar="S",
                         help="give up on MeshLab's samplers for one mesh and n after S seconds (default 300)")
+    parser.add_argument("--vertex-only", action="store_true", help="MeshLab's vertex sampler alone (no surface sampler)")
+    parser.add_argument("--no-farthest", action="store_true",
+                        help="leave out the farthest start (unless a --config names it) and its cover check")
     parser.add_argument("--no-warmup", action="store_true", help="no untimed warm-up run per mesh")
     parser.add_argument("--binary", type=Path,
                         default=Path(os.environ.get("MESHPARTICLES_BINARY") or ROOT / "build" / "meshparticles"),
@@ -590,7 +609,10 @@ def parse_arguments(argv):
         parser.error("--limit goes with --corpus")
     extra = shlex.split(options.ours_args)
     configs = dict(options.config) if options.config else dict(DEFAULT_CONFIGS)
-    configs.setdefault(FARTHEST, DEFAULT_CONFIGS[FARTHEST])
+    if not options.no_farthest:
+        configs.setdefault(FARTHEST, DEFAULT_CONFIGS[FARTHEST])
+    elif not options.config:
+        del configs[FARTHEST]
     options.configs = {name: shlex.split(args) + extra for name, args in configs.items()}
     return options
 
@@ -600,7 +622,8 @@ def parse_arguments(argv):
 def main(argv):
     if argv[:1] == ["--meshlab-worker"]:
         mesh, n, out_dir, result_path = argv[1:5]
-        meshlab_worker(mesh, int(n), out_dir, result_path)
+        stems = argv[5].split(",") if len(argv) > 5 else [stem for _, stem, _ in MESHLAB_SAMPLERS]
+        meshlab_worker(mesh, int(n), out_dir, result_path, stems)
         return 0
     options = parse_arguments(argv)
     binary = options.binary.resolve() if options.binary.exists() else options.binary
@@ -633,7 +656,8 @@ def main(argv):
                     progress(f"{mesh.name}: warm-up: {failure}")
             for n in counts:
                 case_rows, version = compare_case(binary, python, mesh, vertices, n, options.configs, options.repeat,
-                                                  options.meshlab_timeout, work / mesh.name / f"n{n}")
+                                                  options.meshlab_timeout, work / mesh.name / f"n{n}",
+                                                  MESHLAB_SAMPLERS[:1] if options.vertex_only else MESHLAB_SAMPLERS)
                 rows.extend(case_rows)
                 pymeshlab_version = version or pymeshlab_version
     finally:
