@@ -351,12 +351,16 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
   const std::string triangle = "NumberOfPoints=\"3\" NumberOfPolys=\"1\"";
   EXPECT_EQ(refusal(file("", triangle, points + polys), vtp), "accepted");
   EXPECT_REFUSED("not xml", vtp, "not well-formed XML");
-  EXPECT_REFUSED("<?xml version=\"1.0\"?><Mesh/>", vtp, "expected a <VTKFile> element, found <Mesh>");
+  EXPECT_REFUSED("<?xml version=\"1.0\"?><Mesh/>", vtp, "expected a <VTKFile> element, found 'Mesh'");
   EXPECT_REFUSED(file(" compressor=\"vtkLZ4DataCompressor\"", triangle, points + polys), vtp,
                  "compressor 'vtkLZ4DataCompressor' is not read");
   EXPECT_REFUSED(file("", "NumberOfPoints=\"4\" NumberOfPolys=\"1\"", points + polys), vtp,
                  "<Points>: 12 values, more than its 17 bytes can hold");
   EXPECT_REFUSED(file("", triangle, points), vtp, "<Polys> has no DataArray named 'offsets'");
+  // Found by fuzz_vtp: a value from the file went into the message verbatim.
+  std::string unprintable = points;
+  unprintable.replace(unprintable.find("ascii"), 5, "asc\x7fi");
+  EXPECT_REFUSED(file("", triangle, unprintable + polys), vtp, "<Points>: unknown format 'asc?i'");
   EXPECT_REFUSED(file("", triangle, points + polys.substr(0, polys.find("<DataArray type=\"Int32\" Name=\"offsets")) +
                                         "<DataArray type=\"Int32\" Name=\"offsets\" format=\"binary\">AAAAAA==</DataArray>"
                                         "</Polys>"),

@@ -97,7 +97,7 @@ class XmlReader {
     path_.emplace_back(name);
     const std::size_t depth = path_.size();
     if (depth == 1) {
-      if (name != "VTKFile") error_ = "expected a <VTKFile> element, found <" + quoted_name(name) + ">";
+      if (name != "VTKFile") error_ = "expected a <VTKFile> element, found " + quoted(name);
       document_.file = std::move(attributes);
     } else if (depth == 2 && name == "PolyData") {
       document_.poly_data = true;
@@ -125,7 +125,6 @@ class XmlReader {
     path_.pop_back();
   }
 
-  static std::string quoted_name(std::string_view name) { return std::string(name.substr(0, 40)); }
 
   const std::string& label_;
   Document document_;
@@ -314,7 +313,7 @@ class VtpReader {
     }
     const Document document = XmlReader(label_).parse(xml);
     read_file_attributes(document.file);
-    if (!document.poly_data) fail("not a PolyData file (VTKFile type '" + value_or(document.file, "type", "") + "')");
+    if (!document.poly_data) fail("not a PolyData file (VTKFile type " + quoted(value_or(document.file, "type", "")) + ")");
     if (document.pieces.empty()) fail("the PolyData has no <Piece>");
     for (const Piece& piece : document.pieces) read_piece(piece);
     return std::move(soup_);
@@ -340,14 +339,14 @@ class VtpReader {
 
   void read_file_attributes(const Attributes& file) {
     const std::string order = value_or(file, "byte_order", "LittleEndian");
-    if (order != "LittleEndian" && order != "BigEndian") fail("unknown byte_order '" + order.substr(0, 40) + "'");
+    if (order != "LittleEndian" && order != "BigEndian") fail("unknown byte_order " + quoted(order));
     big_endian_ = order == "BigEndian";
     const std::string header = value_or(file, "header_type", "UInt32");
-    if (header != "UInt32" && header != "UInt64") fail("unknown header_type '" + header.substr(0, 40) + "'");
+    if (header != "UInt32" && header != "UInt64") fail("unknown header_type " + quoted(header));
     header_bytes_ = header == "UInt64" ? 8 : 4;
     const std::string compressor = value_or(file, "compressor", "");
     if (!compressor.empty() && compressor != "vtkZLibDataCompressor") {
-      fail("compressor '" + compressor.substr(0, 40) + "' is not read (only vtkZLibDataCompressor)");
+      fail("compressor " + quoted(compressor) + " is not read (only vtkZLibDataCompressor)");
     }
     compressed_ = !compressor.empty();
   }
@@ -355,7 +354,7 @@ class VtpReader {
   std::size_t count_attribute(const Attributes& attributes, std::string_view name, const std::string& where) const {
     const std::string text = value_or(attributes, name, "0");
     const auto count = parse_integer(text);
-    if (!count || *count < 0) fail(where + ": " + std::string(name) + " '" + text.substr(0, 40) + "' is not a count");
+    if (!count || *count < 0) fail(where + ": " + std::string(name) + " " + quoted(text) + " is not a count");
     return std::size_t(*count);
   }
 
@@ -439,7 +438,7 @@ class VtpReader {
   };
   Values values(const DataArray& array, std::size_t expected, bool integers, const std::string& what) {
     const auto type = parse_type(value_or(array.attributes, "type", ""));
-    if (!type) fail(what + ": unknown type '" + value_or(array.attributes, "type", "").substr(0, 40) + "'");
+    if (!type) fail(what + ": unknown type " + quoted(value_or(array.attributes, "type", "")));
     if (integers && (*type == ValueType::float32 || *type == ValueType::float64)) fail(what + ": not an integer type");
     const std::string format = value_or(array.attributes, "format", "ascii");
     Values out;
@@ -472,7 +471,7 @@ class VtpReader {
       if (offset > appended_.size()) fail(what + ": offset " + std::to_string(offset) + " is past the appended data");
       bytes = block(appended_.substr(offset), appended_base64_, expected_bytes, what);
     } else {
-      fail(what + ": unknown format '" + format.substr(0, 40) + "'");
+      fail(what + ": unknown format " + quoted(format));
     }
     const BinaryValues decoded(bytes, *type, big_endian_);
     if (decoded.count() != expected) {
