@@ -376,6 +376,12 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
                       "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"binary\">"
                       "AwAAAAAAAEAAAAAAAQAAAAEAAAABAAAA eJwDAAAAAAE=</DataArray></Points>"),
                  vtp, "its header claims 1073741824 bytes where the array's values take 12");
+  // Found by fuzz_vtp: a UInt64 block count of 2^64 - 1 went through a
+  // double and did not convert back (undefined behaviour).
+  EXPECT_REFUSED(file(" compressor=\"vtkZLibDataCompressor\" header_type=\"UInt64\"", "NumberOfPoints=\"1\"",
+                      "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"binary\">"
+                      "//////////8AAAEAAAAAAAAAAAAAAAAA</DataArray></Points>"),
+                 vtp, "its header claims 18446744073709551615 blocks, past the data");
 }
 
 // --- OBJ ---

@@ -252,6 +252,12 @@ class BinaryValues {
     return 0;
   }
 
+  // A block header's byte count (UInt32 or UInt64), exact: through a double
+  // a count near 2^64 would not convert back.
+  std::uint64_t header_count(std::size_t i) const {
+    return type_ == ValueType::uint64 ? get<std::uint64_t>(i) : std::uint64_t(get<std::uint32_t>(i));
+  }
+
   // An index; nothing for a real type or an unsigned value past long long.
   std::optional<long long> integer(std::size_t i) const {
     switch (type_) {
@@ -378,7 +384,7 @@ class VtpReader {
     };
     const std::size_t h = header_bytes_;
     const auto header_value = [&](std::span<const unsigned char> bytes, std::size_t i) {
-      return std::uint64_t(BinaryValues(bytes, h == 8 ? ValueType::uint64 : ValueType::uint32, big_endian_).real(i));
+      return BinaryValues(bytes, h == 8 ? ValueType::uint64 : ValueType::uint32, big_endian_).header_count(i);
     };
     const auto claims = [&](std::uint64_t bytes) {
       if (bytes != expected_bytes) {
