@@ -1,0 +1,115 @@
+// read_mesh and Mesh(vertices, faces): the command line's reader and checks
+// (mesh/mesh_reader.hpp, mesh/mesh_checks.hpp), so a mesh refused or warned
+// about there is refused or warned about here. Warnings go both to
+// Mesh.warnings and to Python's warnings module (meshparticles.MeshWarning).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "bindings.hpp"
+#include "mesh/mesh_checks.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh_object.hpp"
+
+namespace py = pybind11;
+
+namespace meshparticles::python {
+
+namespace {
+
+PyObject* mesh_warning = nullptr;  // meshparticles.MeshWarning, owned by the module
+
+void warn_each(const std::vector<std::string>& warnings) {
+  for (const auto& warning : warnings) {
+    // Raises when the caller turned warnings into errors.
+    if (PyErr_WarnEx(mesh_warning, warning.c_str(), 1) != 0) throw py::error_already_set();
+  }
+}
+
+Mesh read_mesh_file(const std::filesystem::path& file, bool strict) {
+  Mesh mesh;
+  {
+    py::gil_scoped_release unlocked;  // a big file takes seconds to read and check
+    mesh.surface = std::make_shared<const SurfaceMesh>(read_mesh(file, mesh.warnings, MeshReadOptions{strict}));
+  }
+  mesh.label = file.string();
+  mesh.file = file;
+  warn_each(mesh.warnings);
+  return mesh;
+}
+
+// Arrays in, copied into a polygon soup: the checks want it, and the
+// surface owns its own arrays.
+Mesh mesh_from_arrays(const py::array& vertices, const py::array& faces, bool strict) {
+  if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw py::value_error("vertices: expected an array of shape (V, 3)");
+  if (faces.ndim() != 2 || faces.shape(1) != 3) throw py::value_error("faces: expected an array of shape (F, 3)");
+  const char kind = faces.dtype().kind();
+  if (kind != 'i' && kind != 'u') throw py::type_error("faces: expected integer vertex indices");
+  const auto points = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(vertices);
+  const auto indices = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(faces);
+  if (!points || !indices) throw py::type_error("vertices and faces: expected numeric arrays");
+  PolygonSoup soup;
+  const auto p = points.unchecked<2>();
+  for (py::ssize_t v = 0; v < p.shape(0); ++v) soup.vertices.push_back({p(v, 0), p(v, 1), p(v, 2)});
+  const auto f = indices.unchecked<2>();
+  for (py::ssize_t t = 0; t < f.shape(0); ++t) soup.add_triangle(f(t, 0), f(t, 1), f(t, 2));
+  Mesh mesh;
+  mesh.label = "<arrays>";
+  mesh.surface = std::make_shared<const SurfaceMesh>(
+      build_checked_mesh(soup, mesh.label, mesh.warnings, MeshReadOptions{strict}));
+  warn_each(mesh.warnings);
+  return mesh;
+}
+
+py::array_t<double> vertex_array(const SurfaceMesh& surface) {
+  py::array_t<double> out({py::ssize_t(surface.vertex_count()), py::ssize_t(3)});
+  auto o = out.mutable_unchecked<2>();
+  for (std::size_t v = 0; v < surface.vertex_count(); ++v) {
+    const Vec3& p = surface.positions()[v];
+    o(v, 0) = p.x, o(v, 1) = p.y, o(v, 2) = p.z;
+  }
+  return out;
+}
+
+py::array_t<std::int64_t> face_array(const SurfaceMesh& surface) {
+  py::array_t<std::int64_t> out({py::ssize_t(surface.triangle_count()), py::ssize_t(3)});
+  auto o = out.mutable_unchecked<2>();
+  for (std::size_t t = 0; t < surface.triangle_count(); ++t) {
+    for (int corner = 0; corner < 3; ++corner) o(t, corner) = surface.triangles()[t][corner];
+  }
+  return out;
+}
+
+py::array_t<std::int64_t> input_id_array(const SurfaceMesh& surface) {
+  py::array_t<std::int64_t> out(std::vector<py::ssize_t>{py::ssize_t(surface.vertex_count())});
+  auto o = out.mutable_unchecked<1>();
+  for (std::size_t v = 0; v < surface.vertex_count(); ++v) o(v) = surface.input_id(VertexId(v));
+  return out;
+}
+
+}  // namespace
+
+void bind_mesh(py::module_& module) {
+  mesh_warning = PyErr_NewExceptionWithDoc("meshparticles._core.MeshWarning",
+                                           "A tolerated oddity of a mesh (the command line's warning lines)",
+                                           PyExc_UserWarning, nullptr);
+  module.add_object("MeshWarning", py::handle(mesh_warning));
+  py::class_<Mesh>(module, "Mesh")
+      .def(py::init(&mesh_from_arrays), py::arg("vertices"), py::arg("faces"), py::kw_only(),
+           py::arg("strict") = false)
+      .def_property_readonly("vertices", [](const Mesh& mesh) { return vertex_array(*mesh.surface); })
+      .def_property_readonly("faces", [](const Mesh& mesh) { return face_array(*mesh.surface); })
+      .def_property_readonly("input_ids", [](const Mesh& mesh) { return input_id_array(*mesh.surface); })
+      .def_property_readonly("input_vertex_count", [](const Mesh& mesh) { return mesh.surface->input_vertex_count(); })
+      .def_property_readonly("area", [](const Mesh& mesh) { return mesh.surface->area(); })
+      .def_property_readonly("mean_edge_length", [](const Mesh& mesh) { return mesh.surface->mean_edge_length(); })
+      .def_readonly("label", &Mesh::label)
+      .def_readonly("warnings", &Mesh::warnings)
+      .def("__repr__", [](const Mesh& mesh) {
+        return "<meshparticles.Mesh " + mesh.label + ": " + std::to_string(mesh.surface->vertex_count()) +
+               " vertices, " + std::to_string(mesh.surface->triangle_count()) + " triangles>";
+      });
+  module.def("read_mesh", &read_mesh_file, py::arg("path"), py::kw_only(), py::arg("strict") = false);
+}
+
+}  // namespace meshparticles::python

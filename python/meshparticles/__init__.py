@@ -1,0 +1,217 @@
+"""Spread particles evenly over triangle meshes: the pipeline of the
+`meshparticles` program, in-process (docs/PYTHON.md).
+
+    import meshparticles as mp
+    mesh = mp.read_mesh("meshes/sphere.off")
+    result = mp.run(mesh, n=256, seed=3)
+    result.positions        # (256, 3) float64
+    result.save("out")      # the files of `meshparticles run --out out`
+
+Options take the command line's names with `-` as `_` (--rebuild-every is
+rebuild_every=); None means the command line's default. Errors the command
+line reports in one line raise ValueError with that line; no usable OpenCL
+runtime or device raises DeviceError.
+"""
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Dict, List, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core
+from ._core import DeviceError, Mesh, MeshWarning, __version__, read_mesh
+
+__all__ = [
+    "DeviceError",
+    "Mesh",
+    "MeshWarning",
+    "Result",
+    "__version__",
+    "as_mesh",
+    "devices",
+    "geodesics",
+    "quality",
+    "read_mesh",
+    "run",
+]
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+def as_mesh(mesh: Any) -> Mesh:
+    """A Mesh from a Mesh, a mesh file's path, or any object with `.vertices`
+    (V x 3) and `.faces` (F x 3 vertex indices), such as a trimesh.Trimesh.
+    The arrays are copied and checked as a file's would be."""
+    if isinstance(mesh, Mesh):
+        return mesh
+    if isinstance(mesh, (str, os.PathLike)):
+        return read_mesh(mesh)
+    if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
+        return Mesh(np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces))
+    raise TypeError(
+        f"expected a meshparticles.Mesh, a mesh file's path, or an object with .vertices and .faces, "
+        f"got {type(mesh).__name__}"
+    )
+
+
+def _path(value: Optional[PathLike]) -> Optional[str]:
+    return None if value is None else os.fspath(value)
+
+
+class Result:
+    """What run() computed. `positions` and `vertices` are NumPy copies, made
+    once; `report` and `quality` are fresh dicts on each access."""
+
+    def __init__(self, output: _core.RunOutput) -> None:
+        self._output = output
+        self.positions: np.ndarray = output.positions  # (n, 3) float64: each particle's point on the surface
+        self.vertices: np.ndarray = output.vertices  # (n,) int64: its nearest input vertex (the file's id)
+
+    @property
+    def report(self) -> Dict[str, Any]:
+        """report.json's content (its params.out is empty until save())."""
+        return json.loads(self._output.report_json())
+
+    @property
+    def quality(self) -> Dict[str, Any]:
+        """report.json's "quality": nn_min, nn_mean, nn_std, nn_cv, rho, cover, energy, stacked, d_hex."""
+        return json.loads(self._output.quality_json())
+
+    @property
+    def seconds(self) -> float:
+        """Wall time of the run: distances, particles and quality."""
+        return self._output.seconds
+
+    @property
+    def device(self) -> str:
+        """"serial" or the OpenCL device's name."""
+        return self._output.device
+
+    def save(self, directory: PathLike) -> None:
+        """Writes the five files of `meshparticles run --out DIRECTORY` in place
+        of DIRECTORY at once; refuses a directory holding other files."""
+        self._output.save(os.fspath(directory))
+
+    def __repr__(self) -> str:
+        return f"<meshparticles.Result: {len(self.positions)} particles on {self.device}, {self.seconds:.3f} s>"
+
+
+def run(
+    mesh: Any,
+    n: int = 1024,
+    *,
+    method: Optional[str] = None,
+    vertices_per_particle: Optional[float] = None,
+    iterations: Optional[int] = None,
+    backend: Optional[str] = None,
+    scheme: Optional[str] = None,
+    colors: Optional[int] = None,
+    init: Optional[str] = None,
+    start_vertex: Optional[int] = None,
+    seed: Optional[int] = None,
+    sigma: Optional[float] = None,
+    potential: Optional[str] = None,
+    geodesic: Optional[str] = None,
+    distances: Optional[str] = None,
+    cutoff: Optional[float] = None,
+    device: Optional[str] = None,
+    wg: Optional[int] = None,
+    tile: Optional[int] = None,
+    weights: Optional[str] = None,
+    rebuild_every: Optional[int] = None,
+    tuning_file: Optional[PathLike] = None,
+    cache_dir: Optional[PathLike] = None,
+    no_cache: bool = False,
+    threads: Optional[int] = None,
+    quiet: bool = False,
+) -> Result:
+    """`meshparticles run` on `mesh` with `n` particles; see `meshparticles run
+    --help` for each option. The GIL is released while it runs."""
+    output = _core.run(
+        as_mesh(mesh),
+        n=n,
+        method=method,
+        vertices_per_particle=vertices_per_particle,
+        iterations=iterations,
+        backend=backend,
+        scheme=scheme,
+        colors=colors,
+        init=init,
+        start_vertex=start_vertex,
+        seed=seed,
+        sigma=sigma,
+        potential=potential,
+        geodesic=geodesic,
+        distances=distances,
+        cutoff=cutoff,
+        device=device,
+        wg=wg,
+        tile=tile,
+        weights=weights,
+        rebuild_every=rebuild_every,
+        tuning_file=_path(tuning_file),
+        cache_dir=_path(cache_dir),
+        no_cache=no_cache,
+        threads=threads,
+        quiet=quiet,
+    )
+    return Result(output)
+
+
+def quality(
+    mesh: Any,
+    points: Any,
+    *,
+    sigma: Optional[float] = None,
+    potential: Optional[str] = None,
+    geodesic: Optional[str] = None,
+    refine: Union[str, int, None] = None,
+    distances: Optional[str] = None,
+    cutoff: Optional[float] = None,
+    cache_dir: Optional[PathLike] = None,
+    no_cache: bool = False,
+    threads: Optional[int] = None,
+    quiet: bool = False,
+) -> Dict[str, Any]:
+    """`meshparticles quality MESH PARTICLES --json` on `points` (P x 3, or a
+    Result): the points snapped to the nearest vertices of a measuring mesh
+    and measured by geodesic distances."""
+    if isinstance(points, Result):
+        points = points.positions
+    text = _core.quality_json(
+        as_mesh(mesh),
+        np.asarray(points, dtype=np.float64),
+        sigma=sigma,
+        potential=potential,
+        geodesic=geodesic,
+        refine=None if refine is None else str(refine),
+        distances=distances,
+        cutoff=cutoff,
+        cache_dir=_path(cache_dir),
+        no_cache=no_cache,
+        threads=threads,
+        quiet=quiet,
+    )
+    return json.loads(text)
+
+
+def devices(device: Optional[str] = None) -> List[Dict[str, Any]]:
+    """The OpenCL devices (`meshparticles devices`), the one a run would pick
+    marked "selected". Raises DeviceError without a runtime or device."""
+    return _core.devices(device=device or "")
+
+
+def geodesics(
+    mesh: Any,
+    sources: Union[int, Sequence[int]],
+    max_distance: Optional[float] = None,
+    *,
+    geodesic: str = "fmm",
+) -> np.ndarray:
+    """Geodesic distances from each source (an input vertex id) to every input
+    vertex: a (len(sources), V) float64 array, +inf beyond `max_distance`, in
+    another component, or at a vertex the reader dropped."""
+    ids = [int(sources)] if np.ndim(sources) == 0 else [int(s) for s in sources]
+    return _core.geodesics(as_mesh(mesh), ids, max_distance=max_distance, geodesic=geodesic)
