@@ -1,0 +1,221 @@
+"""The Python package against the installed build (scripts/test_python.sh
+installs it into a fresh venv first; this file installs nothing).
+
+Runs on the committed meshes. The comparison with the program's own output
+needs build/meshparticles (or $MESHPARTICLES_CLI) and is skipped without it.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import types
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import meshparticles as mp
+
+ROOT = Path(__file__).resolve().parents[2]
+SPHERE = ROOT / "meshes" / "sphere.off"
+TETRAHEDRON = ROOT / "meshes" / "tetrahedron.off"
+N = 64
+PAPER = dict(method="paper", backend="serial-field")  # the paper's method, on the host
+
+
+@pytest.fixture(scope="module")
+def cache(tmp_path_factory):
+    """One distance cache for the module: the sphere's table is computed once."""
+    return tmp_path_factory.mktemp("cache")
+
+
+@pytest.fixture(scope="module")
+def sphere():
+    return mp.read_mesh(SPHERE)
+
+
+@pytest.fixture(scope="module")
+def paper_run(sphere, cache):
+    return mp.run(sphere, n=N, seed=5, cache_dir=cache, quiet=True, **PAPER)
+
+
+@pytest.fixture(scope="module")
+def spread_run(sphere, cache):
+    return mp.run(sphere, n=N, seed=5, cache_dir=cache, quiet=True)
+
+
+def cli():
+    program = os.environ.get("MESHPARTICLES_CLI") or ROOT / "build" / "meshparticles"
+    return program if Path(program).is_file() else None
+
+
+def on_surface(mesh, points, tolerance=1e-9):
+    """Whether each point lies on some triangle of the mesh (within tolerance)."""
+    v = mesh.vertices
+    a, b, c = (v[mesh.faces[:, k]] for k in range(3))
+    ab, ac = b - a, c - a
+    normal = np.cross(ab, ac)
+    normal /= np.linalg.norm(normal, axis=1, keepdims=True)
+    found = np.zeros(len(points), dtype=bool)
+    for i, p in enumerate(points):
+        ap = p - a
+        height = np.abs(np.einsum("ij,ij->i", ap, normal))
+        # Barycentric coordinates of p's projection on each triangle's plane.
+        d00, d01, d11 = (np.einsum("ij,ij->i", x, y) for x, y in ((ab, ab), (ab, ac), (ac, ac)))
+        d20, d21 = np.einsum("ij,ij->i", ap, ab), np.einsum("ij,ij->i", ap, ac)
+        denominator = d00 * d11 - d01 * d01
+        w1 = (d11 * d20 - d01 * d21) / denominator
+        w2 = (d00 * d21 - d01 * d20) / denominator
+        inside = (w1 >= -tolerance) & (w2 >= -tolerance) & (w1 + w2 <= 1 + tolerance)
+        found[i] = np.any(inside & (height <= tolerance))
+    return found
+
+
+def test_version_is_cmakes():
+    cmake = (ROOT / "CMakeLists.txt").read_text()
+    assert mp.__version__ == re.search(r"project\(meshparticles\s+VERSION\s+([0-9.]+)", cmake).group(1)
+
+
+def test_read_mesh(sphere):
+    assert sphere.vertices.shape == (4000, 3) and sphere.vertices.dtype == np.float64
+    assert sphere.faces.shape == (7996, 3)
+    assert sphere.faces.min() >= 0 and sphere.faces.max() < 4000
+    assert sphere.warnings == []
+    assert sphere.label == str(SPHERE)
+
+
+def test_mesh_from_arrays_round_trips(sphere):
+    again = mp.Mesh(sphere.vertices, sphere.faces.astype(np.int32))
+    np.testing.assert_array_equal(again.vertices, sphere.vertices)
+    np.testing.assert_array_equal(again.faces, sphere.faces)
+    assert again.area == pytest.approx(sphere.area)
+
+
+def test_objects_with_vertices_and_faces_are_meshes(sphere):
+    like_trimesh = types.SimpleNamespace(vertices=sphere.vertices.tolist(), faces=sphere.faces)
+    mesh = mp.as_mesh(like_trimesh)
+    np.testing.assert_array_equal(mesh.vertices, sphere.vertices)
+    assert mp.as_mesh(str(SPHERE)).vertices.shape == (4000, 3)
+
+
+def test_unreferenced_vertex_warns_and_is_dropped():
+    tetrahedron = mp.read_mesh(TETRAHEDRON)
+    vertices = np.vstack([tetrahedron.vertices, [[9.0, 9.0, 9.0]]])
+    with pytest.warns(mp.MeshWarning):
+        mesh = mp.Mesh(vertices, tetrahedron.faces)
+    assert len(mesh.warnings) == 1 and "unreferenced" in mesh.warnings[0]
+    assert mesh.vertices.shape == tetrahedron.vertices.shape
+    assert mesh.input_vertex_count == len(vertices)
+    distances = mp.geodesics(mesh, [0])
+    assert distances.shape == (1, len(vertices)) and np.isinf(distances[0, -1])
+
+
+def test_paper_run_lies_on_vertices(sphere, paper_run):
+    assert paper_run.positions.shape == (N, 3) and paper_run.vertices.shape == (N,)
+    np.testing.assert_array_equal(paper_run.positions, sphere.vertices[paper_run.vertices])
+    assert len(np.unique(paper_run.vertices)) == N
+    assert paper_run.report["params"]["backend"] == "serial-field"
+    assert paper_run.quality["nn_min"] > 0
+
+
+def test_spread_run_lies_on_the_surface(sphere, spread_run):
+    assert spread_run.positions.shape == (N, 3)
+    assert on_surface(sphere, spread_run.positions).all()
+    assert spread_run.report["params"]["method"] == "spread"
+    assert spread_run.seconds > 0
+
+
+def test_same_seed_same_particles(sphere, cache, paper_run, spread_run):
+    again = mp.run(sphere, n=N, seed=5, cache_dir=cache, quiet=True, **PAPER)
+    np.testing.assert_array_equal(again.positions, paper_run.positions)
+    again = mp.run(sphere, n=N, seed=5, cache_dir=cache, quiet=True)
+    np.testing.assert_array_equal(again.positions, spread_run.positions)
+
+
+def test_save_writes_the_run_files(paper_run, tmp_path):
+    out = tmp_path / "out"
+    paper_run.save(out)
+    assert sorted(p.name for p in out.iterdir()) == sorted(
+        ["particles.particles", "particles.csv", "particles.ply", "mesh_distance.vtk", "report.json"])
+    points = np.loadtxt(out / "particles.particles")
+    np.testing.assert_allclose(points, paper_run.positions, rtol=1e-8)
+    report = json.loads((out / "report.json").read_text())
+    assert report["params"]["out"] == str(out)
+    assert report["quality"] == paper_run.quality
+    paper_run.save(out)  # a run's own directory is replaced
+
+
+def test_save_refuses_a_directory_of_other_files(paper_run, tmp_path):
+    (tmp_path / "notes.txt").write_text("mine")
+    with pytest.raises(ValueError, match="notes.txt"):
+        paper_run.save(tmp_path)
+
+
+@pytest.mark.skipif(cli() is None, reason="needs build/meshparticles or $MESHPARTICLES_CLI")
+@pytest.mark.parametrize("options", [["--backend", "serial-field"], []], ids=["paper", "spread"])
+def test_same_particles_as_the_program(options, cache, tmp_path):
+    command = [str(cli()), "run", str(SPHERE), "-n", str(N), "--seed", "5", "-q", "--cache-dir", str(cache),
+               "--out", str(tmp_path / "cli")] + options
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+    python_options = PAPER if options else {}
+    mp.run(SPHERE, n=N, seed=5, cache_dir=cache, quiet=True, **python_options).save(tmp_path / "python")
+    for name in ("particles.particles", "particles.csv"):
+        assert (tmp_path / "python" / name).read_text() == (tmp_path / "cli" / name).read_text()
+
+
+def test_quality_of_a_run(sphere, paper_run, cache):
+    measured = mp.quality(sphere, paper_run, cache_dir=cache, quiet=True)
+    assert measured["n"] == N and measured["refinement_levels"] == 0
+    assert measured["quality"]["nn_mean"] == pytest.approx(paper_run.quality["nn_mean"])
+
+
+def test_geodesics(sphere):
+    distances = mp.geodesics(sphere, [0, 100])
+    assert distances.shape == (2, 4000)
+    assert distances[0, 0] == 0 and distances[1, 100] == 0
+    assert distances[0, 100] == pytest.approx(distances[1, 0], rel=0.02)
+    near = mp.geodesics(sphere, 0, max_distance=0.3)
+    assert np.isinf(near).any() and (near[np.isfinite(near)] <= 0.3).all()
+
+
+def test_devices_or_device_error():
+    try:
+        listed = mp.devices()
+    except mp.DeviceError:
+        return
+    assert all({"index", "name", "type", "selected"} <= set(d) for d in listed)
+
+
+def test_errors_are_value_errors_with_the_programs_message(sphere, tmp_path):
+    with pytest.raises(ValueError, match=r"n: expected a whole number from 1 to \d+, got 0"):
+        mp.run(sphere, n=0)
+    with pytest.raises(ValueError, match="unknown method 'fast'"):
+        mp.run(sphere, n=N, method="fast")
+    with pytest.raises(ValueError, match="no such file"):
+        mp.read_mesh(tmp_path / "missing.off")
+    with pytest.raises(ValueError):
+        mp.Mesh(np.zeros((3, 3)), np.array([[0, 1, 7]]))
+    with pytest.raises(ValueError, match=r"\(V, 3\)"):
+        mp.Mesh(np.zeros((3, 2)), np.array([[0, 1, 2]]))
+    with pytest.raises(TypeError, match="particles"):
+        mp.run(sphere, particles=5)
+    with pytest.raises(ValueError, match="is not a vertex"):
+        mp.geodesics(sphere, [4000])
+
+
+def test_no_opencl_runtime_is_a_device_error(tmp_path):
+    # The ICD loader reads OCL_ICD_VENDORS once, when OpenCL is first used: a fresh process.
+    script = (
+        "import sys, meshparticles as mp\n"
+        "try:\n"
+        f"    mp.run({str(SPHERE)!r}, n=8, backend='field', iterations=1, quiet=True, no_cache=True)\n"
+        "except mp.DeviceError as e:\n"
+        "    print(e); sys.exit(0)\n"
+        "sys.exit(1)\n"
+    )
+    environment = dict(os.environ, OCL_ICD_VENDORS=str(tmp_path / "no-vendors"))
+    done = subprocess.run([sys.executable, "-c", script], env=environment, capture_output=True, text=True)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "no OpenCL platform found" in done.stdout
+    assert issubclass(mp.DeviceError, RuntimeError)
