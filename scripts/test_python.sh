@@ -4,8 +4,8 @@
 # numpy from PyPI), then tests/python against what was installed.
 #   scripts/test_python.sh            build, install, test
 #   scripts/test_python.sh ARGS       pytest ARGS, e.g. -k geodesics
-# The wheel's CMake build is kept in build/python-wheel, so a second run
-# recompiles only what changed (the first takes about 8 minutes on 2 cores).
+# The wheel's CMake build is kept in build/python-wheel (git ignores build/);
+# a full build takes about 8 minutes on 2 cores.
 # Needs python3-venv, python3-dev and pybind11-dev (scripts/setup.sh lists
 # them). tests/python compares with build/meshparticles when it is there.
 set -euo pipefail
