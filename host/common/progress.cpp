@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "common/interruption.hpp"
+
 namespace meshparticles {
 
 ProgressLine::ProgressLine(std::string label, std::size_t total, bool quiet)
@@ -20,6 +22,7 @@ double ProgressLine::elapsed_seconds() const {
 }
 
 void ProgressLine::update(std::size_t done, const std::string& detail) {
+  throw_if_interrupted();
   done_ = done;
   if (quiet_ || !terminal_) return;
   const auto now = std::chrono::steady_clock::now();

@@ -12,7 +12,8 @@ class ProgressLine {
  public:
   ProgressLine(std::string label, std::size_t total, bool quiet);
   // Reports that `done` of `total` units are finished; thread-compatible when
-  // called from one thread at a time.
+  // called from one thread at a time. Throws Interrupted when the process's
+  // interruption check says stop (common/interruption.hpp).
   // `detail` (e.g. "moved 12, energy 623.4") follows the counts.
   void update(std::size_t done, const std::string& detail = "");
   // Prints the final summary (or clears the line on a terminal) with `suffix`.

@@ -77,9 +77,15 @@ DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, 
   ProgressLine progress("geodesics (" + method_name(method) + ", " + std::to_string(threads) + " threads)", n, quiet);
   std::vector<std::thread> workers;
   for (unsigned t = 0; t < threads; ++t) workers.emplace_back(work);
-  while (done < n) {
-    progress.update(done);
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  try {
+    while (done < n) {
+      progress.update(done);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  } catch (...) {  // interrupted: the workers stop at their next source
+    next_source = n;
+    for (auto& worker : workers) worker.join();
+    throw;
   }
   for (auto& worker : workers) worker.join();
   if (failure) std::rethrow_exception(failure);

@@ -261,9 +261,15 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   } else {
     std::vector<std::thread> workers;
     for (unsigned t = 0; t < threads; ++t) workers.emplace_back(work);
-    while (done < missing.size() && next < missing.size()) {
-      progress.update(done);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    try {
+      while (done < missing.size() && next < missing.size()) {
+        progress.update(done);
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    } catch (...) {  // interrupted: the workers stop at their next ball, the balls made are kept
+      next = missing.size();
+      for (auto& worker : workers) worker.join();
+      throw;
     }
     for (auto& worker : workers) worker.join();
   }
