@@ -2,9 +2,10 @@
 # Every test from a fresh Debian 12 machine: installs what is missing, builds
 # (warnings are errors), runs the whole suite with ctest on PoCL (the CPU
 # OpenCL device), then the fast tests again under AddressSanitizer and
-# UndefinedBehaviorSanitizer (scripts/sanitize.sh), two minutes of fuzzing of
-# the mesh readers (scripts/fuzz.sh) and ten real meshes from Debian's
-# libcgal-demo (scripts/real_meshes.sh --subset).
+# UndefinedBehaviorSanitizer (scripts/sanitize.sh), the Python package
+# installed with pip into a fresh venv and its tests (scripts/test_python.sh),
+# two minutes of fuzzing of the mesh readers (scripts/fuzz.sh) and ten real
+# meshes from Debian's libcgal-demo (scripts/real_meshes.sh --subset).
 #   scripts/test.sh            everything (what CI runs)
 #   scripts/test.sh ARGS       ctest ARGS only, e.g. -L fast or -R Monotone
 set -euo pipefail
@@ -19,5 +20,7 @@ if (($#)); then
 fi
 ctest --output-on-failure --parallel "$(nproc)"
 "$ROOT/scripts/sanitize.sh" fast
+# Against build/meshparticles too: the module's particles are the program's.
+MESHPARTICLES_CLI="$ROOT/build/meshparticles" "$ROOT/scripts/test_python.sh"
 "$ROOT/scripts/fuzz.sh" 120
 "$ROOT/scripts/real_meshes.sh" --subset

@@ -40,18 +40,49 @@ __all__ = [
 PathLike = Union[str, "os.PathLike[str]"]
 
 
+def _fan(polygons: "list[np.ndarray]") -> np.ndarray:
+    """Triangles from polygons of 3 or more vertex ids, each fanned from its
+    first vertex, as the program's readers do."""
+    triangles = [np.stack([p[0].repeat(len(p) - 2), p[1:-1], p[2:]], axis=1) for p in polygons if len(p) >= 3]
+    return np.concatenate(triangles) if triangles else np.zeros((0, 3), dtype=np.int64)
+
+
+def _vtk_cell_array(flat: Any) -> "list[np.ndarray]":
+    """Polygons from VTK's flat cell layout [n, id_1 .. id_n, n, ...] (pyvista's `.faces`)."""
+    flat = np.asarray(flat, dtype=np.int64).ravel()
+    polygons, at = [], 0
+    while at < len(flat):
+        count = int(flat[at])
+        if count < 0 or at + 1 + count > len(flat):
+            raise ValueError(f"faces: a cell of {count} vertices at position {at} runs past the array")
+        polygons.append(flat[at + 1 : at + 1 + count])
+        at += 1 + count
+    return polygons
+
+
 def as_mesh(mesh: Any) -> Mesh:
-    """A Mesh from a Mesh, a mesh file's path, or any object with `.vertices`
-    (V x 3) and `.faces` (F x 3 vertex indices), such as a trimesh.Trimesh.
-    The arrays are copied and checked as a file's would be."""
+    """A Mesh from a Mesh, a mesh file's path, or an object of the usual mesh
+    libraries: `.vertices` (V x 3) and `.faces` (F x 3) as trimesh has them;
+    `.points` and a flat VTK cell array `.faces` as pyvista's PolyData has
+    them (polygons fanned, no strips); `.points` and `.cells` blocks as
+    meshio's Mesh has them ("triangle", "quad" and "polygon" blocks used,
+    others ignored). The arrays are copied and checked as a file's would be."""
     if isinstance(mesh, Mesh):
         return mesh
     if isinstance(mesh, (str, os.PathLike)):
         return read_mesh(mesh)
     if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
         return Mesh(np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces))
+    if hasattr(mesh, "points") and hasattr(mesh, "faces"):
+        if getattr(mesh, "n_strips", 0):
+            raise ValueError("triangle strips: call .triangulate() on the PolyData first")
+        return Mesh(np.asarray(mesh.points, dtype=np.float64), _fan(_vtk_cell_array(mesh.faces)))
+    if hasattr(mesh, "points") and hasattr(mesh, "cells"):
+        polygons = [np.asarray(cell, dtype=np.int64) for block in mesh.cells
+                    if block.type in ("triangle", "quad", "polygon") for cell in block.data]
+        return Mesh(np.asarray(mesh.points, dtype=np.float64)[:, :3], _fan(polygons))
     raise TypeError(
-        f"expected a meshparticles.Mesh, a mesh file's path, or an object with .vertices and .faces, "
+        f"expected a meshparticles.Mesh, a mesh file's path, or a mesh object (trimesh, pyvista or meshio), "
         f"got {type(mesh).__name__}"
     )
 
@@ -90,7 +121,7 @@ class Result:
         return self._output.device
 
     def save(self, directory: PathLike) -> None:
-        """Writes the five files of `meshparticles run --out DIRECTORY` in place
+        """Writes the six files of `meshparticles run --out DIRECTORY` in place
         of DIRECTORY at once; refuses a directory holding other files."""
         self._output.save(os.fspath(directory))
 

@@ -7,8 +7,10 @@ needs build/meshparticles (or $MESHPARTICLES_CLI) and is skipped without it.
 import json
 import os
 import re
+import signal
 import subprocess
 import sys
+import time
 import types
 from pathlib import Path
 
@@ -99,6 +101,24 @@ def test_objects_with_vertices_and_faces_are_meshes(sphere):
     assert mp.as_mesh(str(SPHERE)).vertices.shape == (4000, 3)
 
 
+def test_pyvista_and_meshio_layouts_are_meshes(sphere):
+    # A quad (0 1 2 3) beside a triangle (2 1 4): fanned as the readers do.
+    points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 0.5, 0]], dtype=float)
+    fanned = [[0, 1, 2], [0, 2, 3], [2, 1, 4]]
+    like_pyvista = types.SimpleNamespace(points=points, faces=np.array([4, 0, 1, 2, 3, 3, 2, 1, 4]), n_strips=0)
+    np.testing.assert_array_equal(mp.as_mesh(like_pyvista).faces, fanned)
+    block = lambda kind, data: types.SimpleNamespace(type=kind, data=np.array(data))
+    like_meshio = types.SimpleNamespace(points=points, cells=[block("quad", [[0, 1, 2, 3]]), block("line", [[0, 1]]),
+                                                              block("triangle", [[2, 1, 4]])])
+    np.testing.assert_array_equal(mp.as_mesh(like_meshio).faces, fanned)
+    with pytest.raises(ValueError, match="runs past the array"):
+        mp.as_mesh(types.SimpleNamespace(points=points, faces=np.array([4, 0, 1])))
+    # The whole sphere through pyvista's layout: the same mesh.
+    flat = np.hstack([np.full((len(sphere.faces), 1), 3), sphere.faces]).ravel()
+    again = mp.as_mesh(types.SimpleNamespace(points=sphere.vertices, faces=flat))
+    np.testing.assert_array_equal(again.faces, sphere.faces)
+
+
 def test_unreferenced_vertex_warns_and_is_dropped():
     tetrahedron = mp.read_mesh(TETRAHEDRON)
     vertices = np.vstack([tetrahedron.vertices, [[9.0, 9.0, 9.0]]])
@@ -137,11 +157,12 @@ def test_save_writes_the_run_files(paper_run, tmp_path):
     out = tmp_path / "out"
     paper_run.save(out)
     assert sorted(p.name for p in out.iterdir()) == sorted(
-        ["particles.particles", "particles.csv", "particles.ply", "mesh_distance.vtk", "report.json"])
+        ["particles.particles", "particles.csv", "particles.ply", "mesh_distance.vtk", "mesh_distance.vtp", "report.json"])
     points = np.loadtxt(out / "particles.particles")
     np.testing.assert_allclose(points, paper_run.positions, rtol=1e-8)
     report = json.loads((out / "report.json").read_text())
     assert report["params"]["out"] == str(out)
+    assert report["version"] == mp.__version__
     assert report["quality"] == paper_run.quality
     paper_run.save(out)  # a run's own directory is replaced
 
@@ -219,3 +240,29 @@ def test_no_opencl_runtime_is_a_device_error(tmp_path):
     assert done.returncode == 0, done.stdout + done.stderr
     assert "no OpenCL platform found" in done.stdout
     assert issubclass(mp.DeviceError, RuntimeError)
+
+
+def test_ctrl_c_stops_a_long_run_and_writes_nothing(tmp_path):
+    # A run of many seconds (spread on the sphere refined to a million vertices),
+    # interrupted a second in: KeyboardInterrupt, and no output directory.
+    # Inside the run, not after it: the sweeps never print their final line
+    # (Python alone would raise KeyboardInterrupt only once run() returned).
+    script = (
+        "import sys, time, meshparticles as mp\n"
+        f"mesh = mp.read_mesh({str(SPHERE)!r})\n"
+        "print('started', flush=True)\n"
+        "try:\n"
+        "    result = mp.run(mesh, n=1024, vertices_per_particle=400)\n"
+        f"    result.save({str(tmp_path / 'out')!r})\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted', flush=True); sys.exit(0)\n"
+        "print('finished', flush=True); sys.exit(1)\n"
+    )
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "started"
+    time.sleep(1.0)
+    child.send_signal(signal.SIGINT)
+    out, err = child.communicate(timeout=120)
+    assert child.returncode == 0 and out.strip() == "interrupted", out + err
+    assert "spread: " not in err, err
+    assert not (tmp_path / "out").exists()
