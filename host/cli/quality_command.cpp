@@ -7,10 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
 #include "pipeline/mesh_input.hpp"
-#include "common/user_error.hpp"
-#include "pipeline/distances.hpp"
-#include "pipeline/sigma_check.hpp"
-#include "quality/particle_sets.hpp"
+#include "pipeline/point_sets.hpp"
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {
@@ -37,52 +34,25 @@ std::optional<unsigned> uniform_levels(const std::string& refine) {
 
 void run_quality(const QualityOptions& options) {
   const SurfaceMesh input = load_mesh(options.mesh, options.table.quiet, options.read);
+  PointSetsRequest request;
+  request.names = options.particle_files;
   // Read before the distance table, so a bad file fails in a second.
-  std::vector<std::vector<Vec3>> points;
-  for (const auto& file : options.particle_files) points.push_back(read_particle_points(file));
-  if (options.sigma) check_sigma_computable({parse_potential(options.potential), *options.sigma});
-  // Points between the input's vertices are measured where they lie on vertices.
-  const MeasuringMesh measuring =
-      measuring_mesh(input, points, uniform_levels(options.refine), options.refine == "spread");
-  const SurfaceMesh& mesh = measuring.refined.mesh;
-  const GeodesicMethod method = parse_method(options.geodesic);
-  // A local store's cutoff scales with the spacing of the set with the fewest particles (the widest).
-  std::size_t fewest = points.front().size();
-  for (const auto& set : points) fewest = std::min(fewest, set.size());
-  const GeodesicsRequest geodesics = options.table.request(method);
-  const DistancesRequest request = options.store.request(geodesics);
-  const ObtainedDistances obtained =
-      obtain_distances(mesh, geodesics, plan_distances(mesh, request, std::min(fewest, mesh.vertex_count()), false));
-  const DistanceStore& distances = *obtained.store;
-  const Potential potential = parse_potential(options.potential);
-  std::vector<MeasuredSet> sets;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    sets.push_back(
-        measure_particle_file(mesh, distances, method, options.particle_files[k], points[k], potential, options.sigma,
-                              options.table.quiet));
-  }
-  const bool comparing = sets.size() == 2;
-  double a_to_b = 0, b_to_a = 0;
-  if (comparing) {
-    a_to_b = mean_distance_to_nearest(mesh, method, sets[0].snapped.positions, sets[1].snapped.positions);
-    b_to_a = mean_distance_to_nearest(mesh, method, sets[1].snapped.positions, sets[0].snapped.positions);
-  }
+  for (const auto& file : options.particle_files) request.points.push_back(read_particle_points(file));
+  request.uniform_levels = uniform_levels(options.refine);
+  request.spread_mesh = options.refine == "spread";
+  request.geodesics = options.table.request(parse_method(options.geodesic));
+  request.distances = options.store.request(request.geodesics);
+  request.potential = parse_potential(options.potential);
+  request.sigma = options.sigma;
+  const PointSetsMeasurement measured = measure_point_sets(input, request);
   if (options.json) {
-    nlohmann::json out = {{"mesh", options.mesh},
-                          {"refinement", measuring.spread ? "spread" : "uniform"},
-                          {"refinement_levels", measuring.refined.levels},
-                          {"measured_vertices", mesh.vertex_count()}};
-    if (comparing) {
-      out["a"] = measured_set_json(sets[0]);
-      out["b"] = measured_set_json(sets[1]);
-      out["mean_distance_a_to_b"] = a_to_b;
-      out["mean_distance_b_to_a"] = b_to_a;
-    } else {
-      out.update(measured_set_json(sets[0]));
-    }
-    std::cout << out.dump(2) << "\n";
+    std::cout << point_sets_json(options.mesh, measured).dump(2) << "\n";
     return;
   }
+  const MeasuringMesh& measuring = measured.measuring;
+  const SurfaceMesh& mesh = measuring.refined.mesh;
+  const std::vector<MeasuredSet>& sets = measured.sets;
+  const Potential potential = request.potential;
   std::cout << "mesh " << options.mesh << " (" << input.vertex_count() << " vertices, mean edge "
             << input.mean_edge_length() << "); geodesic distances, " << potential_name(potential) << " potential";
   if (measuring.refined.levels > 0) {
@@ -93,9 +63,9 @@ void run_quality(const QualityOptions& options) {
   std::vector<const MeasuredSet*> columns;
   for (const auto& set : sets) columns.push_back(&set);
   std::cout << quality_table(columns);
-  if (comparing) {
-    std::cout << "\nmean distance to the nearest particle of the other set: A -> B " << a_to_b << ", B -> A "
-              << b_to_a << " (d_hex of A " << sets[0].quality.d_hex << ")\n";
+  if (sets.size() == 2) {
+    std::cout << "\nmean distance to the nearest particle of the other set: A -> B " << *measured.mean_a_to_b
+              << ", B -> A " << *measured.mean_b_to_a << " (d_hex of A " << sets[0].quality.d_hex << ")\n";
   }
 }
 

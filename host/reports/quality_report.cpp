@@ -96,4 +96,20 @@ std::string quality_table(const std::vector<const MeasuredSet*>& sets) {
   return text;
 }
 
+nlohmann::json point_sets_json(const std::string& mesh_label, const PointSetsMeasurement& measured) {
+  nlohmann::json out = {{"mesh", mesh_label},
+                        {"refinement", measured.measuring.spread ? "spread" : "uniform"},
+                        {"refinement_levels", measured.measuring.refined.levels},
+                        {"measured_vertices", measured.measuring.refined.mesh.vertex_count()}};
+  if (measured.sets.size() == 2) {
+    out["a"] = measured_set_json(measured.sets[0]);
+    out["b"] = measured_set_json(measured.sets[1]);
+    out["mean_distance_a_to_b"] = *measured.mean_a_to_b;
+    out["mean_distance_b_to_a"] = *measured.mean_b_to_a;
+  } else {
+    out.update(measured_set_json(measured.sets.front()));
+  }
+  return out;
+}
+
 }  // namespace meshparticles

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/point_sets.hpp"
 #include "quality/particle_sets.hpp"
 
 namespace meshparticles {
@@ -18,6 +19,10 @@ nlohmann::json quality_json(const DistributionQuality& quality);
 std::string quality_line(const DistributionQuality& quality);
 
 nlohmann::json measured_set_json(const MeasuredSet& set);
+
+// What `quality --json` (one set) and `compare --json` (two: "a", "b" and
+// the mean distances between them) print.
+nlohmann::json point_sets_json(const std::string& mesh_label, const PointSetsMeasurement& measured);
 
 // The metrics as a table, one column per set.
 std::string quality_table(const std::vector<const MeasuredSet*>& sets);

@@ -1,0 +1,31 @@
+#include "pipeline/point_sets.hpp"
+
+#include <algorithm>
+
+#include "pipeline/sigma_check.hpp"
+
+namespace meshparticles {
+
+PointSetsMeasurement measure_point_sets(const SurfaceMesh& input, const PointSetsRequest& request) {
+  if (request.sigma) check_sigma_computable({request.potential, *request.sigma});
+  // Points between the input's vertices are measured where they lie on vertices.
+  PointSetsMeasurement out{measuring_mesh(input, request.points, request.uniform_levels, request.spread_mesh), {}, {}, {}};
+  const SurfaceMesh& mesh = out.measuring.refined.mesh;
+  // A local store's cutoff scales with the spacing of the set with the fewest particles (the widest).
+  std::size_t fewest = request.points.front().size();
+  for (const auto& set : request.points) fewest = std::min(fewest, set.size());
+  const ObtainedDistances obtained = obtain_distances(
+      mesh, request.geodesics, plan_distances(mesh, request.distances, std::min(fewest, mesh.vertex_count()), false));
+  const GeodesicMethod method = request.geodesics.method;
+  for (std::size_t k = 0; k < request.points.size(); ++k) {
+    out.sets.push_back(measure_particle_file(mesh, *obtained.store, method, request.names[k], request.points[k],
+                                             request.potential, request.sigma, request.geodesics.quiet));
+  }
+  if (out.sets.size() == 2) {
+    out.mean_a_to_b = mean_distance_to_nearest(mesh, method, out.sets[0].snapped.positions, out.sets[1].snapped.positions);
+    out.mean_b_to_a = mean_distance_to_nearest(mesh, method, out.sets[1].snapped.positions, out.sets[0].snapped.positions);
+  }
+  return out;
+}
+
+}  // namespace meshparticles
