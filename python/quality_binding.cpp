@@ -1,6 +1,6 @@
-// quality(): `meshparticles quality MESH PARTICLES --json` on points in
-// memory - the same measuring mesh, distances and metrics
-// (quality/particle_sets.hpp), returned as that JSON's text.
+// quality() and compare(): `meshparticles quality MESH PARTICLES --json` and
+// `compare MESH A B --json` on points in memory - the same call
+// (pipeline/point_sets.hpp), returned as that JSON's text.
 #include <cmath>
 
 #include <pybind11/numpy.h>
@@ -8,8 +8,7 @@
 #include "bindings.hpp"
 #include "common/user_error.hpp"
 #include "mesh_object.hpp"
-#include "pipeline/sigma_check.hpp"
-#include "quality/particle_sets.hpp"
+#include "pipeline/point_sets.hpp"
 #include "reports/quality_report.hpp"
 #include "run_settings.hpp"
 
@@ -44,40 +43,40 @@ std::optional<unsigned> uniform_levels(const std::string& refine) {
   throw UserError("refine: expected auto, spread or 0 to 8, got '" + refine + "'");
 }
 
-std::string measure(const Mesh& mesh, const py::array& points_array, const py::kwargs& given) {
+// One set (quality) or two (compare), as the commands measure them.
+std::string measure(const Mesh& mesh, const std::vector<py::array>& arrays, const py::kwargs& given) {
   KeywordOptions options(given);
-  const std::vector<Vec3> points = points_of(points_array);
-  const auto sigma = options.take<double>("sigma");
-  const Potential potential = parse_potential(options.take<std::string>("potential").value_or("exp"));
+  PointSetsRequest request;
+  for (const py::array& array : arrays) request.points.push_back(points_of(array));
+  request.names = arrays.size() == 2 ? std::vector<std::string>{"<a>", "<b>"} : std::vector<std::string>{"<points>"};
+  request.sigma = options.take<double>("sigma");
+  request.potential = parse_potential(options.take<std::string>("potential").value_or("exp"));
   const std::string refine = options.take<std::string>("refine").value_or("auto");
-  const GeodesicsRequest geodesics = take_geodesics_request(options);
-  const DistancesRequest request = take_distances_request(options, geodesics);
-  options.refuse_unknown("quality");
-  const std::optional<unsigned> levels = uniform_levels(refine);
-  if (sigma) {
-    if (!(*sigma > 0)) throw UserError("sigma must be a positive number");
-    check_sigma_computable({potential, *sigma});
-  }
+  request.geodesics = take_geodesics_request(options);
+  request.distances = take_distances_request(options, request.geodesics);
+  options.refuse_unknown(arrays.size() == 2 ? "compare" : "quality");
+  request.uniform_levels = uniform_levels(refine);
+  request.spread_mesh = refine == "spread";
+  if (request.sigma && !(*request.sigma > 0)) throw UserError("sigma must be a positive number");
   py::gil_scoped_release unlocked;
-  const std::vector<std::vector<Vec3>> sets = {points};
-  const MeasuringMesh measuring = measuring_mesh(*mesh.surface, sets, levels, refine == "spread");
-  const SurfaceMesh& measured = measuring.refined.mesh;
-  const ObtainedDistances obtained = obtain_distances(
-      measured, geodesics, plan_distances(measured, request, std::min(points.size(), measured.vertex_count()), false));
-  const MeasuredSet set = measure_particle_file(measured, *obtained.store, geodesics.method, "<points>", points,
-                                                potential, sigma, geodesics.quiet);
-  nlohmann::json out = {{"mesh", mesh.label},
-                        {"refinement", measuring.spread ? "spread" : "uniform"},
-                        {"refinement_levels", measuring.refined.levels},
-                        {"measured_vertices", measured.vertex_count()}};
-  out.update(measured_set_json(set));
-  return out.dump();
+  return point_sets_json(mesh.label, measure_point_sets(*mesh.surface, request)).dump();
 }
 
 }  // namespace
 
 void bind_quality(py::module_& module) {
-  module.def("quality_json", &measure, py::arg("mesh"), py::arg("points"));
+  module.def(
+      "quality_json",
+      [](const Mesh& mesh, const py::array& points, const py::kwargs& options) {
+        return measure(mesh, {points}, options);
+      },
+      py::arg("mesh"), py::arg("points"));
+  module.def(
+      "compare_json",
+      [](const Mesh& mesh, const py::array& a, const py::array& b, const py::kwargs& options) {
+        return measure(mesh, {a, b}, options);
+      },
+      py::arg("mesh"), py::arg("a"), py::arg("b"));
 }
 
 }  // namespace meshparticles::python

@@ -64,6 +64,25 @@ py::array_t<double> positions(const RunOutput& output) {
   return out;
 }
 
+// Each particle's input triangle (corner ids, the file's) and barycentric weights.
+py::array_t<std::int64_t> triangles(const RunOutput& output) {
+  py::array_t<std::int64_t> out({py::ssize_t(output.locations.size()), py::ssize_t(3)});
+  auto o = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < output.locations.size(); ++i) {
+    for (py::ssize_t k = 0; k < 3; ++k) o(i, k) = output.locations[i].corners[std::size_t(k)];
+  }
+  return out;
+}
+
+py::array_t<double> weights(const RunOutput& output) {
+  py::array_t<double> out({py::ssize_t(output.locations.size()), py::ssize_t(3)});
+  auto o = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < output.locations.size(); ++i) {
+    for (py::ssize_t k = 0; k < 3; ++k) o(i, k) = output.locations[i].weights[std::size_t(k)];
+  }
+  return out;
+}
+
 py::array_t<std::int64_t> nearest_vertices(const RunOutput& output) {
   py::array_t<std::int64_t> out(std::vector<py::ssize_t>{py::ssize_t(output.locations.size())});
   auto o = out.mutable_unchecked<1>();
@@ -77,6 +96,8 @@ void bind_run(py::module_& module) {
   py::class_<RunOutput>(module, "RunOutput")
       .def_property_readonly("positions", &positions)
       .def_property_readonly("vertices", &nearest_vertices)
+      .def_property_readonly("triangles", &triangles)
+      .def_property_readonly("weights", &weights)
       .def_property_readonly("seconds", [](const RunOutput& output) { return output.result.seconds.total; })
       .def_property_readonly("device", [](const RunOutput& output) { return output.result.device; })
       // JSON text: the package turns it into dicts with json.loads.

@@ -30,6 +30,7 @@ __all__ = [
     "Result",
     "__version__",
     "as_mesh",
+    "compare",
     "devices",
     "geodesics",
     "quality",
@@ -99,6 +100,10 @@ class Result:
         self._output = output
         self.positions: np.ndarray = output.positions  # (n, 3) float64: each particle's point on the surface
         self.vertices: np.ndarray = output.vertices  # (n,) int64: its nearest input vertex (the file's id)
+        # Where each particle lies on the input surface, as particles.csv has it: an input triangle
+        # (corner ids, the file's) and the barycentric weights that give the point.
+        self.triangles: np.ndarray = output.triangles  # (n, 3) int64
+        self.weights: np.ndarray = output.weights  # (n, 3) float64
 
     @property
     def report(self) -> Dict[str, Any]:
@@ -109,6 +114,14 @@ class Result:
     def quality(self) -> Dict[str, Any]:
         """report.json's "quality": nn_min, nn_mean, nn_std, nn_cv, rho, cover, energy, stacked, d_hex."""
         return json.loads(self._output.quality_json())
+
+    @property
+    def trace(self) -> List[Dict[str, Any]]:
+        """Per iteration, as report.json records it: for spread its "sweeps"
+        (moved, ms, min_spacing, mean_spacing in d_hex), for the paper's
+        method its "trace" (energy, moved, ms, ...)."""
+        report = self.report
+        return report["sweeps"] if "sweeps" in report else report["trace"]
 
     @property
     def seconds(self) -> float:
@@ -214,6 +227,45 @@ def quality(
     text = _core.quality_json(
         as_mesh(mesh),
         np.asarray(points, dtype=np.float64),
+        sigma=sigma,
+        potential=potential,
+        geodesic=geodesic,
+        refine=None if refine is None else str(refine),
+        distances=distances,
+        cutoff=cutoff,
+        cache_dir=_path(cache_dir),
+        no_cache=no_cache,
+        threads=threads,
+        quiet=quiet,
+    )
+    return json.loads(text)
+
+
+def compare(
+    mesh: Any,
+    a: Any,
+    b: Any,
+    *,
+    sigma: Optional[float] = None,
+    potential: Optional[str] = None,
+    geodesic: Optional[str] = None,
+    refine: Union[str, int, None] = None,
+    distances: Optional[str] = None,
+    cutoff: Optional[float] = None,
+    cache_dir: Optional[PathLike] = None,
+    no_cache: bool = False,
+    threads: Optional[int] = None,
+    quiet: bool = False,
+) -> Dict[str, Any]:
+    """`meshparticles compare MESH A B --json` on two point sets (P x 3, or
+    Results): "a" and "b" measured as quality() measures one, on the same
+    measuring mesh, and "mean_distance_a_to_b" / "mean_distance_b_to_a", the
+    mean geodesic distance from each set's particles to the other's nearest."""
+    a, b = (p.positions if isinstance(p, Result) else p for p in (a, b))
+    text = _core.compare_json(
+        as_mesh(mesh),
+        np.asarray(a, dtype=np.float64),
+        np.asarray(b, dtype=np.float64),
         sigma=sigma,
         potential=potential,
         geodesic=geodesic,

@@ -266,3 +266,41 @@ def test_ctrl_c_stops_a_long_run_and_writes_nothing(tmp_path):
     assert child.returncode == 0 and out.strip() == "interrupted", out + err
     assert "spread: " not in err, err
     assert not (tmp_path / "out").exists()
+
+
+def test_surface_locations_give_back_each_point(spread_run, paper_run):
+    # Input triangles and weights, as particles.csv has them: they rebuild the points.
+    sphere_vertices = mp.read_mesh(SPHERE).vertices
+    for result in (spread_run, paper_run):
+        assert result.triangles.shape == (N, 3) and result.weights.shape == (N, 3)
+        rebuilt = np.einsum("ik,ikj->ij", result.weights, sphere_vertices[result.triangles])
+        np.testing.assert_allclose(rebuilt, result.positions, atol=1e-9)
+        assert (result.weights >= -1e-12).all() and np.allclose(result.weights.sum(axis=1), 1)
+
+
+def test_trace_is_the_reports(spread_run, paper_run):
+    assert spread_run.trace == spread_run.report["sweeps"] and len(spread_run.trace) >= 1
+    assert "moved" in spread_run.trace[0] and "min_spacing" in spread_run.trace[0]
+    assert paper_run.trace == paper_run.report["trace"] and "energy" in paper_run.trace[0]
+
+
+def test_compare_two_runs(sphere, paper_run, spread_run, cache):
+    compared = mp.compare(sphere, paper_run, spread_run, cache_dir=cache, quiet=True)
+    assert compared["a"]["n"] == N and compared["b"]["n"] == N
+    assert compared["mean_distance_a_to_b"] > 0 and compared["mean_distance_b_to_a"] > 0
+    itself = mp.compare(sphere, paper_run, paper_run, cache_dir=cache, quiet=True)
+    assert itself["mean_distance_a_to_b"] == 0 and itself["a"]["quality"] == itself["b"]["quality"]
+
+
+@pytest.mark.skipif(cli() is None, reason="needs build/meshparticles or $MESHPARTICLES_CLI")
+def test_compare_as_the_program(sphere, paper_run, spread_run, cache, tmp_path):
+    paper_run.save(tmp_path / "a")
+    spread_run.save(tmp_path / "b")
+    command = [str(cli()), "compare", str(SPHERE), str(tmp_path / "a" / "particles.particles"),
+               str(tmp_path / "b" / "particles.particles"), "--json", "-q", "--cache-dir", str(cache)]
+    program = json.loads(subprocess.run(command, check=True, capture_output=True, text=True).stdout)
+    ours = mp.compare(SPHERE, paper_run, spread_run, cache_dir=cache, quiet=True)
+    for key in ("refinement", "refinement_levels", "measured_vertices"):
+        assert ours[key] == program[key], key
+    assert ours["a"]["quality"]["nn_cv"] == pytest.approx(program["a"]["quality"]["nn_cv"], rel=1e-6)
+    assert ours["mean_distance_a_to_b"] == pytest.approx(program["mean_distance_a_to_b"], rel=1e-6)
