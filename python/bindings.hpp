@@ -11,5 +11,6 @@ void bind_run(pybind11::module_& module);
 void bind_quality(pybind11::module_& module);
 void bind_devices(pybind11::module_& module);
 void bind_geodesics(pybind11::module_& module);
+void bind_batch(pybind11::module_& module);
 
 }  // namespace meshparticles::python

@@ -13,4 +13,5 @@ PYBIND11_MODULE(_core, module) {
   meshparticles::python::bind_quality(module);
   meshparticles::python::bind_devices(module);
   meshparticles::python::bind_geodesics(module);
+  meshparticles::python::bind_batch(module);
 }

@@ -7,6 +7,11 @@
 #include <numeric>
 #include <vector>
 
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "batch/batch_runner.hpp"
 #include "common/interruption.hpp"
 #include "geodesics/distance_table.hpp"
 #include "geodesics/local_distances.hpp"
@@ -52,6 +57,24 @@ TEST(Interruption, BallsOnTwoThreadsStopAndKeepWhatWasSolved) {
   }
   balls.prefetch(all);
   EXPECT_EQ(balls.distance(7, 7), 0.0f);
+}
+
+// A batch stops as a whole: an interruption is no failure of one mesh.
+TEST(Interruption, StopsAWholeBatchNotJustOneMesh) {
+  const auto out = std::filesystem::temp_directory_path() / ("interrupted_batch_" + std::to_string(::getpid()));
+  BatchRequest request;
+  request.inputs = {std::string(MESHES_DIR) + "/torus.off", std::string(MESHES_DIR) + "/tetrahedron.off"};
+  request.out = out;
+  request.run.particles = 4;
+  request.run.quiet = true;
+  request.count.value = 4;
+  request.quiet = true;
+  {
+    const AlwaysInterrupted stop;
+    EXPECT_THROW(run_batch(request), Interrupted);
+  }
+  EXPECT_EQ(run_batch(request), 0);  // and runs to the end without the check
+  std::filesystem::remove_all(out);
 }
 
 TEST(Interruption, WithoutACheckNothingStops) {

@@ -1,6 +1,7 @@
 #include "batch/mesh_job.hpp"
 
 #include "batch/failure.hpp"
+#include "common/interruption.hpp"
 #include "batch/reusable_output.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "reports/batch_summary.hpp"
@@ -31,6 +32,8 @@ MeshOutcome run_batch_mesh(const BatchPlan& plan, std::size_t index) {
     const nlohmann::json report = run_report(mesh, result, directory, sha256);
     write_run_outputs(directory, mesh, result, report);
     return {finished_row(label, item.output_name, report), false};
+  } catch (const Interrupted&) {
+    throw;  // stops the whole batch (Ctrl-C in Python); the summary has the meshes done
   } catch (...) {
     const Failure failure = describe_failure(std::current_exception());
     const MeshStatus status = failure.exit_code == 1 ? MeshStatus::failed : MeshStatus::refused;

@@ -30,6 +30,7 @@ __all__ = [
     "Result",
     "__version__",
     "as_mesh",
+    "batch",
     "compare",
     "devices",
     "geodesics",
@@ -277,6 +278,34 @@ def compare(
         threads=threads,
         quiet=quiet,
     )
+    return json.loads(text)
+
+
+def batch(
+    inputs: Union[PathLike, Sequence[PathLike]],
+    out: PathLike,
+    n: Optional[int] = None,
+    *,
+    spacing: Optional[float] = None,
+    per_area: Optional[float] = None,
+    force: bool = False,
+    strict: bool = False,
+    **run_options: Any,
+) -> Dict[str, Any]:
+    """`meshparticles batch INPUTS --out OUT`: `run` on every mesh of `inputs`
+    (files, folders, .txt lists), a folder of run files per mesh in `out`,
+    resumed where a complete output of the same mesh and options is there
+    (`force=True` recomputes). n per mesh: `n` (default 1024), or from
+    `spacing` (the hexagonal spacing, mesh units) or `per_area` (particles
+    per unit of area). `run_options`: run()'s keywords. Returns summary.json:
+    a mesh refused or failed is a row with its status and reason, not an
+    exception."""
+    paths = [os.fspath(inputs)] if isinstance(inputs, (str, os.PathLike)) else [os.fspath(p) for p in inputs]
+    for key in ("cache_dir", "tuning_file"):
+        if run_options.get(key) is not None:
+            run_options[key] = os.fspath(run_options[key])
+    text = _core.batch_json(paths, os.fspath(out), n=n, spacing=spacing, per_area=per_area, force=force,
+                            strict=strict, **run_options)
     return json.loads(text)
 
 

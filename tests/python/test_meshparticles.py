@@ -304,3 +304,26 @@ def test_compare_as_the_program(sphere, paper_run, spread_run, cache, tmp_path):
         assert ours[key] == program[key], key
     assert ours["a"]["quality"]["nn_cv"] == pytest.approx(program["a"]["quality"]["nn_cv"], rel=1e-6)
     assert ours["mean_distance_a_to_b"] == pytest.approx(program["mean_distance_a_to_b"], rel=1e-6)
+
+
+def test_batch_runs_each_mesh_and_resumes(tmp_path, cache):
+    inputs = [ROOT / "meshes" / "torus.off", TETRAHEDRON, tmp_path / "missing.off"]
+    (tmp_path / "missing.off").write_text("OFF\n3 1 0\n0 0 0\n")  # truncated: refused, the others go on
+    summary = mp.batch(inputs, tmp_path / "out", n=4, cache_dir=cache, quiet=True)
+    statuses = {Path(row["mesh"]).name: row["status"] for row in summary["meshes"]}
+    assert statuses == {"torus.off": "ok", "tetrahedron.off": "ok", "missing.off": "refused"}
+    assert summary["version"] == mp.__version__
+    torus = next(row for row in summary["meshes"] if row["mesh"].endswith("torus.off"))
+    files = sorted(p.name for p in (tmp_path / "out" / torus["output"]).iterdir())
+    assert files == sorted(["particles.particles", "particles.csv", "particles.ply", "mesh_distance.vtk",
+                            "mesh_distance.vtp", "report.json"])
+    # The same particles as run() with the same options.
+    alone = mp.run(inputs[0], n=4, cache_dir=cache, quiet=True)
+    np.testing.assert_allclose(np.loadtxt(tmp_path / "out" / torus["output"] / "particles.particles"),
+                               alone.positions, rtol=1e-8)
+    again = mp.batch(inputs, tmp_path / "out", n=4, cache_dir=cache, quiet=True)
+    assert [row["status"] for row in again["meshes"]] == [row["status"] for row in summary["meshes"]]
+    with pytest.raises(ValueError, match="at most one of n, spacing and per_area"):
+        mp.batch(inputs, tmp_path / "other", n=4, spacing=0.1)
+    with pytest.raises(TypeError, match="frobnicate"):
+        mp.batch(inputs, tmp_path / "other", frobnicate=1)
