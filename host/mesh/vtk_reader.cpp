@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "common/user_error.hpp"
+#include "mesh/binary_values.hpp"
 #include "mesh/byte_cursor.hpp"
 #include "mesh/format_readers.hpp"
 #include "mesh/plural.hpp"
@@ -35,8 +36,6 @@
 namespace meshparticles {
 
 namespace {
-
-enum class ValueType { int8, uint8, int16, uint16, int32, uint32, int64, uint64, float32, float64 };
 
 std::optional<ValueType> parse_type(std::string_view name) {
   static constexpr std::pair<std::string_view, ValueType> kNames[] = {
@@ -52,82 +51,6 @@ std::optional<ValueType> parse_type(std::string_view name) {
     if (name == known) return type;
   }
   return std::nullopt;
-}
-
-std::size_t size_of(ValueType type) {
-  switch (type) {
-    case ValueType::int8:
-    case ValueType::uint8:
-      return 1;
-    case ValueType::int16:
-    case ValueType::uint16:
-      return 2;
-    case ValueType::int32:
-    case ValueType::uint32:
-    case ValueType::float32:
-      return 4;
-    case ValueType::int64:
-    case ValueType::uint64:
-    case ValueType::float64:
-      return 8;
-  }
-  return 0;
-}
-
-// A big-endian binary value as a double (geometry) or an integer (cells).
-template <typename T>
-T big_endian(const char* bytes) {
-  std::array<char, sizeof(T)> raw;
-  std::memcpy(raw.data(), bytes, sizeof(T));
-  if constexpr (std::endian::native == std::endian::little) std::reverse(raw.begin(), raw.end());
-  T value;
-  std::memcpy(&value, raw.data(), sizeof(T));
-  return value;
-}
-
-double binary_real(const char* bytes, ValueType type) {
-  switch (type) {
-    case ValueType::int8:
-      return double(std::int8_t(bytes[0]));
-    case ValueType::uint8:
-      return double(std::uint8_t(bytes[0]));
-    case ValueType::int16:
-      return double(big_endian<std::int16_t>(bytes));
-    case ValueType::uint16:
-      return double(big_endian<std::uint16_t>(bytes));
-    case ValueType::int32:
-      return double(big_endian<std::int32_t>(bytes));
-    case ValueType::uint32:
-      return double(big_endian<std::uint32_t>(bytes));
-    case ValueType::int64:
-      return double(big_endian<std::int64_t>(bytes));
-    case ValueType::uint64:
-      return double(big_endian<std::uint64_t>(bytes));
-    case ValueType::float32:
-      return double(big_endian<float>(bytes));
-    case ValueType::float64:
-      return big_endian<double>(bytes);
-  }
-  return 0;
-}
-
-// An index or count; nothing for a real that is not a whole number or for
-// an unsigned value past what long long holds.
-std::optional<long long> binary_integer(const char* bytes, ValueType type) {
-  switch (type) {
-    case ValueType::float32:
-    case ValueType::float64:
-      return std::nullopt;
-    case ValueType::uint64: {
-      const std::uint64_t value = big_endian<std::uint64_t>(bytes);
-      if (value > std::uint64_t(INT64_MAX)) return std::nullopt;
-      return static_cast<long long>(value);
-    }
-    case ValueType::int64:
-      return big_endian<std::int64_t>(bytes);
-    default:
-      return static_cast<long long>(binary_real(bytes, type));
-  }
 }
 
 class VtkReader {
@@ -265,10 +188,12 @@ class VtkReader {
     if (count > SIZE_MAX / 3) fail("too many points");
     check_fits(3 * count, type, "POINTS");
     soup_.vertices.resize(count);
-    const char* data = binary_ ? binary_values(3 * count, type) : nullptr;
+    const std::optional<BinaryValues> binary =
+        binary_ ? std::optional(BinaryValues(binary_values(3 * count, type), 3 * count, type, /*big_endian=*/true))
+                : std::nullopt;
     std::size_t next = 0;
     const auto coordinate = [&](std::size_t point) {
-      if (binary_) return binary_real(data + size_of(type) * next++, type);
+      if (binary) return binary->real(next++);
       const std::string_view token = ascii_token("the points end");
       const auto value = parse_real(token);
       if (!value) fail("point " + std::to_string(point) + ": expected a number, got " + quoted(token));
@@ -288,9 +213,9 @@ class VtkReader {
     check_fits(count, type, what);
     std::vector<long long> values(count);
     if (binary_) {
-      const char* data = binary_values(count, type);
+      const BinaryValues binary(binary_values(count, type), count, type, /*big_endian=*/true);
       for (std::size_t i = 0; i < count; ++i) {
-        const auto value = binary_integer(data + i * size_of(type), type);
+        const auto value = binary.integer(i);
         if (!value) fail(what + ": value " + std::to_string(i) + " is not an integer index");
         values[i] = *value;
       }

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "common/user_error.hpp"
+#include "mesh/binary_values.hpp"
 #include "mesh/byte_cursor.hpp"
 #include "mesh/format_readers.hpp"
 #include "mesh/plural.hpp"
@@ -188,8 +189,6 @@ std::vector<unsigned char> decode_base64(std::string_view text, std::size_t max_
   return bytes;
 }
 
-enum class ValueType { int8, uint8, int16, uint16, int32, uint32, int64, uint64, float32, float64 };
-
 std::optional<ValueType> parse_type(std::string_view name) {
   static constexpr std::pair<std::string_view, ValueType> kNames[] = {
       {"Int8", ValueType::int8},     {"UInt8", ValueType::uint8},     {"Int16", ValueType::int16},
@@ -201,96 +200,6 @@ std::optional<ValueType> parse_type(std::string_view name) {
   }
   return std::nullopt;
 }
-
-std::size_t size_of(ValueType type) {
-  switch (type) {
-    case ValueType::int8:
-    case ValueType::uint8:
-      return 1;
-    case ValueType::int16:
-    case ValueType::uint16:
-      return 2;
-    case ValueType::int32:
-    case ValueType::uint32:
-    case ValueType::float32:
-      return 4;
-    default:
-      return 8;
-  }
-}
-
-// Reads values of one type and byte order out of decoded bytes.
-class BinaryValues {
- public:
-  BinaryValues(std::span<const unsigned char> bytes, ValueType type, bool big_endian)
-      : bytes_(bytes), type_(type), big_endian_(big_endian) {}
-  std::size_t count() const { return bytes_.size() / size_of(type_); }
-
-  double real(std::size_t i) const {
-    switch (type_) {
-      case ValueType::int8:
-        return double(get<std::int8_t>(i));
-      case ValueType::uint8:
-        return double(get<std::uint8_t>(i));
-      case ValueType::int16:
-        return double(get<std::int16_t>(i));
-      case ValueType::uint16:
-        return double(get<std::uint16_t>(i));
-      case ValueType::int32:
-        return double(get<std::int32_t>(i));
-      case ValueType::uint32:
-        return double(get<std::uint32_t>(i));
-      case ValueType::int64:
-        return double(get<std::int64_t>(i));
-      case ValueType::uint64:
-        return double(get<std::uint64_t>(i));
-      case ValueType::float32:
-        return double(get<float>(i));
-      case ValueType::float64:
-        return get<double>(i);
-    }
-    return 0;
-  }
-
-  // A block header's byte count (UInt32 or UInt64), exact: through a double
-  // a count near 2^64 would not convert back.
-  std::uint64_t header_count(std::size_t i) const {
-    return type_ == ValueType::uint64 ? get<std::uint64_t>(i) : std::uint64_t(get<std::uint32_t>(i));
-  }
-
-  // An index; nothing for a real type or an unsigned value past long long.
-  std::optional<long long> integer(std::size_t i) const {
-    switch (type_) {
-      case ValueType::float32:
-      case ValueType::float64:
-        return std::nullopt;
-      case ValueType::uint64: {
-        const std::uint64_t value = get<std::uint64_t>(i);
-        if (value > std::uint64_t(INT64_MAX)) return std::nullopt;
-        return static_cast<long long>(value);
-      }
-      case ValueType::int64:
-        return get<std::int64_t>(i);
-      default:
-        return static_cast<long long>(real(i));
-    }
-  }
-
- private:
-  template <typename T>
-  T get(std::size_t i) const {
-    std::array<unsigned char, sizeof(T)> raw;
-    std::memcpy(raw.data(), bytes_.data() + i * sizeof(T), sizeof(T));
-    if (big_endian_ != (std::endian::native == std::endian::big)) std::reverse(raw.begin(), raw.end());
-    T value;
-    std::memcpy(&value, raw.data(), sizeof(T));
-    return value;
-  }
-
-  std::span<const unsigned char> bytes_;
-  ValueType type_;
-  bool big_endian_;
-};
 
 // --- the reader ---
 
