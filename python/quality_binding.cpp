@@ -36,13 +36,6 @@ std::vector<Vec3> points_of(const py::array& array) {
   return out;
 }
 
-// The command's --refine: auto, spread, or 0 to 8 uniform rounds.
-std::optional<unsigned> uniform_levels(const std::string& refine) {
-  if (refine == "auto" || refine == "spread") return std::nullopt;
-  if (refine.size() == 1 && refine[0] >= '0' && refine[0] <= '8') return unsigned(refine[0] - '0');
-  throw UserError("refine: expected auto, spread or 0 to 8, got '" + refine + "'");
-}
-
 // One set (quality) or two (compare), as the commands measure them.
 std::string measure(const Mesh& mesh, const std::vector<py::array>& arrays, const py::kwargs& given) {
   KeywordOptions options(given);
@@ -55,8 +48,7 @@ std::string measure(const Mesh& mesh, const std::vector<py::array>& arrays, cons
   request.geodesics = take_geodesics_request(options);
   request.distances = take_distances_request(options, request.geodesics);
   options.refuse_unknown(arrays.size() == 2 ? "compare" : "quality");
-  request.uniform_levels = uniform_levels(refine);
-  request.spread_mesh = refine == "spread";
+  set_refinement(request, refine);
   if (request.sigma && !(*request.sigma > 0)) throw UserError("sigma must be a positive number");
   py::gil_scoped_release unlocked;
   return point_sets_json(mesh.label, measure_point_sets(*mesh.surface, request)).dump();

@@ -27,19 +27,13 @@ struct QualityOptions {
   DistanceStoreOptions store;
 };
 
-std::optional<unsigned> uniform_levels(const std::string& refine) {
-  if (refine == "auto" || refine == "spread") return std::nullopt;
-  return unsigned(std::stoul(refine));  // the option's validator admits auto, spread or 0..8
-}
-
 void run_quality(const QualityOptions& options) {
   const SurfaceMesh input = load_mesh(options.mesh, options.table.quiet, options.read);
   PointSetsRequest request;
   request.names = options.particle_files;
   // Read before the distance table, so a bad file fails in a second.
   for (const auto& file : options.particle_files) request.points.push_back(read_particle_points(file));
-  request.uniform_levels = uniform_levels(options.refine);
-  request.spread_mesh = options.refine == "spread";
+  set_refinement(request, options.refine);  // the option's validator admits auto, spread or 0..8
   request.geodesics = options.table.request(parse_method(options.geodesic));
   request.distances = options.store.request(request.geodesics);
   request.potential = parse_potential(options.potential);

@@ -2,9 +2,20 @@
 
 #include <algorithm>
 
+#include "common/user_error.hpp"
 #include "pipeline/sigma_check.hpp"
 
 namespace meshparticles {
+
+void set_refinement(PointSetsRequest& request, const std::string& refine) {
+  request.uniform_levels.reset();
+  request.spread_mesh = refine == "spread";
+  if (refine == "auto" || refine == "spread") return;
+  if (refine.size() != 1 || refine[0] < '0' || refine[0] > '8') {
+    throw UserError("refine: expected auto, spread or 0 to 8, got '" + refine + "'");
+  }
+  request.uniform_levels = unsigned(refine[0] - '0');
+}
 
 PointSetsMeasurement measure_point_sets(const SurfaceMesh& input, const PointSetsRequest& request) {
   if (request.sigma) check_sigma_computable({request.potential, *request.sigma});

@@ -30,6 +30,11 @@ struct PointSetsMeasurement {
   std::optional<double> mean_a_to_b, mean_b_to_a;
 };
 
+// `refine` as `--refine` takes it: auto, spread, or 0 to 8 uniform rounds,
+// into the request's uniform_levels and spread_mesh. Throws UserError for
+// anything else.
+void set_refinement(PointSetsRequest& request, const std::string& refine);
+
 // Throws UserError for a sigma too small to compute with, before the distances.
 PointSetsMeasurement measure_point_sets(const SurfaceMesh& input, const PointSetsRequest& request);
 

@@ -205,6 +205,16 @@ def run(
     return Result(output)
 
 
+def _measure(core_function: Any, mesh: Any, point_sets: Sequence[Any], *, refine: Union[str, int, None],
+             cache_dir: Optional[PathLike], **options: Any) -> Dict[str, Any]:
+    """quality() and compare(): each set (an array or a Result) as a float64
+    array, the options as the core takes them, its JSON back as a dict."""
+    arrays = [np.asarray(p.positions if isinstance(p, Result) else p, dtype=np.float64) for p in point_sets]
+    text = core_function(as_mesh(mesh), *arrays, refine=None if refine is None else str(refine),
+                         cache_dir=_path(cache_dir), **options)
+    return json.loads(text)
+
+
 def quality(
     mesh: Any,
     points: Any,
@@ -223,23 +233,9 @@ def quality(
     """`meshparticles quality MESH PARTICLES --json` on `points` (P x 3, or a
     Result): the points snapped to the nearest vertices of a measuring mesh
     and measured by geodesic distances."""
-    if isinstance(points, Result):
-        points = points.positions
-    text = _core.quality_json(
-        as_mesh(mesh),
-        np.asarray(points, dtype=np.float64),
-        sigma=sigma,
-        potential=potential,
-        geodesic=geodesic,
-        refine=None if refine is None else str(refine),
-        distances=distances,
-        cutoff=cutoff,
-        cache_dir=_path(cache_dir),
-        no_cache=no_cache,
-        threads=threads,
-        quiet=quiet,
-    )
-    return json.loads(text)
+    return _measure(_core.quality_json, mesh, [points], refine=refine, cache_dir=cache_dir, sigma=sigma,
+                    potential=potential, geodesic=geodesic, distances=distances, cutoff=cutoff,
+                    no_cache=no_cache, threads=threads, quiet=quiet)
 
 
 def compare(
@@ -262,23 +258,9 @@ def compare(
     Results): "a" and "b" measured as quality() measures one, on the same
     measuring mesh, and "mean_distance_a_to_b" / "mean_distance_b_to_a", the
     mean geodesic distance from each set's particles to the other's nearest."""
-    a, b = (p.positions if isinstance(p, Result) else p for p in (a, b))
-    text = _core.compare_json(
-        as_mesh(mesh),
-        np.asarray(a, dtype=np.float64),
-        np.asarray(b, dtype=np.float64),
-        sigma=sigma,
-        potential=potential,
-        geodesic=geodesic,
-        refine=None if refine is None else str(refine),
-        distances=distances,
-        cutoff=cutoff,
-        cache_dir=_path(cache_dir),
-        no_cache=no_cache,
-        threads=threads,
-        quiet=quiet,
-    )
-    return json.loads(text)
+    return _measure(_core.compare_json, mesh, [a, b], refine=refine, cache_dir=cache_dir, sigma=sigma,
+                    potential=potential, geodesic=geodesic, distances=distances, cutoff=cutoff,
+                    no_cache=no_cache, threads=threads, quiet=quiet)
 
 
 def batch(
