@@ -295,3 +295,7 @@ expect_exit(batch_no_mesh 2 "folder .*holds no mesh file" batch ${CMAKE_CURRENT_
 expect_exit(batch_n_and_spacing 2 "--particles excludes --spacing" batch ${TORUS} -n 8 --spacing 0.1 --out ${CMAKE_CURRENT_BINARY_DIR}/batch_excludes)
 # n from a density: the torus's area (15.73) over the spacing gives n; the summary records it.
 expect_exit(batch_spacing 0 "\\[1/1\\] torus: ok, 1500 vertices, n 202, " batch ${TORUS} --spacing 0.3 --iterations 3 --force --out ${CMAKE_CURRENT_BINARY_DIR}/batch_spacing)
+# Files that are not regular files (FIFOs) refused at once by every reader.
+add_test(NAME cli.input_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/input_files.sh $<TARGET_FILE:meshparticles> ${TETRA}
+                                      ${CMAKE_CURRENT_BINARY_DIR}/input_files)
+set_tests_properties(cli.input_files PROPERTIES LABELS "fast;device" TIMEOUT 120)

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <sstream>
 
+#include "common/input_file.hpp"
 #include "common/user_error.hpp"
 #include "mesh/mesh_reader.hpp"
 
@@ -45,8 +47,7 @@ std::string trimmed(const std::string& line) {
 }
 
 std::vector<std::filesystem::path> meshes_in_list(const std::filesystem::path& list) {
-  std::ifstream in(list);
-  if (!in) throw UserError("cannot read mesh list " + list.string() + ": no such file or not readable");
+  std::istringstream in(read_input_text(list, "mesh list " + list.string(), "mesh list"));
   std::vector<std::filesystem::path> meshes;
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
@@ -59,7 +60,6 @@ std::vector<std::filesystem::path> meshes_in_list(const std::filesystem::path& l
     }
     meshes.push_back(mesh.lexically_normal());
   }
-  if (in.bad()) throw UserError("cannot read mesh list " + list.string());
   if (meshes.empty()) throw UserError("mesh list " + list.string() + " names no mesh");
   return meshes;
 }

@@ -1,11 +1,12 @@
 #pragma once
-// Reading a mesh file into memory, refusing what a reader must not touch:
-// anything but a regular file (a FIFO or a device such as /dev/urandom could
-// block or never end) and files over kMaxMeshFileBytes.
+// Reading a mesh file into memory through common/input_file (which refuses
+// FIFOs, devices and directories), under a limit of its own.
 #include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "common/input_file.hpp"
 
 namespace meshparticles {
 
@@ -14,7 +15,9 @@ namespace meshparticles {
 inline constexpr std::size_t kMaxMeshFileBytes = std::size_t(2) << 30;
 
 // The whole file; throws UserError("LABEL: problem").
-std::vector<char> read_mesh_file(const std::filesystem::path& file, const std::string& label,
-                                 std::size_t max_bytes = kMaxMeshFileBytes);
+inline std::vector<char> read_mesh_file(const std::filesystem::path& file, const std::string& label,
+                                        std::size_t max_bytes = kMaxMeshFileBytes) {
+  return read_input_file(file, label, max_bytes, "mesh file");
+}
 
 }  // namespace meshparticles

@@ -6,6 +6,7 @@
 #include <regex>
 #include <sstream>
 
+#include "common/input_file.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -15,11 +16,7 @@ namespace {
 std::string raw_kernel_file(const std::string& file_name) {
   if (const char* directory = std::getenv("MESHPARTICLES_KERNEL_DIR"); directory && *directory) {
     const std::filesystem::path path = std::filesystem::path(directory) / file_name;
-    std::ifstream in(path);
-    if (!in) throw UserError("cannot read kernel " + path.string() + " ($MESHPARTICLES_KERNEL_DIR is set)");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return read_input_text(path, "kernel " + path.string() + " ($MESHPARTICLES_KERNEL_DIR is set)", "kernel file");
   }
   for (const auto& file : embedded_kernel_files()) {
     if (file_name == file.name) return file.text;

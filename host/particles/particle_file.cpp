@@ -1,7 +1,6 @@
 #include "particles/particle_file.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <tuple>
@@ -9,14 +8,13 @@
 
 #include <nanoflann.hpp>
 
+#include "common/input_file.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
 
 std::vector<Vec3> read_particle_points(const std::filesystem::path& file) {
-  if (std::filesystem::is_directory(file)) throw UserError(file.string() + ": is a directory, not a particle file");
-  std::ifstream in(file);
-  if (!in) throw UserError(file.string() + ": no such file or not readable");
+  std::istringstream in(read_input_text(file, file.string(), "particle file"));
   std::vector<Vec3> points;
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {

@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "common/input_file.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -47,12 +48,10 @@ class Sha256 {
 }  // namespace
 
 std::string file_sha256(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw UserError(file.string() + ": cannot read: " + std::strerror(errno));
+  InputFile in(file, file.string());
   Sha256 digest;
   std::array<char, 1 << 16> buffer;
-  while (in.read(buffer.data(), buffer.size()) || in.gcount() > 0) digest.add(buffer.data(), std::size_t(in.gcount()));
-  if (in.bad()) throw UserError(file.string() + ": cannot read: " + std::strerror(errno));
+  while (const std::size_t got = in.read(buffer.data(), buffer.size())) digest.add(buffer.data(), got);
   return digest.hex();
 }
 

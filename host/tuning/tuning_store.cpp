@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.hpp"
+#include "common/input_file.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -90,9 +91,9 @@ TuningStore TuningStore::load(const std::filesystem::path& file, const std::vect
   std::error_code error;
   if (!std::filesystem::exists(file, error)) return store;
   store.file_found_ = true;
-  std::ifstream in(file);
+  const std::string text = read_input_text(file, "tuning file " + file.string());
   try {
-    const nlohmann::json document = nlohmann::json::parse(in);
+    const nlohmann::json document = nlohmann::json::parse(text);
     if (document.at("version").get<int>() != kFormatVersion) throw UserError("unknown version");
     for (const auto& entry : document.at("entries")) {
       TunedSizes sizes = from_json(entry);
