@@ -230,7 +230,7 @@ expect_exit_of(run_paper_device_without_runtime 3 "no OpenCL platform found"
                $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --method paper --no-cache --out ${RUN_OUT}_no_runtime)
 expect_exit_of(run_bogus_variable 2 "no OpenCL device matches \\$MESHPARTICLES_DEVICE='bogus'"
                env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --method paper --out ${RUN_OUT})
-expect_exit_of(bad_pocl_cache 3 "\\$POCL_CACHE_DIR='/proc/no-such-dir' is not a directory PoCL can write"
+expect_exit_of(bad_pocl_cache 3 "\\$POCL_CACHE_DIR='/proc/no-such-dir' cannot be made"
                env "MESHPARTICLES_DEVICE=Portable Computing Language" POCL_CACHE_DIR=/proc/no-such-dir
                $<TARGET_FILE:meshparticles> devices)
 expect_exit_of(no_cache_ignores_tmpdir 0 "converged"
@@ -299,3 +299,13 @@ expect_exit(batch_spacing 0 "\\[1/1\\] torus: ok, 1500 vertices, n 202, " batch 
 add_test(NAME cli.input_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/input_files.sh $<TARGET_FILE:meshparticles> ${TETRA}
                                       ${CMAKE_CURRENT_BINARY_DIR}/input_files)
 set_tests_properties(cli.input_files PROPERTIES LABELS "fast;device" TIMEOUT 120)
+# The OpenCL runtime's environment, checked before the runtime is loaded:
+# an empty $POCL_CACHE_DIR made PoCL abort (exit 134); a file made the build
+# fail without naming it; a low address-space limit made it hang.
+set(SPHERE ${PROJECT_SOURCE_DIR}/meshes/sphere.off)
+expect_exit_of(pocl_cache_empty 3 "error: \\$POCL_CACHE_DIR is set but empty" env POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_pocl)
+expect_exit_of(pocl_cache_file 3 "error: \\$POCL_CACHE_DIR='${SPHERE}' is not a directory" env POCL_CACHE_DIR=${SPHERE} $<TARGET_FILE:meshparticles> devices)
+expect_exit_of(pocl_cache_default_backend 0 "particles: [0-9]+ done" env POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --out ${RUN_OUT}_pocl_default)
+expect_exit_of(address_space_opencl 3 "error: the process's address-space or data limit \\(ulimit -v / -d: 524288 KiB\\) is under the 1024 MiB an OpenCL runtime needs.*--backend serial-field"
+               bash -c "ulimit -v 524288 && exec \"$0\" run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_ulimit" $<TARGET_FILE:meshparticles>)
+set_tests_properties(cli.address_space_opencl cli.pocl_cache_empty PROPERTIES TIMEOUT 60)

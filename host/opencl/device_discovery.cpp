@@ -8,25 +8,14 @@
 #include <cstring>
 
 #include "common/user_error.hpp"
+#include "opencl/runtime_environment.hpp"
 
 namespace meshparticles {
 
 namespace {
 
-const char* const kInstallHint =
+const std::string kInstallHint =
     "install an OpenCL runtime (on Debian: apt-get install pocl-opencl-icd for the CPU, or your GPU vendor's ICD)";
-
-// The runtime quirks that make a present runtime look absent, named so the
-// user fixes the cause instead of installing what is already there. PoCL
-// does not start without a cache directory it can write ($POCL_CACHE_DIR).
-std::string runtime_hint() {
-  const char* pocl_cache = std::getenv("POCL_CACHE_DIR");
-  if (pocl_cache && *pocl_cache && ::access(pocl_cache, W_OK) != 0) {
-    return std::string("$POCL_CACHE_DIR='") + pocl_cache + "' is not a directory PoCL can write (" +
-           std::strerror(errno) + "), and PoCL does not start without it: unset it or point it at a directory of yours";
-  }
-  return kInstallHint;
-}
 
 std::string type_name(cl_device_type type) {
   if (type & CL_DEVICE_TYPE_GPU) return "GPU";
@@ -49,11 +38,13 @@ std::string lowercase(std::string text) {
 }  // namespace
 
 std::vector<DeviceDescription> list_devices() {
+  // Before the runtime is loaded: some environments make it abort or hang.
+  if (const auto problem = runtime_environment_problem()) throw UserError(*problem, kNoRuntimeExitCode);
   std::vector<cl::Platform> platforms;
   try {
     cl::Platform::get(&platforms);
   } catch (const cl::Error& error) {
-    throw UserError("no OpenCL platform found: " + runtime_hint(), kNoRuntimeExitCode);
+    throw UserError("no OpenCL platform found: " + kInstallHint, kNoRuntimeExitCode);
   }
   std::vector<DeviceDescription> devices;
   for (std::size_t p = 0; p < platforms.size(); ++p) {
@@ -82,7 +73,7 @@ std::vector<DeviceDescription> list_devices() {
     }
   }
   if (devices.empty()) {
-    throw UserError("no OpenCL device found: " + runtime_hint(), kNoRuntimeExitCode);
+    throw UserError("no OpenCL device found: " + kInstallHint, kNoRuntimeExitCode);
   }
   return devices;
 }
