@@ -309,3 +309,8 @@ expect_exit_of(pocl_cache_default_backend 0 "particles: [0-9]+ done" env POCL_CA
 expect_exit_of(address_space_opencl 3 "error: the process's address-space or data limit \\(ulimit -v / -d: 524288 KiB\\) is under the 1024 MiB an OpenCL runtime needs.*--backend serial-field"
                bash -c "ulimit -v 524288 && exec \"$0\" run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_ulimit" $<TARGET_FILE:meshparticles>)
 set_tests_properties(cli.address_space_opencl cli.pocl_cache_empty PROPERTIES TIMEOUT 60)
+expect_exit_of(address_space_serial 0 "particles: [0-9]+ done"
+               bash -c "ulimit -v 524288 && exec \"$0\" run ${SPHERE} --method paper --backend serial-field --out ${RUN_OUT}_ulimit_serial" $<TARGET_FILE:meshparticles>)
+expect_exit_of(address_space_dense_table 2 "error: [^ ]*sphere\\.off: the 4000 x 4000 distance table needs 0\\.06 GiB but the room under the address-space limit \\(ulimit -v 65536 KiB\\) holds 0\\.[0-9]+ GiB.*--distances local"
+               bash -c "ulimit -v 65536 && exec \"$0\" run ${SPHERE} --method paper --backend serial --distances dense --no-cache --out ${RUN_OUT}_ulimit_dense" $<TARGET_FILE:meshparticles>)
+set_tests_properties(cli.address_space_serial PROPERTIES TIMEOUT 60)

@@ -97,7 +97,10 @@ CheckedBackend check_backend(const BackendRequest& request, const SurfaceMesh& m
     check_table_fits(mesh.vertex_count(), sizeof(float) + backend.extra_host_bytes_per_entry,
                      usable_host_memory_bytes(),
                      backend.extra_host_bytes_per_entry ? "distance and weight tables" : "distance table",
-                     "host memory");
+                     usable_host_memory_name(),
+                     backend.extra_host_bytes_per_entry
+                         ? "; --weights half halves the weight table, and field or serial-field need no table"
+                         : "; field or serial-field need no table (--distances local)");
   }
   if (!backend.on_device()) return checked;
 

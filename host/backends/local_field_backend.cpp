@@ -4,6 +4,7 @@
 #include <cmath>
 #include <thread>
 
+#include "common/worker_threads.hpp"
 #include "particles/field_units.hpp"
 
 namespace meshparticles {
@@ -154,10 +155,10 @@ void LocalFieldBackend::rebuild_field() {
   const auto learn_every = [&](unsigned first) {
     for (std::size_t k = first; k < occupied.size(); k += threads) learn_spread_weights(occupied[k]);
   };
-  std::vector<std::thread> helpers;
-  for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(learn_every, t);
+  WorkerThreads helpers(threads - 1, [&](unsigned t) { learn_every(t + 1); });
+  for (unsigned t = helpers.started() + 1; t < threads; ++t) learn_every(t);  // shares whose thread did not start
   learn_every(0);
-  for (auto& helper : helpers) helper.join();
+  helpers.join();
   for (const VertexId x : all) field_[x] = 0;
   for (const VertexId u : occupied) spread_weight(u, int(occupancy_[u]));
 }

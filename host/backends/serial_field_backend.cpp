@@ -9,7 +9,7 @@ namespace meshparticles {
 SerialFieldBackend::SerialFieldBackend(const SurfaceMesh& mesh, const DistanceTable& distances,
                                        const EnergyParams& energy, WeightFormat weights, std::size_t rebuild_every)
     : SerialFieldMethod(mesh, rebuild_every), vertex_count_(mesh.vertex_count()) {
-  check_table_fits(vertex_count_, sizeof(float), usable_host_memory_bytes(), "weight table", "host memory");
+  check_table_fits(vertex_count_, sizeof(float), usable_host_memory_bytes(), "weight table", usable_host_memory_name());
   // In float, as the device computes it (particle_energy.h).
   const float inv_two_sigma_sq = float(energy.inv_two_sigma_sq());
   const auto& d = distances.values();

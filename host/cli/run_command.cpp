@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/run_options.hpp"
+#include "common/memory_limits.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "reports/file_digest.hpp"
@@ -64,7 +65,7 @@ void run_run(RunCommandOptions options) {
   const bool from_file = std::filesystem::is_regular_file(options.mesh);
   const nlohmann::json report =
       run_report(mesh, result, options.out, from_file ? std::optional(file_sha256(options.mesh)) : std::nullopt);
-  write_run_outputs(options.out, mesh, result, report);
+  naming_memory_failures(options.out, "writing the outputs", [&] { write_run_outputs(options.out, mesh, result, report); });
   print_summary(result, report, options.out);
 }
 

@@ -163,7 +163,7 @@ std::optional<DistanceTable> load_cached_table(const std::filesystem::path& file
   if (!in) return std::nullopt;  // not cached yet
   const auto header = matching_header(in, file, key, problem);
   if (!header) return std::nullopt;
-  check_table_fits(key.vertex_count, sizeof(float), usable_host_memory_bytes(), "distance table", "host memory");
+  check_table_fits(key.vertex_count, sizeof(float), usable_host_memory_bytes(), "distance table", usable_host_memory_name());
   DistanceTable table(key.vertex_count);
   if (!in.read(reinterpret_cast<char*>(table.values().data()), std::streamsize(table.byte_size()))) {
     problem = "unreadable";

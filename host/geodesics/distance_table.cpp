@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "common/progress.hpp"
+#include "common/worker_threads.hpp"
 #include "geodesics/memory_guard.hpp"
 
 namespace meshparticles {
@@ -44,7 +45,7 @@ void symmetrize_by_averaging(DistanceTable& table) {
 
 DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, unsigned threads, bool quiet) {
   const std::size_t n = mesh.vertex_count();
-  check_table_fits(n, sizeof(float), usable_host_memory_bytes(), "distance table", "host memory");
+  check_table_fits(n, sizeof(float), usable_host_memory_bytes(), "distance table", usable_host_memory_name());
   DistanceTable table(n);
   const auto solver = make_geodesic_solver(mesh, method);
 
@@ -75,8 +76,8 @@ DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, 
   threads = unsigned(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
 
   ProgressLine progress("geodesics (" + method_name(method) + ", " + std::to_string(threads) + " threads)", n, quiet);
-  std::vector<std::thread> workers;
-  for (unsigned t = 0; t < threads; ++t) workers.emplace_back(work);
+  WorkerThreads workers(threads, [&](unsigned) { work(); });
+  if (workers.started() == 0) work();  // no thread could start: this one does it all
   try {
     while (done < n) {
       progress.update(done);
@@ -84,10 +85,9 @@ DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, 
     }
   } catch (...) {  // interrupted: the workers stop at their next source
     next_source = n;
-    for (auto& worker : workers) worker.join();
-    throw;
+    throw;  // WorkerThreads joins them
   }
-  for (auto& worker : workers) worker.join();
+  workers.join();
   if (failure) std::rethrow_exception(failure);
   symmetrize_by_averaging(table);
   progress.update(n);

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "common/progress.hpp"
+#include "common/worker_threads.hpp"
 
 namespace meshparticles {
 
@@ -202,7 +203,11 @@ void LocalDistances::request(std::span<const VertexId> vertices) const {
       queued_[v] = Queued::waiting;
       waiting_.push_back(v);
     }
-    while (helpers_.size() + 1 < threads()) helpers_.emplace_back([this] { help(); });
+    try {
+      while (helpers_.size() + 1 < threads()) helpers_.emplace_back([this] { help(); });
+    } catch (const std::system_error&) {
+      // No room for another thread (ulimit -v): ball() solves what no helper takes.
+    }
   }
   work_ready_.notify_all();
 }
@@ -259,8 +264,8 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   if (threads == 1) {
     work();
   } else {
-    std::vector<std::thread> workers;
-    for (unsigned t = 0; t < threads; ++t) workers.emplace_back(work);
+    WorkerThreads workers(threads, [&](unsigned) { work(); });
+    if (workers.started() == 0) work();  // no thread could start: this one does it all
     try {
       while (done < missing.size() && next < missing.size()) {
         progress.update(done);
@@ -268,10 +273,9 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
       }
     } catch (...) {  // interrupted: the workers stop at their next ball, the balls made are kept
       next = missing.size();
-      for (auto& worker : workers) worker.join();
-      throw;
+      throw;  // WorkerThreads joins them
     }
-    for (auto& worker : workers) worker.join();
+    workers.join();
   }
   progress.update(done);
   progress.finish();

@@ -5,24 +5,25 @@
 #include <cstdint>
 #include <string>
 
+#include "common/memory_limits.hpp"
+
 namespace meshparticles {
 
-// MemAvailable from /proc/meminfo; a large value where it cannot be read.
-std::uint64_t available_host_memory_bytes();
-
-// What of the host's available memory one process may plan to use: room is
-// left for everything else the process and the machine need.
+// What one process may plan to use of the memory it may still take
+// (common/memory_limits: the machine's, or a tighter limit): room is left
+// for everything else the process and the machine need.
 std::uint64_t usable_host_memory_bytes();
+// What sets it, for messages ("host memory", "the address-space limit ...").
+std::string usable_host_memory_name();
 
 // The most vertices whose V x V table of `bytes_per_entry` fits in `bytes`.
 std::uint64_t max_vertices_for(std::uint64_t bytes, std::uint64_t bytes_per_entry = sizeof(float));
 
-// Throws UserError "the V x V WHAT needs X GiB but WHERE holds Y GiB: at
-// most N vertices fit" when V^2 * bytes_per_entry exceeds `usable_bytes`.
+// Throws MemoryRefusal "the V x V WHAT needs X GiB but WHERE holds Y GiB:
+// at most N vertices fitHINT" when V^2 * bytes_per_entry exceeds
+// `usable_bytes`. `hint` names the options that would need less.
 void check_table_fits(std::uint64_t vertex_count, std::uint64_t bytes_per_entry, std::uint64_t usable_bytes,
-                      const std::string& what, const std::string& where);
+                      const std::string& what, const std::string& where, const std::string& hint = "");
 
-// "1.25 GiB".
-std::string gibibytes(double bytes);
 
 }  // namespace meshparticles

@@ -49,7 +49,8 @@ DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& re
     plan.kind = backend_needs_dense || (fits && cheap) ? StoreKind::dense : StoreKind::local;
   }
   if (plan.kind == StoreKind::dense) {
-    check_table_fits(mesh.vertex_count(), sizeof(float), usable, "distance table", "host memory");
+    check_table_fits(mesh.vertex_count(), sizeof(float), usable, "distance table", usable_host_memory_name(),
+                     "; --distances local holds only balls around the particles");
     return plan;
   }
   if (request.cutoff < 1) {
@@ -60,11 +61,12 @@ DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& re
   plan.ball_budget_bytes = usable / 2;
   const std::uint64_t needed = estimated_ball_bytes(mesh, plan.radius, particles);
   if (needed > plan.ball_budget_bytes) {
-    throw UserError("the local distances of " + std::to_string(particles) + " particles on " +
-                    std::to_string(mesh.vertex_count()) + " vertices with --cutoff " +
-                    std::to_string(request.cutoff) + " need about " + gibibytes(double(needed)) +
-                    " of balls at once but " + gibibytes(double(plan.ball_budget_bytes)) +
-                    " is their budget here: more particles (smaller balls) or a smaller --cutoff");
+    throw MemoryRefusal("the local distances of " + std::to_string(particles) + " particles on " +
+                        std::to_string(mesh.vertex_count()) + " vertices with --cutoff " +
+                        format_number("%g", request.cutoff) + " need about " + gibibytes(double(needed)) +
+                        " of balls at once but their budget is " + gibibytes(double(plan.ball_budget_bytes)) +
+                        " (half of what may be used here, set by " + memory_room().set_by +
+                        "): a smaller --cutoff or a larger -n makes the balls smaller");
   }
   return plan;
 }

@@ -6,6 +6,7 @@
 
 #include "backends/backend_table.hpp"
 #include "backends/local_device_field_backend.hpp"
+#include "common/memory_limits.hpp"
 #include "common/user_error.hpp"
 #include "pipeline/default_backend.hpp"
 #include "pipeline/distances.hpp"
@@ -72,7 +73,9 @@ void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
 
 }  // namespace
 
-RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
+namespace {
+
+RunPlan plan_run_unnamed(const SurfaceMesh& mesh, const RunRequest& request) {
   RunPlan plan;
   plan.request = request;
   plan.request.distances.geodesics.quiet = request.quiet;
@@ -141,6 +144,13 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
   return plan;
 }
 
+}  // namespace
+
+RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
+  // Every memory check runs while planning, before anything is computed.
+  return naming_memory_failures(request.mesh_label, "planning the run", [&] { return plan_run_unnamed(mesh, request); });
+}
+
 namespace {
 
 // spread: the start and farthest-point optimization on the working mesh,
@@ -151,15 +161,20 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   result.device = "serial";
   const RunRequest& request = plan.request;
   const auto particles_started = std::chrono::steady_clock::now();
-  auto working = std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.working_mesh));
+  const std::string& label = request.mesh_label;
+  auto working = naming_memory_failures(label, "refining the working mesh", [&] {
+    return std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.working_mesh));
+  });
   result.working = working;
   const SurfaceMesh& surface = working->mesh;
   const auto solver = make_geodesic_solver(surface, request.distances.geodesics.method);
   // The input's vertices keep their ids on the working mesh.
-  result.start = place_particles(surface, *solver, plan.placement, request.quiet);
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
-  SpreadOutcome spread = optimize_farthest_points(surface, *solver, result.start, request.max_iterations,
-                                                  kSpreadMinGain * d_hex, kSpreadStallGain * d_hex, request.quiet);
+  SpreadOutcome spread = naming_memory_failures(label, "spreading the particles", [&] {
+    result.start = place_particles(surface, *solver, plan.placement, request.quiet);
+    return optimize_farthest_points(surface, *solver, result.start, request.max_iterations, kSpreadMinGain * d_hex,
+                                    kSpreadStallGain * d_hex, request.quiet);
+  });
   result.sweeps = std::move(spread.sweeps);
   result.outcome.positions = std::move(spread.positions);
   result.outcome.converged = spread.converged;
@@ -170,15 +185,19 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   result.seconds.particles = seconds_since(particles_started);
 
   const auto geodesics_started = std::chrono::steady_clock::now();
-  const ObtainedDistances distances = obtain_distances(surface, request.distances.geodesics, plan.distances);
+  const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
+    return obtain_distances(surface, request.distances.geodesics, plan.distances);
+  });
   result.distances.kind = distances.kind;
   result.distances.table_source = distances.source;
   result.seconds.geodesics = seconds_since(geodesics_started);
   const auto quality_started = std::chrono::steady_clock::now();
-  result.distance_to_nearest =
-      distance_to_nearest_particle(surface, request.distances.geodesics.method, result.outcome.positions);
-  result.quality = measure_quality(surface, *distances.store, result.outcome.positions, plan.energy,
-                                   result.distance_to_nearest, request.quiet);
+  naming_memory_failures(label, "measuring the result", [&] {
+    result.distance_to_nearest =
+        distance_to_nearest_particle(surface, request.distances.geodesics.method, result.outcome.positions);
+    result.quality = measure_quality(surface, *distances.store, result.outcome.positions, plan.energy,
+                                     result.distance_to_nearest, request.quiet);
+  });
   result.seconds.quality = seconds_since(quality_started);
   if (const LocalDistances* balls = distances.store->local_balls()) {
     result.distances.balls = balls->statistics();
@@ -195,21 +214,25 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
   if (plan.method == Method::spread) return execute_spread(mesh, plan);
   RunResult result;
   result.plan = plan;
+  const std::string& label = plan.request.mesh_label;
   const auto particles_started = std::chrono::steady_clock::now();
-  const std::unique_ptr<ParticleBackend> backend = make_backend(plan.backend, mesh, distances, plan.energy);
-  result.device = backend->device_name();
-  result.start = place_particles(mesh, plan.placement, plan.request.quiet);
-  result.outcome = run_particles(
-      *backend, result.start, {plan.scheme, plan.colors, plan.request.max_iterations, plan.request.quiet},
-      distances.local_balls());
+  naming_memory_failures(label, "moving the particles", [&] {
+    const std::unique_ptr<ParticleBackend> backend = make_backend(plan.backend, mesh, distances, plan.energy);
+    result.device = backend->device_name();
+    result.start = place_particles(mesh, plan.placement, plan.request.quiet);
+    result.outcome = run_particles(
+        *backend, result.start, {plan.scheme, plan.colors, plan.request.max_iterations, plan.request.quiet},
+        distances.local_balls());
+  });
   result.seconds.particles = seconds_since(particles_started);
 
   const auto quality_started = std::chrono::steady_clock::now();
-  result.distance_to_nearest =
-      distance_to_nearest_particle(mesh, plan.request.distances.geodesics.method, result.outcome.positions);
-  result.quality =
-      measure_quality(mesh, distances, result.outcome.positions, plan.energy, result.distance_to_nearest,
-                      plan.request.quiet);
+  naming_memory_failures(label, "measuring the result", [&] {
+    result.distance_to_nearest =
+        distance_to_nearest_particle(mesh, plan.request.distances.geodesics.method, result.outcome.positions);
+    result.quality = measure_quality(mesh, distances, result.outcome.positions, plan.energy,
+                                     result.distance_to_nearest, plan.request.quiet);
+  });
   result.seconds.quality = seconds_since(quality_started);
   result.seconds.total = result.seconds.particles + result.seconds.quality;
   return result;
@@ -217,7 +240,9 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
 
 RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan) {
   if (plan.method == Method::spread) return execute_spread(mesh, plan);
-  const ObtainedDistances distances = obtain_distances(mesh, plan.request.distances.geodesics, plan.distances);
+  const ObtainedDistances distances = naming_memory_failures(plan.request.mesh_label, "computing distances", [&] {
+    return obtain_distances(mesh, plan.request.distances.geodesics, plan.distances);
+  });
   RunResult result = execute_run(mesh, plan, *distances.store);
   result.distances.kind = distances.kind;
   result.distances.table_source = distances.source;
