@@ -108,7 +108,7 @@ expect_kernel_build_failure(run_field_kernel_build_failure field field.h
 expect_exit(sweep_zero_iterations 2 "--iterations: expected a whole number from 1 to 100000, got \"0\"" sweep ${TORUS} -n 8 --iterations 0 --no-cache)
 expect_exit(sweep_tile_without_tiled 2 "--tile applies to the tiled kernel" sweep ${TORUS} --kernel naive --tile 8)
 expect_exit(sweep_weights_without_field 2 "--weights applies to the field kernel, which is not swept" sweep ${TORUS} --kernel naive --weights half)
-expect_exit(sweep_unknown_kernel 2 "--kernel: cuda not in" sweep ${TORUS} --kernel naive,cuda)
+expect_exit(sweep_unknown_kernel 2 "--kernel: .cuda. is not one of naive, tiled, field" sweep ${TORUS} --kernel naive,cuda)
 expect_exit(sweep_too_many_particles 2 "-n 5 is more particles than the 4 vertices" sweep ${TETRA} -n 5)
 expect_exit(sweep_unwritable_csv 2 "/nonexistent-dir/s.csv: cannot write" sweep ${TETRA} -n 2 --csv /nonexistent-dir/s.csv)
 expect_exit(sweep_colors_without_colored 2 "--colors applies to --scheme colored, not synchronous" sweep ${TORUS} --scheme synchronous --colors 4)
@@ -295,22 +295,44 @@ expect_exit(batch_no_mesh 2 "folder .*holds no mesh file" batch ${CMAKE_CURRENT_
 expect_exit(batch_n_and_spacing 2 "--particles excludes --spacing" batch ${TORUS} -n 8 --spacing 0.1 --out ${CMAKE_CURRENT_BINARY_DIR}/batch_excludes)
 # n from a density: the torus's area (15.73) over the spacing gives n; the summary records it.
 expect_exit(batch_spacing 0 "\\[1/1\\] torus: ok, 1500 vertices, n 202, " batch ${TORUS} --spacing 0.3 --iterations 3 --force --out ${CMAKE_CURRENT_BINARY_DIR}/batch_spacing)
-# Files that are not regular files (FIFOs) refused at once by every reader.
-add_test(NAME cli.input_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/input_files.sh $<TARGET_FILE:meshparticles> ${TETRA}
-                                      ${CMAKE_CURRENT_BINARY_DIR}/input_files)
-set_tests_properties(cli.input_files PROPERTIES LABELS "fast;device" TIMEOUT 120)
+# Hard edges (issue 34): empty values, empty list elements and impossible
+# paths are refused while parsing; control characters stay escaped so every
+# error is one line.
+set(SPHERE ${PROJECT_SOURCE_DIR}/meshes/sphere.off)
+# Empty arguments go through bash: CMake drops empty list elements.
+function(expect_exit_shell name code pattern script)
+  expect_exit_of(${name} ${code} ${pattern} bash -c "${script}" $<TARGET_FILE:meshparticles>)
+endfunction()
+expect_exit_shell(empty_mesh 2 "error: mesh: an empty value is not allowed" "exec \"$0\" run '' --out ${RUN_OUT}")
+expect_exit_shell(empty_out 2 "error: --out: an empty value is not allowed" "exec \"$0\" run ${TETRA} --out ''")
+expect_exit_shell(empty_tuning_file 2 "error: --tuning-file: an empty value is not allowed" "exec \"$0\" run ${TETRA} --tuning-file '' --out ${RUN_OUT}")
+expect_exit_shell(empty_device 2 "error: --device: an empty value is not allowed" "exec \"$0\" devices --device ''")
+expect_exit_shell(empty_particle_file 2 "error: particles: an empty value is not allowed" "exec \"$0\" quality ${TETRA} ''")
+expect_exit_shell(empty_batch_out 2 "error: --out: an empty value is not allowed" "exec \"$0\" batch ${TETRA} --out ''")
+expect_exit(empty_list_element 2 "error: --kernel: an empty element in \"naive,\"" sweep ${TETRA} --kernel naive,)
+expect_exit(empty_number_element 2 "error: --wg: an empty element in \"64,,128\"" sweep ${TETRA} --wg 64,,128)
+expect_exit(empty_case_element 2 "error: --case: an empty element" bench --case ,sphere:64)
+expect_exit(unknown_list_name 2 "error: --backend: 'bogus' is not one of serial, " bench --backend serial-field,bogus)
+expect_exit(missing_meshes_dir 2 "error: --meshes-dir: Directory does not exist" bench --meshes-dir ${CMAKE_CURRENT_BINARY_DIR}/no-such-dir)
+string(REPEAT "a" 300 LONG_NAME)
+expect_exit(long_path_part 2 "error: --out: a part of the path is 300 bytes, more than the 255" run ${TETRA} --out ${RUN_OUT}/${LONG_NAME})
+string(REPEAT "a/" 2100 DEEP_PATH)
+expect_exit(long_path 2 "error: --out: the path is [0-9]+ bytes, more than the 4095" run ${TETRA} --out ${DEEP_PATH})
+expect_exit(control_characters_escaped 2 "error: bad\\\\nname\\.off: no such file$" info "bad\nname.off")
 # The OpenCL runtime's environment, checked before the runtime is loaded:
 # an empty $POCL_CACHE_DIR made PoCL abort (exit 134); a file made the build
 # fail without naming it; a low address-space limit made it hang.
-set(SPHERE ${PROJECT_SOURCE_DIR}/meshes/sphere.off)
 expect_exit_of(pocl_cache_empty 3 "error: \\$POCL_CACHE_DIR is set but empty" env POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_pocl)
 expect_exit_of(pocl_cache_file 3 "error: \\$POCL_CACHE_DIR='${SPHERE}' is not a directory" env POCL_CACHE_DIR=${SPHERE} $<TARGET_FILE:meshparticles> devices)
 expect_exit_of(pocl_cache_default_backend 0 "particles: [0-9]+ done" env POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --out ${RUN_OUT}_pocl_default)
 expect_exit_of(address_space_opencl 3 "error: the process's address-space or data limit \\(ulimit -v / -d: 524288 KiB\\) is under the 1024 MiB an OpenCL runtime needs.*--backend serial-field"
                bash -c "ulimit -v 524288 && exec \"$0\" run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_ulimit" $<TARGET_FILE:meshparticles>)
-set_tests_properties(cli.address_space_opencl cli.pocl_cache_empty PROPERTIES TIMEOUT 60)
 expect_exit_of(address_space_serial 0 "particles: [0-9]+ done"
                bash -c "ulimit -v 524288 && exec \"$0\" run ${SPHERE} --method paper --backend serial-field --out ${RUN_OUT}_ulimit_serial" $<TARGET_FILE:meshparticles>)
-expect_exit_of(address_space_dense_table 2 "error: [^ ]*sphere\\.off: the 4000 x 4000 distance table needs 0\\.06 GiB but the room under the address-space limit \\(ulimit -v 65536 KiB\\) holds 0\\.[0-9]+ GiB.*--distances local"
-               bash -c "ulimit -v 65536 && exec \"$0\" run ${SPHERE} --method paper --backend serial --distances dense --no-cache --out ${RUN_OUT}_ulimit_dense" $<TARGET_FILE:meshparticles>)
-set_tests_properties(cli.address_space_serial PROPERTIES TIMEOUT 60)
+expect_exit_shell(address_space_dense_table 2 "error: [^ ]*sphere\\.off: the 4000 x 4000 distance table needs 0\\.06 GiB but the room under the address-space limit \\(ulimit -v 65536 KiB\\) holds 0\\.[0-9]+ GiB.*--distances local"
+                  "ulimit -v 65536 && exec \"$0\" run ${SPHERE} --method paper --backend serial --distances dense --no-cache --out ${RUN_OUT}_ulimit_dense")
+set_tests_properties(cli.address_space_opencl cli.address_space_serial cli.pocl_cache_empty PROPERTIES TIMEOUT 60)
+# Files that are not regular files (FIFOs) refused at once by every reader.
+add_test(NAME cli.input_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/input_files.sh $<TARGET_FILE:meshparticles> ${TETRA}
+                                      ${CMAKE_CURRENT_BINARY_DIR}/input_files)
+set_tests_properties(cli.input_files PROPERTIES LABELS "fast;device" TIMEOUT 120)

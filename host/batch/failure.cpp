@@ -3,6 +3,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "opencl/opencl.hpp"
 
@@ -12,7 +13,7 @@ Failure describe_failure(const std::exception_ptr& error) {
   try {
     std::rethrow_exception(error);
   } catch (const UserError& problem) {
-    return {problem.exit_code(), false, problem.what()};
+    return {problem.exit_code(), false, one_line(problem.what())};
   } catch (const cl::Error& problem) {
     // Devices allocate lazily: a buffer they cannot hold may be refused at
     // the first launch that uses it. That is the input's size, not a bug.
@@ -24,7 +25,7 @@ Failure describe_failure(const std::exception_ptr& error) {
   } catch (const std::bad_alloc&) {
     return {2, false, "out of memory"};
   } catch (const std::exception& problem) {
-    return {1, true, problem.what()};
+    return {1, true, one_line(problem.what())};
   } catch (...) {
     return {1, true, "unknown exception"};
   }

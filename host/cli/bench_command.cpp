@@ -7,6 +7,7 @@
 #include "backends/backend_table.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
+#include "cli/option_values.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
 #include "measurement/bench.hpp"
@@ -103,16 +104,11 @@ void add_bench_command(CLI::App& app) {
   auto options = std::make_shared<BenchOptions>();
   CLI::App* bench = app.add_subcommand(
       "bench", "The paper's Tables 1 and 2: time per iteration of serial, naive, tiled and field beside the paper's");
-  bench->add_option("--case", options->cases,
-                    "MESH:N, comma-separated (default: the paper's sphere 128..1024, torus 128..512, "
-                    "atrium 256..1024)")
-      ->delimiter(',')
-      ->allow_extra_args(false);
-  bench->add_option("--backend", options->backends, "Rows, comma-separated")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->check(CLI::IsMember(backend_names()))
-      ->capture_default_str();
+  add_name_list_option(*bench, "--case", options->cases, {},
+                       "MESH:N, comma-separated (default: the paper's sphere 128..1024, torus 128..512, "
+                       "atrium 256..1024)")
+      ->type_name("MESH:N,...");
+  add_name_list_option(*bench, "--backend", options->backends, backend_names(), "Rows, comma-separated");
   add_whole_number_option(*bench, "--iterations", options->settings.iterations, kTimedIterationRange,
                           "Timed iterations per row (the paper: 1000)");
   bench->add_option("--scheme", options->scheme, "Scheme of the device rows: monotone, colored or synchronous")
@@ -120,7 +116,9 @@ void add_bench_command(CLI::App& app) {
       ->capture_default_str();
   add_whole_number_option(*bench, "--colors", options->settings.colors, kColorRange, "Groups of the colored scheme");
   add_device_option(*bench, options->device);
-  bench->add_option("--meshes-dir", options->meshes_dir, "Where the committed meshes are")->capture_default_str();
+  bench->add_option("--meshes-dir", options->meshes_dir, "Where the committed meshes are")
+      ->check(CLI::ExistingDirectory)
+      ->capture_default_str();
   bench->add_option("--csv", options->csv, "Also write the rows as CSV to this file");
   bench->add_option("--json", options->json, "Also write the rows as JSON to this file");
   bench->add_flag("--quality", options->quality,

@@ -6,6 +6,8 @@
 #include "batch/failure.hpp"
 #include "cli/command_guide.hpp"
 #include "cli/commands.hpp"
+#include "cli/option_values.hpp"
+#include "common/text_format.hpp"
 #include "common/version.hpp"
 
 namespace meshparticles {
@@ -40,13 +42,14 @@ int main(int argc, char** argv) {
   add_quality_command(app);
   add_compare_command(app);
   add_completion_command(app);
+  refuse_unusable_values(app);
   if (argc == 1) {
     std::cerr << short_usage(app);
     return 2;
   }
   // CLI11 alone would answer a misspelt command with "A subcommand is required".
   if (const auto error = unknown_command_error(app, argv[1])) {
-    std::cerr << "meshparticles: error: " << *error << "\n";
+    std::cerr << "meshparticles: error: " << one_line(*error) << "\n";
     return 2;
   }
   try {
@@ -58,7 +61,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& version) {
     return app.exit(version);
   } catch (const CLI::ParseError& error) {
-    std::cerr << "meshparticles: error: " << error.what() << " (see --help)\n";
+    std::cerr << "meshparticles: error: " << one_line(error.what()) << " (see --help)\n";
     return 2;
   } catch (...) {
     const Failure failure = describe_failure(std::current_exception());

@@ -6,6 +6,7 @@
 // range-checked before use, with the option and its range named in words:
 //   --iterations: expected a whole number from 0 to 1000000, got "-1"
 #include <CLI/CLI.hpp>
+#include "cli/option_values.hpp"
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -98,10 +99,14 @@ CLI::Option* add_whole_number_list_option(CLI::App& command, const std::string& 
       names,
       [&target, label, range](const std::vector<std::string>& texts) {
         target.clear();
-        for (const std::string& text : texts) target.push_back(Value(parse_whole_number(text, label, range)));
+        for (const std::string& list : texts) {
+          for (const std::string& text : split_list(list, label)) {
+            target.push_back(Value(parse_whole_number(text, label, range)));
+          }
+        }
       },
       help + " [each " + std::to_string(range.min) + ".." + std::to_string(range.max) + "]");
-  option->type_name("UINT,...")->delimiter(',')->allow_extra_args(false)->default_str(defaults);
+  option->type_name("UINT,...")->allow_extra_args(false)->default_str(defaults);
   return option;
 }
 

@@ -7,6 +7,7 @@
 #include "backends/backend_table.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
+#include "cli/option_values.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
 #include "measurement/sweep.hpp"
@@ -116,11 +117,8 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("mesh", options->mesh, "Mesh file (default: meshes/sphere.off, else the built-in sphere)");
   add_whole_number_option(*sweep, "-n,--particles", request.particles, kParticleRange,
                           "Number of particles, at most the mesh's vertices");
-  sweep->add_option("--kernel", request.kernels, "Kernels to sweep, comma-separated")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->check(CLI::IsMember(device_backend_names()))
-      ->capture_default_str();
+  add_name_list_option(*sweep, "--kernel", request.kernels, device_backend_names(),
+                       "Kernels to sweep, comma-separated");
   add_whole_number_list_option(*sweep, "--wg", request.work_group_sizes, kWorkGroupRange,
                                "Work-group sizes, comma-separated");
   add_whole_number_list_option(*sweep, "--tile", options->tile_sizes, kTileRange,

@@ -21,4 +21,23 @@ inline std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
+// `text` on one line, whatever it quotes: a control character (a path may
+// hold a newline) is written as an escape, \n, \r, \t or \xHH.
+inline std::string one_line(const std::string& text) {
+  std::string line;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) line += c;
+    else if (c == '\n') line += "\\n";
+    else if (c == '\r') line += "\\r";
+    else if (c == '\t') line += "\\t";
+    else {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, "\\x%02x", unsigned(byte));
+      line += escape;
+    }
+  }
+  return line;
+}
+
 }  // namespace meshparticles
