@@ -12,6 +12,7 @@
 // not written by a run either.
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 namespace meshparticles {
@@ -20,5 +21,16 @@ namespace meshparticles {
 // run's other files in `directory` and "report_sha256" of the result.
 // Throws UserError when one of those files cannot be read.
 std::string digested_report_text(nlohmann::json report, const std::filesystem::path& directory);
+
+// The content of report.json at `file` when its text is exactly what
+// digested_report_text writes for that content and its "report_sha256"
+// holds; else nothing (unreadable, not JSON, edited, or from a version
+// before the digests).
+std::optional<nlohmann::json> intact_report(const std::filesystem::path& file);
+
+// Whether `report`'s "outputs" names exactly the run's other files and each
+// one in `directory` has the size and SHA-256 recorded (sizes first: a
+// changed length costs no digest).
+bool outputs_as_recorded(const std::filesystem::path& directory, const nlohmann::json& report);
 
 }  // namespace meshparticles
