@@ -181,15 +181,21 @@ resume)
   kept=$(sed -n 's/.* ok (\([0-9]*\) kept from an earlier batch).*/\1/p' "$out.log")
   [ "$kept" -eq "$(grep -c '' "$work/before.txt")" ] || fail "resume kept $kept meshes, expected $(grep -c '' "$work/before.txt")"
   same_results "$reference" "$out"
-  # Checked, not assumed: a truncated file, a report of other parameters and
-  # another mesh's whole output are each redone; untouched ones kept.
+  # Checked, not assumed: a truncated file, a report of other parameters,
+  # another mesh's whole output and a vertex id edited in place (the same
+  # size: tests/batch_resume_test.cpp edits every file) are each redone;
+  # untouched ones kept.
   stamps "$out" > "$work/before.txt"
   head -c 100 "$out/torus/particles.csv" > "$out/torus/particles.csv.cut" && mv "$out/torus/particles.csv.cut" "$out/torus/particles.csv"
   sed -i 's/"seed": 1,/"seed": 2,/' "$out/high_valence/report.json"
   rm -rf "$out/atrium_001" && cp -a "$out/atrium_002" "$out/atrium_001"
+  csv="$out/atrium_002/particles.csv"
+  awk -F, -v OFS=, 'NR == 2 { $2 = substr($2, 1, length($2) - 1) (substr($2, length($2)) + 1) % 10 } 1' "$csv" > "$csv.edited"
+  [ "$(stat -c %s "$csv.edited")" -eq "$(stat -c %s "$csv")" ] && ! cmp -s "$csv" "$csv.edited" || fail "the vertex id edit changed the size"
+  cat "$csv.edited" > "$csv" && rm "$csv.edited"
   batch "$out"
   [ "$code" -eq 2 ] || fail "second resume exited $code"
-  for name in torus high_valence atrium_001; do
+  for name in torus high_valence atrium_001 atrium_002; do
     ! grep -qx "$(grep "^$name " "$work/before.txt")" <(stamps "$out") || fail "$name was damaged but kept"
   done
   grep -qx "$(grep "^atrium_000 " "$work/before.txt")" <(stamps "$out") || fail "atrium_000 was intact but redone"

@@ -4,6 +4,7 @@
 
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
+#include "reports/output_digests.hpp"
 #include "reports/paraview_export.hpp"
 #include "reports/particle_locations.hpp"
 
@@ -55,7 +56,9 @@ void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh
                          "distance_to_nearest_particle");
     write_mesh_field_vtp(staging / "mesh_distance.vtp", result.particle_mesh(mesh), result.distance_to_nearest,
                          "distance_to_nearest_particle");
-    write_new_file(staging / "report.json", [&](std::ostream& out) { out << report.dump(2) << "\n"; });
+    // Last: it records the size and SHA-256 of the files above as they are on disk.
+    const std::string report_text = digested_report_text(report, staging);
+    write_new_file(staging / "report.json", [&](std::ostream& out) { out << report_text; });
   });
 }
 

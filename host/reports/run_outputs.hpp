@@ -4,7 +4,8 @@
 // mix): particles.particles (ShapeWorks: one "x y z" per line),
 // particles.csv (kParticlesCsvHeader: the nearest input vertex, the point,
 // and a triangle of the input with barycentric weights; ids as in the
-// file), report.json (mesh, parameters, device, trace, timings, quality),
+// file), report.json (mesh, parameters, device, trace, timings, quality,
+// and the size and SHA-256 of each other file: reports/output_digests.hpp),
 // and for ParaView particles.ply (point cloud) and mesh_distance.vtk and
 // mesh_distance.vtp (legacy and XML VTK: the mesh the particles moved on,
 // with the distance from each vertex to its nearest particle).
@@ -30,7 +31,8 @@ inline constexpr const char* kParticlesCsvHeader =
 // run did not write (they would be lost).
 void prepare_output_directory(const std::filesystem::path& directory);
 
-// Every file of the result, put in place of `directory` at once.
+// Every file of the result, put in place of `directory` at once; report.json
+// is `report` with the other files' digests added.
 void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh, const RunResult& result,
                        const nlohmann::json& report);
 

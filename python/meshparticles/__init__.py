@@ -108,7 +108,7 @@ class Result:
 
     @property
     def report(self) -> Dict[str, Any]:
-        """report.json's content (its params.out is empty until save())."""
+        """report.json's content (params.out empty, no outputs or report_sha256: save() adds them from the files)."""
         return json.loads(self._output.report_json())
 
     @property
