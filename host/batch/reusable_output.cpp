@@ -32,26 +32,26 @@ std::optional<nlohmann::json> reusable_report(const std::filesystem::path& direc
   const std::optional<nlohmann::json> intact = intact_report(directory / "report.json");
   if (!intact) return std::nullopt;
   const nlohmann::json& report = *intact;
-  const nlohmann::json expected_mesh = {{"path", plan.request.mesh_label},
-                                        {"sha256", mesh_sha256},
-                                        {"vertices", mesh.vertex_count()}};
-  const nlohmann::json recorded_mesh = report.value("mesh", nlohmann::json::object());
-  for (const auto& [key, value] : expected_mesh.items()) {
-    if (recorded_mesh.value(key, nlohmann::json()) != value) return std::nullopt;
-  }
-  if (without_out(report.value("params", nlohmann::json::object())) != without_out(run_parameters(plan, directory))) {
-    return std::nullopt;
-  }
-  // The store is no parameter of report.json's, but a run on local balls may
-  // stop elsewhere than one on the dense table.
-  const nlohmann::json distances = report.value("distances", nlohmann::json::object());
-  if (distances.value("store", "") != store_kind_name(plan.distances.kind)) return std::nullopt;
-  if (plan.distances.kind == StoreKind::local && distances.value("radius", -1.0) != plan.distances.radius) {
-    return std::nullopt;
-  }
-  // Last: it reads every byte of the other files.
-  if (!outputs_as_recorded(directory, report)) return std::nullopt;
-  try {
+  try {  // a value of another type than a run writes (a forged report) throws: not reusable
+    const nlohmann::json expected_mesh = {{"path", plan.request.mesh_label},
+                                          {"sha256", mesh_sha256},
+                                          {"vertices", mesh.vertex_count()}};
+    const nlohmann::json recorded_mesh = report.value("mesh", nlohmann::json::object());
+    for (const auto& [key, value] : expected_mesh.items()) {
+      if (recorded_mesh.value(key, nlohmann::json()) != value) return std::nullopt;
+    }
+    if (without_out(report.value("params", nlohmann::json::object())) != without_out(run_parameters(plan, directory))) {
+      return std::nullopt;
+    }
+    // The store is no parameter of report.json's, but a run on local balls may
+    // stop elsewhere than one on the dense table.
+    const nlohmann::json distances = report.value("distances", nlohmann::json::object());
+    if (distances.value("store", "") != store_kind_name(plan.distances.kind)) return std::nullopt;
+    if (plan.distances.kind == StoreKind::local && distances.value("radius", -1.0) != plan.distances.radius) {
+      return std::nullopt;
+    }
+    // Last: it reads every byte of the other files.
+    if (!outputs_as_recorded(directory, report)) return std::nullopt;
     finished_row(plan.request.mesh_label, directory.filename().string(), report);  // every figure the summary reads
   } catch (const nlohmann::json::exception&) {
     return std::nullopt;

@@ -1,8 +1,6 @@
 #include "reports/output_digests.hpp"
 
-#include <fstream>
-#include <sstream>
-
+#include "common/input_file.hpp"
 #include "common/user_error.hpp"
 #include "reports/file_digest.hpp"
 #include "reports/run_outputs.hpp"
@@ -17,11 +15,11 @@ constexpr const char* kReportFile = "report.json";
 std::string report_text(const nlohmann::json& report) { return report.dump(2) + "\n"; }
 
 std::optional<std::string> read_bytes(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
+  try {
+    return read_input_text(file, file.string());
+  } catch (const UserError&) {
+    return std::nullopt;  // missing, unreadable or not a regular file: not proven
+  }
 }
 
 }  // namespace
