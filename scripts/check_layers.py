@@ -19,7 +19,7 @@ LAYERS = [
     ["mesh", "opencl", "tuning"],
     ["geodesics"],
     ["particles"],
-    ["backends", "quality"],
+    ["backends", "quality", "shape_model"],
     ["pipeline"],
     ["measurement"],
     ["reports"],

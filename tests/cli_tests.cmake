@@ -336,3 +336,7 @@ set_tests_properties(cli.address_space_opencl cli.address_space_serial cli.pocl_
 add_test(NAME cli.input_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/input_files.sh $<TARGET_FILE:meshparticles> ${TETRA}
                                       ${CMAKE_CURRENT_BINARY_DIR}/input_files)
 set_tests_properties(cli.input_files PROPERTIES LABELS "fast;device" TIMEOUT 120)
+# A shape model of corresponding particle files (docs/CORRESPONDENCE.md).
+add_test(NAME cli.shape_model COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/shape_model.sh $<TARGET_FILE:meshparticles>
+                                      ${CMAKE_CURRENT_BINARY_DIR}/shape_model)
+set_tests_properties(cli.shape_model PROPERTIES LABELS fast)

@@ -53,5 +53,6 @@ void add_sweep_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_quality_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
+void add_model_command(CLI::App& app);
 
 }  // namespace meshparticles

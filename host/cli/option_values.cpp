@@ -10,8 +10,8 @@ namespace meshparticles {
 namespace {
 
 // The options and positionals whose values are paths.
-const char* const kPathOptions[] = {"mesh",         "particles",  "inputs",  "--out", "--out-dir", "--csv",
-                                    "--json",       "--tuning-file", "--cache-dir", "--meshes-dir"};
+const char* const kPathOptions[] = {"mesh",   "particles",     "inputs",      "--out",       "--out-dir",
+                                    "--csv",  "--json",        "--tuning-file", "--cache-dir", "--meshes-dir"};
 
 bool is_path_option(const CLI::Option& option) {
   for (const char* name : kPathOptions) {

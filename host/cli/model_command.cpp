@@ -1,0 +1,96 @@
+// `meshparticles model PARTICLES... --out DIR`: a statistical shape model of
+// corresponding particle sets (row i the same point on every shape, as
+// ShapeWorks writes them): Procrustes alignment, the mean and the modes of
+// variation, and the measures shape-model papers report
+// (docs/CORRESPONDENCE.md).
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/number_options.hpp"
+#include "common/user_error.hpp"
+#include "particles/particle_file.hpp"
+#include "reports/shape_model_outputs.hpp"
+#include "shape_model/model_quality.hpp"
+#include "shape_model/procrustes.hpp"
+#include "shape_model/shape_modes.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+struct ModelOptions {
+  std::vector<std::string> particle_files;
+  std::string out = "model";
+  bool no_scale = false;
+  std::size_t samples = 1000;
+  std::uint64_t seed = 1;
+  bool quiet = false;
+};
+
+// The files as point sets, refused unless every one has the same points.
+std::vector<PointSet> read_shapes(const std::vector<std::string>& files) {
+  std::vector<PointSet> shapes;
+  for (const std::string& file : files) {
+    const std::vector<Vec3> points = read_particle_points(file);
+    PointSet shape(Eigen::Index(points.size()), 3);
+    for (std::size_t i = 0; i < points.size(); ++i) shape.row(Eigen::Index(i)) << points[i].x, points[i].y, points[i].z;
+    if (!shapes.empty() && shape.rows() != shapes.front().rows()) {
+      throw UserError(file + ": " + std::to_string(shape.rows()) + " points, but " + files.front() + " has " +
+                      std::to_string(shapes.front().rows()) + ": a shape model needs the same points on every shape");
+    }
+    if (shape.rows() < 2 || (shape.rowwise() - shape.colwise().mean()).norm() == 0) {
+      throw UserError(file + ": its points are all at one place: no shape to align");
+    }
+    shapes.push_back(std::move(shape));
+  }
+  return shapes;
+}
+
+void run_model(const ModelOptions& options) {
+  prepare_shape_model_directory(options.out, options.particle_files);  // before the work
+  const std::vector<PointSet> shapes = read_shapes(options.particle_files);
+  const ProcrustesAlignment alignment = align_procrustes(shapes, !options.no_scale);
+  const ShapeModes model = principal_modes(alignment.aligned);
+  const ModelQuality quality = measure_model(alignment.aligned, model, options.samples, options.seed, options.quiet);
+  ShapeModelOutputs outputs{options.particle_files, &alignment, &model, &quality,
+                            {{"scale", !options.no_scale}, {"samples", options.samples}, {"seed", options.seed}}};
+  write_shape_model(options.out, outputs);
+
+  std::printf("shapes      %zu, %lld points each\n", shapes.size(), static_cast<long long>(shapes.front().rows()));
+  std::printf("alignment   Procrustes%s, %zu rounds%s\n", options.no_scale ? " without scaling" : "",
+              alignment.iterations, alignment.converged ? "" : " (not converged)");
+  std::printf("modes       %lld; variance held by 1, 3, 5 modes:", static_cast<long long>(model.variances.size()));
+  for (const std::size_t m : {1, 3, 5}) {
+    if (m <= quality.compactness.size()) std::printf(" %.1f%%", 100 * quality.compactness[m - 1]);
+  }
+  std::printf("\n");
+  if (!quality.generalization.empty()) {
+    std::printf("measures    with 1 mode: generalization %.4g, specificity %.4g (mean point distances)\n",
+                quality.generalization.front().mean, quality.specificity.front().mean);
+  }
+  std::printf("output      %s/{mean.particles, modes.csv, modes.json, transforms.json, evaluation.csv, model.json, "
+              "NNN_NAME.aligned.particles}\n",
+              options.out.c_str());
+}
+
+}  // namespace
+
+void add_model_command(CLI::App& app) {
+  auto options = std::make_shared<ModelOptions>();
+  CLI::App* model = app.add_subcommand(
+      "model", "A shape model of corresponding particle files: alignment, mean, modes and their measures");
+  model->add_option("particles", options->particle_files,
+                    "Particle files, one per shape, row i the same point on every shape (.particles)")
+      ->required()
+      ->expected(2, -1);
+  model->add_option("--out", options->out, "Output directory")->capture_default_str();
+  model->add_flag("--no-scale", options->no_scale, "Align by rotation and translation only (default: also size)");
+  add_whole_number_option(*model, "--samples", options->samples, WholeRange{1, 1000000},
+                          "Shapes drawn from the model per number of modes, for specificity");
+  add_whole_number_option(*model, "--seed", options->seed, kSeedRange, "Seed of the specificity draws");
+  model->add_flag("-q,--quiet", options->quiet, "No progress line");
+  model->callback([options] { run_model(*options); });
+}
+
+}  // namespace meshparticles
