@@ -23,7 +23,7 @@ LAYERS = [
     ["pipeline"],
     ["measurement"],
     ["reports"],
-    ["batch"],
+    ["batch", "correspondence"],
     ["cli"],
 ]
 

@@ -25,9 +25,9 @@ set -e
 [ "$(grep -c '' <<<"$typo")" -eq 1 ] || fail "a misspelt command answered in more than one line: $typo"
 grep -q "unknown command 'rnu'; did you mean 'run'? (commands: info, " <<<"$typo" || fail "misspelt command: $typo"
 set +e
-far=$("$bin" corespond 2>&1 >/dev/null)
+far=$("$bin" frobnicate 2>&1 >/dev/null)
 set -e
-grep -q "unknown command 'corespond' (commands: " <<<"$far" || fail "a word far from every command: $far"
+grep -q "unknown command 'frobnicate' (commands: " <<<"$far" || fail "a word far from every command: $far"
 
 script=$("$bin" completion bash)
 bash -n <<<"$script" || fail "the completion script is not valid bash"

@@ -54,5 +54,6 @@ void add_bench_command(CLI::App& app);
 void add_quality_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_model_command(CLI::App& app);
+void add_correspond_command(CLI::App& app);
 
 }  // namespace meshparticles

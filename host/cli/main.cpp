@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   add_quality_command(app);
   add_compare_command(app);
   add_model_command(app);
+  add_correspond_command(app);
   add_completion_command(app);
   refuse_unusable_values(app);
   if (argc == 1) {

@@ -11,8 +11,8 @@ constexpr double kTolerance = 1e-12;
 
 Eigen::RowVector3d centroid(const PointSet& points) { return points.colwise().mean(); }
 
-// The rotation R minimising |points * R^T - target| (Kabsch): proper, so a
-// shape is never mirrored into its reflection.
+}  // namespace
+
 Eigen::Matrix3d best_rotation(const PointSet& points, const PointSet& target) {
   const Eigen::Matrix3d covariance = target.transpose() * points;
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -20,8 +20,6 @@ Eigen::Matrix3d best_rotation(const PointSet& points, const PointSet& target) {
   fix(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1.0 : 1.0;
   return svd.matrixU() * fix * svd.matrixV().transpose();
 }
-
-}  // namespace
 
 PointSet Similarity::apply(const PointSet& world) const {
   PointSet moved = (scale * (world * rotation.transpose())).eval();

@@ -30,6 +30,10 @@ struct ProcrustesAlignment {
   double mean_size = 0;
 };
 
+// The proper rotation R minimising |points * R^T - target| over centred
+// corresponding rows (Kabsch): never a reflection.
+Eigen::Matrix3d best_rotation(const PointSet& points, const PointSet& target);
+
 // Shapes of equal point counts, at least 2 points each and no shape with
 // all its points at one place (callers check: UserError is theirs to word).
 // The first shape fixes the frame's orientation; the result depends only on

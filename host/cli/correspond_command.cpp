@@ -1,0 +1,126 @@
+// `meshparticles correspond INPUTS... --out DIR -n N`: particles that
+// correspond across a population (correspondence/population_correspondence),
+// each shape's evenness, and the shape model of the result
+// (docs/CORRESPONDENCE.md).
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "batch/batch_inputs.hpp"
+#include "cli/commands.hpp"
+#include "cli/number_options.hpp"
+#include "common/user_error.hpp"
+#include "common/version.hpp"
+#include "correspondence/correspondence_outputs.hpp"
+#include "pipeline/mesh_input.hpp"
+#include "pipeline/point_sets.hpp"
+#include "reports/quality_report.hpp"
+#include "shape_model/model_quality.hpp"
+#include "shape_model/shape_modes.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+struct CorrespondOptions {
+  std::vector<std::string> inputs;
+  std::string out;
+  std::size_t particles = 256;
+  std::uint64_t seed = 1;
+  bool no_scale = false;
+  std::size_t samples = 1000;
+  bool quiet = false;
+};
+
+// The shape's particles measured as `quality` measures a file (their vertices, on its own surface).
+DistributionQuality evenness(const ShapeCorrespondence& shape, bool quiet) {
+  const SurfaceMesh mesh = load_mesh(shape.mesh, /*quiet=*/true, {});
+  PointSetsRequest request;
+  request.names = {shape.mesh.string()};
+  request.points.emplace_back();
+  for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
+    request.points.back().push_back({shape.particles(i, 0), shape.particles(i, 1), shape.particles(i, 2)});
+  }
+  request.geodesics.quiet = quiet;
+  request.geodesics.cache_directory.reset();
+  return measure_point_sets(mesh, request).sets.front().quality;
+}
+
+void run_correspond(const CorrespondOptions& options) {
+  std::vector<std::string> notes;
+  const std::vector<MeshInput> inputs = expand_batch_inputs(options.inputs, notes);
+  if (inputs.size() < 2) throw UserError("correspond needs at least 2 meshes, got " + std::to_string(inputs.size()));
+  if (!options.quiet) {
+    for (const std::string& note : notes) std::cerr << "meshparticles: " << note << "\n";
+  }
+  std::vector<std::string> names;
+  CorrespondRequest request;
+  for (const MeshInput& input : inputs) {
+    names.push_back(input.path.string());
+    request.meshes.push_back(input.path);
+  }
+  prepare_correspondence_directory(options.out, names);  // before the work
+  request.run.particles = options.particles;
+  request.run.seed = options.seed;
+  request.quiet = options.quiet;
+  const PopulationCorrespondence population = correspond_population(request);
+
+  std::vector<PointSet> shapes;
+  for (const ShapeCorrespondence& shape : population.shapes) shapes.push_back(shape.particles);
+  const ProcrustesAlignment alignment = align_procrustes(shapes, !options.no_scale);
+  const ShapeModes model = principal_modes(alignment.aligned);
+  const ModelQuality quality = measure_model(alignment.aligned, model, options.samples, options.seed, options.quiet);
+  const nlohmann::json params = {{"particles", options.particles}, {"seed", options.seed},
+                                 {"scale", !options.no_scale}, {"samples", options.samples}};
+  const ShapeModelOutputs outputs{names, &alignment, &model, &quality, params};
+
+  nlohmann::json shape_rows = nlohmann::json::array();
+  for (const ShapeCorrespondence& shape : population.shapes) {
+    shape_rows.push_back({{"mesh", shape.mesh.string()},
+                          {"vertices", shape.vertices},
+                          {"fit_rms", shape.alignment.rms},
+                          {"fit_iterations", shape.alignment.iterations},
+                          {"fit_from", shape.alignment.from_principal_axes ? "principal axes" : "pose as given"},
+                          {"shared_vertices", shape.shared},
+                          {"quality", quality_json(evenness(shape, options.quiet))}});
+  }
+  const nlohmann::json summary = {{"version", program_version()},
+                                  {"method", "template transfer"},
+                                  {"params", params},
+                                  {"template", {{"mesh", names.front()}, {"quality", quality_json(population.template_run.quality)}}},
+                                  {"shapes", shape_rows},
+                                  {"model", shape_model_summary(outputs)}};
+  write_correspondence(options.out, population, outputs, summary);
+
+  std::printf("shapes      %zu, %zu particles each, template %s\n", names.size(), options.particles,
+              names.front().c_str());
+  double worst_fit = 0;
+  for (const ShapeCorrespondence& shape : population.shapes) worst_fit = std::max(worst_fit, shape.alignment.rms);
+  std::printf("alignment   worst fit %.4f (rms distance at unit area)\n", worst_fit);
+  std::printf("model       %lld modes; variance held by 1, 3, 5 modes:", static_cast<long long>(model.variances.size()));
+  for (const std::size_t m : {1, 3, 5}) {
+    if (m <= quality.compactness.size()) std::printf(" %.1f%%", 100 * quality.compactness[m - 1]);
+  }
+  std::printf("\noutput      %s/{shapes/, model/, summary.json}\n", options.out.c_str());
+}
+
+}  // namespace
+
+void add_correspond_command(CLI::App& app) {
+  auto options = std::make_shared<CorrespondOptions>();
+  CLI::App* command = app.add_subcommand(
+      "correspond", "Particles at the same places on every shape of a population, and their shape model");
+  command->add_option("inputs", options->inputs, "Mesh files, folders of meshes, .txt files listing meshes; the first is the template")
+      ->required();
+  command->add_option("--out", options->out, "Output directory: shapes/, model/, summary.json")->required();
+  add_whole_number_option(*command, "-n,--particles", options->particles, kParticleRange,
+                          "Particles on every shape");
+  add_whole_number_option(*command, "--seed", options->seed, kSeedRange, "Seed of the template's start and the model's draws");
+  command->add_flag("--no-scale", options->no_scale, "Model: align by rotation and translation only");
+  add_whole_number_option(*command, "--samples", options->samples, WholeRange{1, 1000000},
+                          "Model: shapes drawn per number of modes, for specificity");
+  command->add_flag("-q,--quiet", options->quiet, "No progress lines");
+  command->callback([options] { run_correspond(*options); });
+}
+
+}  // namespace meshparticles

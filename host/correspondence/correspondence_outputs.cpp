@@ -1,0 +1,79 @@
+#include "correspondence/correspondence_outputs.hpp"
+
+#include <cstdio>
+#include <set>
+
+#include "common/atomic_directory.hpp"
+#include "common/atomic_file.hpp"
+#include "common/user_error.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+std::vector<std::string> shape_stems(const std::vector<std::string>& shapes) {
+  std::vector<std::string> stems;
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    char index[24];
+    std::snprintf(index, sizeof index, "%03zu_", s);
+    stems.push_back(index + std::filesystem::path(shapes[s]).stem().string());
+  }
+  return stems;
+}
+
+std::set<std::string> shape_files(const std::vector<std::string>& shapes) {
+  std::set<std::string> names;
+  for (const std::string& stem : shape_stems(shapes)) {
+    names.insert(stem + ".particles");
+    names.insert(stem + ".csv");
+  }
+  return names;
+}
+
+}  // namespace
+
+void prepare_correspondence_directory(const std::filesystem::path& directory, const std::vector<std::string>& shapes) {
+  std::error_code error;
+  if (std::filesystem::exists(directory, error)) {
+    for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+      const std::string name = entry.path().filename().string();
+      if (name != "shapes" && name != "model" && name != "summary.json") {
+        throw UserError("output directory " + directory.string() + " holds " + name +
+                        ", which is not an output of correspond: give a directory of its own");
+      }
+    }
+  }
+  check_replaceable_directory(directory / "shapes", shape_files(shapes));
+  prepare_shape_model_directory(directory / "model", shapes);
+}
+
+void write_correspondence(const std::filesystem::path& directory, const PopulationCorrespondence& population,
+                          const ShapeModelOutputs& model, nlohmann::json summary) {
+  const std::vector<std::string> stems = shape_stems(model.shapes);
+  write_directory_atomically(directory / "shapes", shape_files(model.shapes), [&](const std::filesystem::path& staging) {
+    for (std::size_t s = 0; s < population.shapes.size(); ++s) {
+      const ShapeCorrespondence& shape = population.shapes[s];
+      char line[160];
+      write_new_file(staging / (stems[s] + ".particles"), [&](std::ostream& out) {
+        for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
+          std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", shape.particles(i, 0), shape.particles(i, 1),
+                        shape.particles(i, 2));
+          out << line;
+        }
+      });
+      write_new_file(staging / (stems[s] + ".csv"), [&](std::ostream& out) {
+        out << "particle,vertex,x,y,z\n";
+        for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
+          std::snprintf(line, sizeof line, "%lld,%u,%.9g,%.9g,%.9g\n", static_cast<long long>(i),
+                        unsigned(shape.particle_vertices[std::size_t(i)]), shape.particles(i, 0),
+                        shape.particles(i, 1), shape.particles(i, 2));
+          out << line;
+        }
+      });
+    }
+  });
+  write_shape_model(directory / "model", model);
+  write_file_atomically(directory / "summary.json", [&](std::ostream& out) { out << summary.dump(2) << "\n"; });
+}
+
+}  // namespace meshparticles

@@ -1,0 +1,28 @@
+#pragma once
+// What `meshparticles correspond` writes in its --out folder:
+//   shapes/NNN_NAME.particles  particle i of every shape on row i (world)
+//   shapes/NNN_NAME.csv        particle, vertex (its id in the file), x, y, z
+//   model/                     the shape model of those particles
+//                              (reports/shape_model_outputs: aligned shapes,
+//                              mean, modes, transforms, measures)
+//   summary.json               the template's run, each shape's fit and the
+//                              model's measures
+// Each of the three is replaced as a whole (shapes/ and model/ as folders,
+// summary.json as a file, last).
+#include <filesystem>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "correspondence/population_correspondence.hpp"
+#include "reports/shape_model_outputs.hpp"
+
+namespace meshparticles {
+
+// Throws UserError before any work when the folder cannot take the outputs.
+void prepare_correspondence_directory(const std::filesystem::path& directory, const std::vector<std::string>& shapes);
+
+void write_correspondence(const std::filesystem::path& directory, const PopulationCorrespondence& population,
+                          const ShapeModelOutputs& model, nlohmann::json summary);
+
+}  // namespace meshparticles

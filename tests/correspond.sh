@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# correspond.sh MESHPARTICLES MESH WORKDIR: `meshparticles correspond` on a
+# population whose answer is exact: MESH itself and two copies of it moved,
+# turned and scaled at random (one also with its vertices renumbered). Each
+# copy must be aligned back (fit near 0) and every particle must land on the
+# very vertex (by id, through the renumbering) it has on MESH; every output
+# must be there, and a single mesh must be refused in one line.
+set -euo pipefail
+bin=$1 mesh=$2 work=$3
+fail() { echo "FAIL: $*"; exit 1; }
+rm -rf "$work" && mkdir -p "$work"
+/usr/bin/python3 - "$mesh" "$work" <<'PY'
+import sys
+import numpy as np
+mesh, work = sys.argv[1], sys.argv[2]
+words = open(mesh).read().split()
+n, f = int(words[1]), int(words[2])
+vertices = np.array(words[4:4 + 3 * n], float).reshape(n, 3)
+faces = np.array(words[4 + 3 * n:4 + 3 * n + 4 * f], int).reshape(f, 4)[:, 1:]
+rng = np.random.default_rng(11)
+for name, renumber in (("moved", False), ("renumbered", True)):
+    q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+    if np.linalg.det(q) < 0:
+        q[:, 0] *= -1
+    moved = rng.uniform(0.3, 4) * vertices @ q.T + rng.uniform(-100, 100, 3)
+    order = rng.permutation(n) if renumber else np.arange(n)  # new vertex k is old vertex order[k]
+    new_of_old = np.empty(n, int)
+    new_of_old[order] = np.arange(n)
+    with open(f"{work}/{name}.off", "w") as out:
+        out.write(f"OFF\n{n} {f} 0\n")
+        out.writelines("%.17g %.17g %.17g\n" % tuple(p) for p in moved[order])
+        out.writelines("3 %d %d %d\n" % tuple(new_of_old[t]) for t in faces)
+    np.savetxt(f"{work}/{name}.ids", order, fmt="%d")
+PY
+"$bin" correspond "$mesh" "$work/moved.off" "$work/renumbered.off" -n 64 --samples 20 -q --out "$work/out" >"$work/stdout"
+for file in summary.json shapes/000_$(basename "${mesh%.*}").csv shapes/001_moved.particles shapes/002_renumbered.csv \
+            model/model.json model/transforms.json; do
+  [ -s "$work/out/$file" ] || fail "no $file"
+done
+/usr/bin/python3 - "$work" "$(basename "${mesh%.*}")" <<'PY' || exit 1
+import csv, json, sys
+import numpy as np
+work, stem = sys.argv[1], sys.argv[2]
+def ids(name):
+    return np.array([int(row["vertex"]) for row in csv.DictReader(open(f"{work}/out/shapes/{name}.csv"))])
+template = ids(f"000_{stem}")
+moved = ids("001_moved")
+renumbered = np.loadtxt(f"{work}/renumbered.ids", dtype=int)[ids("002_renumbered")]  # back to the original ids
+assert (moved == template).all(), f"moved: {np.count_nonzero(moved != template)} of {len(template)} elsewhere"
+assert (renumbered == template).all(), f"renumbered: {np.count_nonzero(renumbered != template)} elsewhere"
+summary = json.load(open(f"{work}/out/summary.json"))
+fits = [shape["fit_rms"] for shape in summary["shapes"]]
+assert max(fits) < 1e-6, fits
+print("every particle on its own vertex on both copies; fits", fits)
+PY
+set +e
+errors=$("$bin" correspond "$mesh" --out "$work/one" -n 8 2>&1 >/dev/null)
+code=$?
+set -e
+[ "$code" -eq 2 ] && [ "$(grep -c '' <<<"$errors")" -eq 1 ] || fail "one mesh: exit $code: $errors"
+grep -q "correspond needs at least 2 meshes, got 1" <<<"$errors" || fail "$errors"
+echo "ok"
