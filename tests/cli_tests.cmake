@@ -324,7 +324,7 @@ expect_exit(control_characters_escaped 2 "error: bad\\\\nname\\.off: no such fil
 # fail without naming it; a low address-space limit made it hang.
 expect_exit_of(pocl_cache_empty 3 "error: \\$POCL_CACHE_DIR is set but empty" env POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_pocl)
 expect_exit_of(pocl_cache_file 3 "error: \\$POCL_CACHE_DIR='${SPHERE}' is not a directory" env POCL_CACHE_DIR=${SPHERE} $<TARGET_FILE:meshparticles> devices)
-expect_exit_of(pocl_cache_default_backend 0 "particles: [0-9]+ done" env POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --out ${RUN_OUT}_pocl_default)
+expect_exit_of(pocl_cache_default_backend 0 "particles: [0-9]+ done" env -u MESHPARTICLES_DEVICE POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --out ${RUN_OUT}_pocl_default)
 expect_exit_of(address_space_opencl 3 "error: the process's address-space or data limit \\(ulimit -v / -d: 524288 KiB\\) is under the 1024 MiB an OpenCL runtime needs.*--backend serial-field"
                bash -c "ulimit -v 524288 && exec \"$0\" run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_ulimit" $<TARGET_FILE:meshparticles>)
 expect_exit_of(address_space_serial 0 "particles: [0-9]+ done"

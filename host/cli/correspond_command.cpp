@@ -32,7 +32,8 @@ struct CorrespondOptions {
   bool quiet = false;
 };
 
-// The shape's particles measured as `quality` measures a file (their vertices, on its own surface).
+// The shape's particles measured as `quality` measures a file, on its own
+// surface (refined until they lie on vertices).
 DistributionQuality evenness(const ShapeCorrespondence& shape, bool quiet) {
   const SurfaceMesh mesh = load_mesh(shape.mesh, /*quiet=*/true, {});
   PointSetsRequest request;
@@ -81,7 +82,6 @@ void run_correspond(const CorrespondOptions& options) {
                           {"fit_rms", shape.alignment.rms},
                           {"fit_iterations", shape.alignment.iterations},
                           {"fit_from", shape.alignment.from_principal_axes ? "principal axes" : "pose as given"},
-                          {"shared_vertices", shape.shared},
                           {"quality", quality_json(evenness(shape, options.quiet))}});
   }
   const nlohmann::json summary = {{"version", program_version()},

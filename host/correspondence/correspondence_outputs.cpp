@@ -53,7 +53,7 @@ void write_correspondence(const std::filesystem::path& directory, const Populati
   write_directory_atomically(directory / "shapes", shape_files(model.shapes), [&](const std::filesystem::path& staging) {
     for (std::size_t s = 0; s < population.shapes.size(); ++s) {
       const ShapeCorrespondence& shape = population.shapes[s];
-      char line[160];
+      char line[320];
       write_new_file(staging / (stems[s] + ".particles"), [&](std::ostream& out) {
         for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
           std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", shape.particles(i, 0), shape.particles(i, 1),
@@ -62,11 +62,13 @@ void write_correspondence(const std::filesystem::path& directory, const Populati
         }
       });
       write_new_file(staging / (stems[s] + ".csv"), [&](std::ostream& out) {
-        out << "particle,vertex,x,y,z\n";
+        out << "particle,vertex,x,y,z,corner_a,corner_b,corner_c,weight_a,weight_b,weight_c\n";
         for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
-          std::snprintf(line, sizeof line, "%lld,%u,%.9g,%.9g,%.9g\n", static_cast<long long>(i),
-                        unsigned(shape.particle_vertices[std::size_t(i)]), shape.particles(i, 0),
-                        shape.particles(i, 1), shape.particles(i, 2));
+          const SurfaceLocation& at = shape.locations[std::size_t(i)];
+          std::snprintf(line, sizeof line, "%lld,%u,%.9g,%.9g,%.9g,%u,%u,%u,%.17g,%.17g,%.17g\n",
+                        static_cast<long long>(i), unsigned(at.vertex), shape.particles(i, 0), shape.particles(i, 1),
+                        shape.particles(i, 2), unsigned(at.corners[0]), unsigned(at.corners[1]),
+                        unsigned(at.corners[2]), at.weights[0], at.weights[1], at.weights[2]);
           out << line;
         }
       });

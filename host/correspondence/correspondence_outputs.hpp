@@ -1,7 +1,9 @@
 #pragma once
 // What `meshparticles correspond` writes in its --out folder:
 //   shapes/NNN_NAME.particles  particle i of every shape on row i (world)
-//   shapes/NNN_NAME.csv        particle, vertex (its id in the file), x, y, z
+//   shapes/NNN_NAME.csv        particle, vertex (the nearest corner's id in the
+//                              file), x, y, z, and the triangle and weights, as
+//                              run's particles.csv
 //   model/                     the shape model of those particles
 //                              (reports/shape_model_outputs: aligned shapes,
 //                              mean, modes, transforms, measures)

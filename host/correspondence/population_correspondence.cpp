@@ -1,9 +1,8 @@
 #include "correspondence/population_correspondence.hpp"
 
-#include <algorithm>
-
 #include "common/progress.hpp"
 #include "common/user_error.hpp"
+#include "correspondence/closest_surface_point.hpp"
 #include "correspondence/point_tree.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "reports/particle_locations.hpp"
@@ -11,9 +10,6 @@
 namespace meshparticles {
 
 namespace {
-
-// Nearest vertices looked at for a free one before sharing.
-constexpr std::size_t kFreeVertexSearch = 32;
 
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const PointSet& template_points,
                              const Similarity& template_frame, const PointSet& template_particles) {
@@ -24,16 +20,22 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   const PointSet world = vertex_points(mesh);
   const PointSet common = shape.alignment.to_common.apply(world);
   const PointTree tree(common);
-  std::vector<bool> taken(mesh.vertex_count(), false);
+  const VertexTriangles around = vertex_triangles(mesh.triangles(), mesh.vertex_count());
   shape.particles.resize(template_particles.rows(), 3);
   for (Eigen::Index i = 0; i < template_particles.rows(); ++i) {
-    const std::vector<Eigen::Index> near = tree.nearest(template_particles.row(i), kFreeVertexSearch);
-    const auto free = std::find_if(near.begin(), near.end(), [&](Eigen::Index v) { return !taken[std::size_t(v)]; });
-    const Eigen::Index chosen = free != near.end() ? *free : near.front();
-    if (free == near.end()) ++shape.shared;
-    taken[std::size_t(chosen)] = true;
-    shape.particle_vertices.push_back(mesh.input_id(VertexId(chosen)));
-    shape.particles.row(i) = world.row(chosen);
+    const SurfaceHit hit = closest_surface_point(mesh, around, common, tree, template_particles.row(i));
+    SurfaceLocation location;
+    std::size_t heaviest = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      location.corners[k] = mesh.input_id(hit.corners[k]);
+      location.weights[k] = hit.weights[k];
+      if (hit.weights[k] > hit.weights[heaviest]) heaviest = k;
+    }
+    location.vertex = location.corners[heaviest];
+    shape.locations.push_back(location);
+    // The same weights of the corners in the shape's own coordinates.
+    shape.particles.row(i) = hit.weights[0] * world.row(hit.corners[0]) + hit.weights[1] * world.row(hit.corners[1]) +
+                             hit.weights[2] * world.row(hit.corners[2]);
   }
   return shape;
 }

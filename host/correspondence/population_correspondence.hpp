@@ -2,11 +2,12 @@
 // Particles that correspond across a population (issue 31, first part):
 // the template (the first shape) is sampled by the default run (spread);
 // every shape is brought into the template's frame (mesh_alignment); each
-// template particle then goes to the nearest vertex of each shape not yet
-// taken (particle order decides), so particle i sits at the same place,
-// up to how well the shapes fit, on every shape. The joint optimisation
+// template particle then goes to the nearest point of each shape's surface,
+// so particle i sits at the same place, up to how well the shapes fit, on
+// every shape. The joint optimisation
 // that would also keep each shape evenly spread (ShapeWorks' entropy
 // system) is not done yet: docs/CORRESPONDENCE.md.
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -23,13 +24,20 @@ struct CorrespondRequest {
   bool quiet = false;
 };
 
+// A point of a shape's surface: a triangle (corner ids as in the file) and
+// barycentric weights, and the corner with the largest weight.
+struct SurfaceLocation {
+  std::array<VertexId, 3> corners{};
+  std::array<double, 3> weights{};
+  VertexId vertex = 0;
+};
+
 struct ShapeCorrespondence {
   std::filesystem::path mesh;
   std::size_t vertices = 0;
   MeshAlignment alignment;
-  std::vector<VertexId> particle_vertices;  // per particle: a vertex of this shape, its id in the file
-  PointSet particles;                       // their positions, the shape's own coordinates
-  std::size_t shared = 0;                   // particles that found no free vertex near and share one
+  std::vector<SurfaceLocation> locations;  // per particle: where it lies on this shape
+  PointSet particles;                      // their positions, the shape's own coordinates
 };
 
 struct PopulationCorrespondence {

@@ -1,0 +1,27 @@
+#pragma once
+// The point of a mesh's surface nearest to a point in space: a triangle and
+// barycentric weights, found among the triangles around the query's nearest
+// vertices (on a mesh of well-shaped triangles the nearest point lies in
+// one of them).
+#include <array>
+
+#include "correspondence/point_tree.hpp"
+#include "mesh/surface_mesh.hpp"
+#include "mesh/vertex_triangles.hpp"
+
+namespace meshparticles {
+
+struct SurfaceHit {
+  Triangle corners{};                 // surface vertex ids
+  std::array<double, 3> weights{};    // non-negative, summing to 1
+  Eigen::RowVector3d at;              // in the coordinates of `points`
+  double distance = 0;
+};
+
+// The nearest point to `query` on the triangles around its `candidates`
+// nearest vertices; `points` are the mesh's vertices in the query's frame
+// and `tree` their k-d tree. Ties: the first triangle met.
+SurfaceHit closest_surface_point(const SurfaceMesh& mesh, const VertexTriangles& around, const PointSet& points,
+                                 const PointTree& tree, const Eigen::RowVector3d& query, std::size_t candidates = 8);
+
+}  // namespace meshparticles
