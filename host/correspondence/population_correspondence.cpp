@@ -1,7 +1,6 @@
 #include "correspondence/population_correspondence.hpp"
 
 #include "common/progress.hpp"
-#include "common/user_error.hpp"
 #include "correspondence/closest_surface_point.hpp"
 #include "correspondence/point_tree.hpp"
 #include "pipeline/mesh_input.hpp"
@@ -64,10 +63,6 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request)
   ProgressLine progress("correspond", request.meshes.size(), request.quiet);
   for (std::size_t s = 0; s < request.meshes.size(); ++s) {
     const SurfaceMesh mesh = s == 0 ? template_mesh : load_mesh(request.meshes[s], request.quiet, {});
-    if (mesh.vertex_count() < std::size_t(template_particles.rows())) {
-      throw UserError(request.meshes[s].string() + ": " + std::to_string(mesh.vertex_count()) +
-                      " vertices, fewer than the " + std::to_string(template_particles.rows()) + " particles");
-    }
     population.shapes.push_back(transfer(request.meshes[s], mesh, template_points, template_frame, template_particles));
     progress.update(s + 1);
   }

@@ -45,8 +45,8 @@ struct PopulationCorrespondence {
   std::vector<ShapeCorrespondence> shapes;
 };
 
-// Throws UserError for a mesh that cannot be read (naming it) and for -n
-// above the vertices of any shape.
+// Throws UserError for a mesh that cannot be read (naming it), and for -n
+// above the template's vertices.
 PopulationCorrespondence correspond_population(const CorrespondRequest& request);
 
 }  // namespace meshparticles
