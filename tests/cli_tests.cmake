@@ -332,6 +332,10 @@ expect_exit_of(address_space_serial 0 "particles: [0-9]+ done"
 expect_exit_shell(address_space_dense_table 2 "error: [^ ]*sphere\\.off: the 4000 x 4000 distance table needs 0\\.06 GiB but the room under the address-space limit \\(ulimit -v 65536 KiB\\) holds 0\\.[0-9]+ GiB.*--distances local"
                   "ulimit -v 65536 && exec \"$0\" run ${SPHERE} --method paper --backend serial --distances dense --no-cache --out ${RUN_OUT}_ulimit_dense")
 set_tests_properties(cli.address_space_opencl cli.address_space_serial cli.pocl_cache_empty PROPERTIES TIMEOUT 60)
+# Under `ulimit -v` a sanitizer build cannot start (its shadow needs terabytes
+# of address space): label `rlimit`, which scripts/sanitize.sh leaves out.
+set_tests_properties(cli.address_space_opencl cli.address_space_serial cli.address_space_dense_table
+                     PROPERTIES LABELS "fast;device;rlimit")
 # Files that are not regular files (FIFOs) refused at once by every reader.
 add_test(NAME cli.input_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/input_files.sh $<TARGET_FILE:meshparticles> ${TETRA}
                                       ${CMAKE_CURRENT_BINARY_DIR}/input_files)
