@@ -12,11 +12,7 @@
 #include "common/user_error.hpp"
 #include "common/version.hpp"
 #include "correspondence/correspondence_outputs.hpp"
-#include "pipeline/mesh_input.hpp"
-#include "pipeline/point_sets.hpp"
 #include "reports/quality_report.hpp"
-#include "shape_model/model_quality.hpp"
-#include "shape_model/shape_modes.hpp"
 
 namespace meshparticles {
 
@@ -31,21 +27,6 @@ struct CorrespondOptions {
   std::size_t samples = 1000;
   bool quiet = false;
 };
-
-// The shape's particles measured as `quality` measures a file, on its own
-// surface (refined until they lie on vertices).
-DistributionQuality evenness(const ShapeCorrespondence& shape, bool quiet) {
-  const SurfaceMesh mesh = load_mesh(shape.mesh, /*quiet=*/true, {});
-  PointSetsRequest request;
-  request.names = {shape.mesh.string()};
-  request.points.emplace_back();
-  for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
-    request.points.back().push_back({shape.particles(i, 0), shape.particles(i, 1), shape.particles(i, 2)});
-  }
-  request.geodesics.quiet = quiet;
-  request.geodesics.cache_directory.reset();
-  return measure_point_sets(mesh, request).sets.front().quality;
-}
 
 void run_correspond(const CorrespondOptions& options) {
   std::vector<std::string> notes;
@@ -68,12 +49,10 @@ void run_correspond(const CorrespondOptions& options) {
 
   std::vector<PointSet> shapes;
   for (const ShapeCorrespondence& shape : population.shapes) shapes.push_back(shape.particles);
-  const ProcrustesAlignment alignment = align_procrustes(shapes, !options.no_scale);
-  const ShapeModes model = principal_modes(alignment.aligned);
-  const ModelQuality quality = measure_model(alignment.aligned, model, options.samples, options.seed, options.quiet);
+  const ShapeModel model = build_shape_model(shapes, !options.no_scale, options.samples, options.seed, options.quiet);
   const nlohmann::json params = {{"particles", options.particles}, {"seed", options.seed},
                                  {"scale", !options.no_scale}, {"samples", options.samples}};
-  const ShapeModelOutputs outputs{names, &alignment, &model, &quality, params};
+  const ShapeModelOutputs outputs{names, &model, params};
 
   nlohmann::json shape_rows = nlohmann::json::array();
   for (const ShapeCorrespondence& shape : population.shapes) {
@@ -82,7 +61,7 @@ void run_correspond(const CorrespondOptions& options) {
                           {"fit_rms", shape.alignment.rms},
                           {"fit_iterations", shape.alignment.iterations},
                           {"fit_from", shape.alignment.from_principal_axes ? "principal axes" : "pose as given"},
-                          {"quality", quality_json(evenness(shape, options.quiet))}});
+                          {"quality", quality_json(shape.quality)}});
   }
   const nlohmann::json summary = {{"version", program_version()},
                                   {"method", "template transfer"},
@@ -97,9 +76,10 @@ void run_correspond(const CorrespondOptions& options) {
   double worst_fit = 0;
   for (const ShapeCorrespondence& shape : population.shapes) worst_fit = std::max(worst_fit, shape.alignment.rms);
   std::printf("alignment   worst fit %.4f (rms distance at unit area)\n", worst_fit);
-  std::printf("model       %lld modes; variance held by 1, 3, 5 modes:", static_cast<long long>(model.variances.size()));
+  std::printf("model       %lld modes; variance held by 1, 3, 5 modes:",
+              static_cast<long long>(model.modes.variances.size()));
   for (const std::size_t m : {1, 3, 5}) {
-    if (m <= quality.compactness.size()) std::printf(" %.1f%%", 100 * quality.compactness[m - 1]);
+    if (m <= model.quality.compactness.size()) std::printf(" %.1f%%", 100 * model.quality.compactness[m - 1]);
   }
   std::printf("\noutput      %s/{shapes/, model/, summary.json}\n", options.out.c_str());
 }

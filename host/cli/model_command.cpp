@@ -11,9 +11,6 @@
 #include "common/user_error.hpp"
 #include "particles/particle_file.hpp"
 #include "reports/shape_model_outputs.hpp"
-#include "shape_model/model_quality.hpp"
-#include "shape_model/procrustes.hpp"
-#include "shape_model/shape_modes.hpp"
 
 namespace meshparticles {
 
@@ -50,17 +47,17 @@ std::vector<PointSet> read_shapes(const std::vector<std::string>& files) {
 void run_model(const ModelOptions& options) {
   prepare_shape_model_directory(options.out, options.particle_files);  // before the work
   const std::vector<PointSet> shapes = read_shapes(options.particle_files);
-  const ProcrustesAlignment alignment = align_procrustes(shapes, !options.no_scale);
-  const ShapeModes model = principal_modes(alignment.aligned);
-  const ModelQuality quality = measure_model(alignment.aligned, model, options.samples, options.seed, options.quiet);
-  ShapeModelOutputs outputs{options.particle_files, &alignment, &model, &quality,
-                            {{"scale", !options.no_scale}, {"samples", options.samples}, {"seed", options.seed}}};
+  const ShapeModel model = build_shape_model(shapes, !options.no_scale, options.samples, options.seed, options.quiet);
+  const ShapeModelOutputs outputs{options.particle_files, &model,
+                                  {{"scale", !options.no_scale}, {"samples", options.samples}, {"seed", options.seed}}};
   write_shape_model(options.out, outputs);
+  const ProcrustesAlignment& alignment = model.alignment;
+  const ModelQuality& quality = model.quality;
 
   std::printf("shapes      %zu, %lld points each\n", shapes.size(), static_cast<long long>(shapes.front().rows()));
   std::printf("alignment   Procrustes%s, %zu rounds%s\n", options.no_scale ? " without scaling" : "",
               alignment.iterations, alignment.converged ? "" : " (not converged)");
-  std::printf("modes       %lld; variance held by 1, 3, 5 modes:", static_cast<long long>(model.variances.size()));
+  std::printf("modes       %lld; variance held by 1, 3, 5 modes:", static_cast<long long>(model.modes.variances.size()));
   for (const std::size_t m : {1, 3, 5}) {
     if (m <= quality.compactness.size()) std::printf(" %.1f%%", 100 * quality.compactness[m - 1]);
   }

@@ -11,19 +11,9 @@ namespace meshparticles {
 
 namespace {
 
-std::vector<std::string> shape_stems(const std::vector<std::string>& shapes) {
-  std::vector<std::string> stems;
-  for (std::size_t s = 0; s < shapes.size(); ++s) {
-    char index[24];
-    std::snprintf(index, sizeof index, "%03zu_", s);
-    stems.push_back(index + std::filesystem::path(shapes[s]).stem().string());
-  }
-  return stems;
-}
-
 std::set<std::string> shape_files(const std::vector<std::string>& shapes) {
   std::set<std::string> names;
-  for (const std::string& stem : shape_stems(shapes)) {
+  for (const std::string& stem : indexed_stems(shapes)) {
     names.insert(stem + ".particles");
     names.insert(stem + ".csv");
   }
@@ -49,7 +39,7 @@ void prepare_correspondence_directory(const std::filesystem::path& directory, co
 
 void write_correspondence(const std::filesystem::path& directory, const PopulationCorrespondence& population,
                           const ShapeModelOutputs& model, nlohmann::json summary) {
-  const std::vector<std::string> stems = shape_stems(model.shapes);
+  const std::vector<std::string> stems = indexed_stems(model.shapes);
   write_directory_atomically(directory / "shapes", shape_files(model.shapes), [&](const std::filesystem::path& staging) {
     for (std::size_t s = 0; s < population.shapes.size(); ++s) {
       const ShapeCorrespondence& shape = population.shapes[s];

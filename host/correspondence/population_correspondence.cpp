@@ -4,14 +4,30 @@
 #include "correspondence/closest_surface_point.hpp"
 #include "correspondence/point_tree.hpp"
 #include "pipeline/mesh_input.hpp"
+#include "pipeline/point_sets.hpp"
 #include "reports/particle_locations.hpp"
 
 namespace meshparticles {
 
 namespace {
 
+// The particles measured as `quality` measures a file, on the shape's own
+// surface (refined until they lie on vertices), while its mesh is loaded.
+DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMesh& mesh, const PointSet& particles,
+                             bool quiet) {
+  PointSetsRequest request;
+  request.names = {file.string()};
+  request.points.emplace_back();
+  for (Eigen::Index i = 0; i < particles.rows(); ++i) {
+    request.points.back().push_back({particles(i, 0), particles(i, 1), particles(i, 2)});
+  }
+  request.geodesics.quiet = quiet;
+  request.geodesics.cache_directory.reset();
+  return measure_point_sets(mesh, request).sets.front().quality;
+}
+
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const PointSet& template_points,
-                             const Similarity& template_frame, const PointSet& template_particles) {
+                             const Similarity& template_frame, const PointSet& template_particles, bool quiet) {
   ShapeCorrespondence shape;
   shape.mesh = file;
   shape.vertices = mesh.vertex_count();
@@ -36,6 +52,7 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
     shape.particles.row(i) = hit.weights[0] * world.row(hit.corners[0]) + hit.weights[1] * world.row(hit.corners[1]) +
                              hit.weights[2] * world.row(hit.corners[2]);
   }
+  shape.quality = evenness(file, mesh, shape.particles, quiet);
   return shape;
 }
 
@@ -63,7 +80,7 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request)
   ProgressLine progress("correspond", request.meshes.size(), request.quiet);
   for (std::size_t s = 0; s < request.meshes.size(); ++s) {
     const SurfaceMesh mesh = s == 0 ? template_mesh : load_mesh(request.meshes[s], request.quiet, {});
-    population.shapes.push_back(transfer(request.meshes[s], mesh, template_points, template_frame, template_particles));
+    population.shapes.push_back(transfer(request.meshes[s], mesh, template_points, template_frame, template_particles, request.quiet));
     progress.update(s + 1);
   }
   progress.finish();

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "correspondence/mesh_alignment.hpp"
+#include "quality/distribution_quality.hpp"
 #include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles {
@@ -38,6 +39,7 @@ struct ShapeCorrespondence {
   MeshAlignment alignment;
   std::vector<SurfaceLocation> locations;  // per particle: where it lies on this shape
   PointSet particles;                      // their positions, the shape's own coordinates
+  DistributionQuality quality;             // how evenly they cover the shape, as `quality` measures a file
 };
 
 struct PopulationCorrespondence {

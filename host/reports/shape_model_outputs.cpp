@@ -15,6 +15,12 @@ namespace {
 const char* const kFixedFiles[] = {"mean.particles", "modes.csv", "modes.json", "transforms.json",
                                    "evaluation.csv", "model.json"};
 
+std::vector<std::string> aligned_file_names(const std::vector<std::string>& shapes) {
+  std::vector<std::string> names = indexed_stems(shapes);
+  for (std::string& name : names) name += ".aligned.particles";
+  return names;
+}
+
 std::set<std::string> all_file_names(const std::vector<std::string>& shapes) {
   std::set<std::string> names(std::begin(kFixedFiles), std::end(kFixedFiles));
   for (const std::string& name : aligned_file_names(shapes)) names.insert(name);
@@ -46,14 +52,14 @@ nlohmann::json measures_json(const std::vector<ModelMeasure>& measures) {
 
 }  // namespace
 
-std::vector<std::string> aligned_file_names(const std::vector<std::string>& shapes) {
-  std::vector<std::string> names;
+std::vector<std::string> indexed_stems(const std::vector<std::string>& shapes) {
+  std::vector<std::string> stems;
   for (std::size_t s = 0; s < shapes.size(); ++s) {
     char index[24];
     std::snprintf(index, sizeof index, "%03zu_", s);
-    names.push_back(index + std::filesystem::path(shapes[s]).stem().string() + ".aligned.particles");
+    stems.push_back(index + std::filesystem::path(shapes[s]).stem().string());
   }
-  return names;
+  return stems;
 }
 
 void prepare_shape_model_directory(const std::filesystem::path& directory, const std::vector<std::string>& shapes) {
@@ -61,8 +67,8 @@ void prepare_shape_model_directory(const std::filesystem::path& directory, const
 }
 
 nlohmann::json shape_model_summary(const ShapeModelOutputs& outputs) {
-  const ProcrustesAlignment& alignment = *outputs.alignment;
-  const ShapeModes& model = *outputs.model;
+  const ProcrustesAlignment& alignment = outputs.model->alignment;
+  const ShapeModes& model = outputs.model->modes;
   nlohmann::json variances = nlohmann::json::array();
   for (Eigen::Index k = 0; k < model.variances.size(); ++k) variances.push_back(model.variances(k));
   return {{"version", program_version()},
@@ -73,16 +79,16 @@ nlohmann::json shape_model_summary(const ShapeModelOutputs& outputs) {
            {{"iterations", alignment.iterations}, {"converged", alignment.converged}, {"mean_size", alignment.mean_size}}},
           {"variances", variances},
           {"total_variance", model.total_variance()},
-          {"compactness", outputs.quality->compactness},
-          {"generalization", measures_json(outputs.quality->generalization)},
-          {"specificity", measures_json(outputs.quality->specificity)},
-          {"specificity_samples", outputs.quality->samples}};
+          {"compactness", outputs.model->quality.compactness},
+          {"generalization", measures_json(outputs.model->quality.generalization)},
+          {"specificity", measures_json(outputs.model->quality.specificity)},
+          {"specificity_samples", outputs.model->quality.samples}};
 }
 
 void write_shape_model(const std::filesystem::path& directory, const ShapeModelOutputs& outputs) {
-  const ProcrustesAlignment& alignment = *outputs.alignment;
-  const ShapeModes& model = *outputs.model;
-  const ModelQuality& quality = *outputs.quality;
+  const ProcrustesAlignment& alignment = outputs.model->alignment;
+  const ShapeModes& model = outputs.model->modes;
+  const ModelQuality& quality = outputs.model->quality;
   const std::vector<std::string> aligned_names = aligned_file_names(outputs.shapes);
   write_directory_atomically(directory, all_file_names(outputs.shapes), [&](const std::filesystem::path& staging) {
     for (std::size_t s = 0; s < aligned_names.size(); ++s) {

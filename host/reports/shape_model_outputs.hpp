@@ -9,22 +9,19 @@
 
 #include <nlohmann/json.hpp>
 
-#include "shape_model/model_quality.hpp"
-#include "shape_model/procrustes.hpp"
+#include "shape_model/shape_model.hpp"
 
 namespace meshparticles {
 
 struct ShapeModelOutputs {
   std::vector<std::string> shapes;  // the input files, as given
-  const ProcrustesAlignment* alignment = nullptr;
-  const ShapeModes* model = nullptr;
-  const ModelQuality* quality = nullptr;
+  const ShapeModel* model = nullptr;
   nlohmann::json params;  // what was asked, for model.json
 };
 
-// "000_NAME.aligned.particles" for each input, in order (unique whatever
-// the names).
-std::vector<std::string> aligned_file_names(const std::vector<std::string>& shapes);
+// "000_NAME" for each input file, in order: unique whatever the names, the
+// stem of every per-shape file (here and in correspond's shapes/).
+std::vector<std::string> indexed_stems(const std::vector<std::string>& shapes);
 
 // Throws UserError before any work when `directory` cannot take the set.
 void prepare_shape_model_directory(const std::filesystem::path& directory, const std::vector<std::string>& shapes);
