@@ -6,10 +6,9 @@
 #include <tuple>
 #include <utility>
 
-#include <nanoflann.hpp>
-
 #include "common/input_file.hpp"
 #include "common/user_error.hpp"
+#include "mesh/point_cloud_tree.hpp"
 
 namespace meshparticles {
 
@@ -35,23 +34,6 @@ std::vector<Vec3> read_particle_points(const std::filesystem::path& file) {
 }
 
 namespace {
-
-// The mesh's vertices as nanoflann's k-d tree reads them.
-struct VertexCloud {
-  const std::vector<Vec3>& vertices;
-  std::size_t kdtree_get_point_count() const { return vertices.size(); }
-  double kdtree_get_pt(std::size_t v, std::size_t axis) const {
-    const Vec3& p = vertices[v];
-    return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
-  }
-  template <typename Box>
-  bool kdtree_get_bbox(Box& /*unused*/) const {
-    return false;  // the tree computes it
-  }
-};
-
-using VertexTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, VertexCloud>, VertexCloud, 3, VertexId>;
 
 double squared_distance(Vec3 a, Vec3 b) {
   const Vec3 offset = a - b;
@@ -83,8 +65,8 @@ std::pair<VertexId, double> nearest_by_scan(const std::vector<Vec3>& vertices, V
 SnappedParticles snap_to_vertices(const SurfaceMesh& mesh, const std::vector<Vec3>& points) {
   SnappedParticles snapped;
   const auto& vertices = mesh.positions();
-  const VertexCloud cloud{vertices};
-  const VertexTree tree(3, cloud);
+  const PointCloud cloud{vertices};
+  const PointCloudTree tree(3, cloud);
   std::vector<std::pair<VertexId, double>> as_near;
   const nanoflann::SearchParams unsorted(32, 0.0f, false);
   for (std::size_t i = 0; i < points.size(); ++i) {
