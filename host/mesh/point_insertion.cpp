@@ -1,0 +1,192 @@
+#include "mesh/point_insertion.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+
+#include "mesh/nearest_on_triangle.hpp"
+#include "mesh/vertex_triangles.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+std::uint64_t edge_key(VertexId a, VertexId b) {
+  if (a > b) std::swap(a, b);
+  return (std::uint64_t(a) << 32) | b;
+}
+
+class Inserter {
+ public:
+  Inserter(const RefinedMesh& mesh, const SurfaceMesh& input)
+      : input_(input),
+        input_around_(vertex_triangles(input.triangles(), input.vertex_count())),
+        original_(mesh.mesh.triangles()),
+        positions_(mesh.mesh.positions()),
+        triangles_(mesh.mesh.triangles()),
+        on_input_(mesh.on_input),
+        origin_(triangles_.size()) {
+    for (std::uint32_t t = 0; t < triangles_.size(); ++t) {
+      origin_[t] = t;
+      for (int k = 0; k < 3; ++k) edges_[edge_key(triangles_[t][k], triangles_[t][(k + 1) % 3])].push_back(t);
+    }
+  }
+
+  VertexId insert(const TrianglePoint& point, double snap) {
+    const Triangle& first = original_[point.triangle];
+    const Vec3 x = at_weights(point.weights, positions_[first[0]], positions_[first[1]], positions_[first[2]]);
+    // The piece of the original triangle that holds x now.
+    std::uint32_t piece = point.triangle;
+    std::array<double, 3> weights = weights_in(piece, x);
+    if (const auto found = pieces_.find(point.triangle); found != pieces_.end()) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const std::uint32_t candidate : found->second) {
+        const std::array<double, 3> w = weights_in(candidate, x);
+        const double d = distance(x, at(candidate, w));
+        if (d < nearest) std::tie(nearest, piece, weights) = std::tuple(d, candidate, w);
+      }
+    }
+    const Triangle corners = triangles_[piece];
+    const auto largest = std::max_element(weights.begin(), weights.end()) - weights.begin();
+    if (weights[largest] >= 1 - snap) return corners[largest];
+    const auto smallest = std::min_element(weights.begin(), weights.end()) - weights.begin();
+    if (weights[smallest] <= snap) {
+      const VertexId a = corners[(smallest + 1) % 3], b = corners[(smallest + 2) % 3];
+      const double along = weights[(smallest + 2) % 3] / (weights[(smallest + 1) % 3] + weights[(smallest + 2) % 3]);
+      return split_edge(a, b, along);
+    }
+    return split_triangle(piece, weights);
+  }
+
+  RefinedMesh finish(unsigned levels) {
+    return {SurfaceMesh(std::move(positions_), std::move(triangles_)), levels, std::move(on_input_)};
+  }
+
+ private:
+  std::array<double, 3> weights_in(std::uint32_t t, Vec3 x) const {
+    const Triangle& c = triangles_[t];
+    return nearest_on_triangle(x, positions_[c[0]], positions_[c[1]], positions_[c[2]]);
+  }
+  Vec3 at(std::uint32_t t, const std::array<double, 3>& w) const {
+    const Triangle& c = triangles_[t];
+    return at_weights(w, positions_[c[0]], positions_[c[1]], positions_[c[2]]);
+  }
+
+  VertexId new_vertex(const std::array<VertexId, 3>& corners, const std::array<double, 3>& weights) {
+    positions_.push_back(at_weights(weights, positions_[corners[0]], positions_[corners[1]], positions_[corners[2]]));
+    on_input_.push_back(on_input(corners, weights));
+    return VertexId(positions_.size() - 1);
+  }
+
+  // The new vertex as a point of the input: its corners' input points,
+  // weighted, in the input triangle that holds them all (each working
+  // triangle lies in one input triangle).
+  SurfacePoint on_input(const std::array<VertexId, 3>& corners, const std::array<double, 3>& weights) const {
+    std::vector<std::pair<VertexId, double>> parts;
+    for (int k = 0; k < 3; ++k) {
+      const SurfacePoint& corner = on_input_[corners[k]];
+      for (int j = 0; j < 3; ++j) {
+        const double w = weights[k] * corner.weights[j];
+        if (w <= 0) continue;
+        const auto same = std::find_if(parts.begin(), parts.end(), [&](const auto& p) { return p.first == corner.corners[j]; });
+        if (same == parts.end()) parts.emplace_back(corner.corners[j], w);
+        else same->second += w;
+      }
+    }
+    const auto heaviest = std::max_element(weights.begin(), weights.end()) - weights.begin();
+    if (parts.empty() || parts.size() > 3) return on_input_[corners[heaviest]];
+    for (const std::uint32_t t : input_around_.around(parts.front().first)) {
+      const Triangle& holder = input_.triangles()[t];
+      SurfacePoint point{holder, {0, 0, 0}};
+      bool holds = true;
+      for (const auto& [vertex, w] : parts) {
+        const auto k = std::find(holder.begin(), holder.end(), vertex) - holder.begin();
+        if (k == 3) {
+          holds = false;
+          break;
+        }
+        point.weights[k] = w;
+      }
+      if (!holds) continue;
+      const double total = point.weights[0] + point.weights[1] + point.weights[2];
+      for (double& w : point.weights) w /= total;
+      return point;
+    }
+    return on_input_[corners[heaviest]];  // not reached on a refined mesh
+  }
+
+  void add_piece(std::uint32_t of, std::uint32_t piece) {
+    auto [entry, created] = pieces_.try_emplace(origin_[of]);
+    if (created) entry->second.push_back(origin_[of]);
+    entry->second.push_back(piece);
+    origin_.push_back(origin_[of]);
+  }
+  void replace_on_edge(VertexId a, VertexId b, std::uint32_t old_triangle, std::uint32_t new_triangle) {
+    auto& list = edges_[edge_key(a, b)];
+    std::replace(list.begin(), list.end(), old_triangle, new_triangle);
+  }
+
+  VertexId split_edge(VertexId a, VertexId b, double along) {
+    const VertexId p = new_vertex({a, b, a}, {1 - along, along, 0});
+    const std::vector<std::uint32_t> sharing = edges_[edge_key(a, b)];
+    edges_.erase(edge_key(a, b));
+    for (const std::uint32_t s : sharing) {
+      const Triangle t = triangles_[s];
+      int i = 0;
+      while (!((t[i] == a && t[(i + 1) % 3] == b) || (t[i] == b && t[(i + 1) % 3] == a))) ++i;
+      const VertexId from = t[i], to = t[(i + 1) % 3], opposite = t[(i + 2) % 3];
+      const auto added = std::uint32_t(triangles_.size());
+      triangles_[s] = {from, p, opposite};
+      triangles_.push_back({p, to, opposite});
+      add_piece(s, added);
+      replace_on_edge(to, opposite, s, added);
+      edges_[edge_key(from, p)].push_back(s);
+      edges_[edge_key(p, to)].push_back(added);
+      edges_[edge_key(p, opposite)].push_back(s);
+      edges_[edge_key(p, opposite)].push_back(added);
+    }
+    return p;
+  }
+
+  VertexId split_triangle(std::uint32_t u, const std::array<double, 3>& weights) {
+    const Triangle t = triangles_[u];
+    const VertexId p = new_vertex(t, weights);
+    const auto second = std::uint32_t(triangles_.size()), third = second + 1;
+    triangles_[u] = {t[0], t[1], p};
+    triangles_.push_back({t[1], t[2], p});
+    triangles_.push_back({t[2], t[0], p});
+    add_piece(u, second);
+    add_piece(u, third);
+    replace_on_edge(t[1], t[2], u, second);
+    replace_on_edge(t[2], t[0], u, third);
+    edges_[edge_key(t[0], p)] = {u, third};
+    edges_[edge_key(t[1], p)] = {u, second};
+    edges_[edge_key(t[2], p)] = {second, third};
+    return p;
+  }
+
+  const SurfaceMesh& input_;
+  const VertexTriangles input_around_;
+  const std::vector<Triangle>& original_;
+  std::vector<Vec3> positions_;
+  std::vector<Triangle> triangles_;
+  std::vector<SurfacePoint> on_input_;
+  std::vector<std::uint32_t> origin_;  // per triangle: the triangle of the mesh it is a piece of
+  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> pieces_;  // split triangles: their pieces
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edges_;   // edge: the triangles holding it
+};
+
+}  // namespace
+
+InsertedPoints insert_points(const RefinedMesh& mesh, const SurfaceMesh& input, const std::vector<TrianglePoint>& points,
+                             double snap) {
+  Inserter inserter(mesh, input);
+  std::vector<VertexId> vertices;
+  vertices.reserve(points.size());
+  for (const TrianglePoint& point : points) vertices.push_back(inserter.insert(point, snap));
+  return {inserter.finish(mesh.levels), std::move(vertices)};
+}
+
+}  // namespace meshparticles

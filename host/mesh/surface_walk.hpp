@@ -1,0 +1,39 @@
+#pragma once
+// Keeps a moving point on the surface: from the triangle it was in, to the
+// nearest point of the triangles around, step by step until none is nearer
+// (a point that moved less than a triangle's size takes one or two steps).
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "mesh/surface_mesh.hpp"
+#include "mesh/vertex_triangles.hpp"
+
+namespace meshparticles {
+
+struct SurfaceLocation {
+  std::uint32_t triangle = 0;
+  std::array<double, 3> weights{};
+  Vec3 at;
+};
+
+class SurfaceWalk {
+ public:
+  explicit SurfaceWalk(const SurfaceMesh& mesh);
+  // The point of the surface nearest to `target` reached by walking from
+  // `from` (exact where the surface near `target` is within the triangles
+  // the walk passes; a point moved less than the triangles' size).
+  SurfaceLocation walk(std::uint32_t from, Vec3 target) const;
+  // A triangle holding vertex v (none: the vertex is in no triangle).
+  bool first_triangle(VertexId v, std::uint32_t& triangle) const;
+  Vec3 normal(std::uint32_t triangle) const { return normals_[triangle]; }  // unit (zero if degenerate)
+
+ private:
+  SurfaceLocation nearest_on(std::uint32_t triangle, Vec3 target) const;
+  const SurfaceMesh& mesh_;
+  VertexTriangles around_;
+  std::vector<Vec3> normals_;
+};
+
+}  // namespace meshparticles
