@@ -35,6 +35,7 @@ inline constexpr WholeRange kTileRange{1, std::uint64_t{1} << 24};
 // A run stops by itself when nothing moves; a million iterations is days on
 // any mesh worth running, so more is a typing error.
 inline constexpr WholeRange kRunIterationRange{0, 1000000};
+inline constexpr WholeRange kRelaxRoundRange{0, 1000000};
 // Timed iterations of sweep and bench: at least one; the paper timed 1000.
 inline constexpr WholeRange kTimedIterationRange{1, 100000};
 inline constexpr WholeRange kRebuildRange{0, 1000000};

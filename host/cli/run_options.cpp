@@ -34,6 +34,10 @@ void add_run_options(CLI::App& command, RunOptions& options) {
                              "spread: refine the mesh until it has this many vertices per particle (default " +
                                  format_number("%g", kSpreadVerticesPerParticle) +
                                  "; more spreads further at a larger cover and cost)");
+  add_whole_number_option(command, "--relax-rounds", request.relax_rounds, kRelaxRoundRange,
+                          "spread: at most this many rounds pushing all particles apart at once, off the vertices, "
+                          "after the sweeps (default " + std::to_string(kSpreadRelaxRounds) +
+                              "; 0: the sweeps' vertices)");
   add_whole_number_option(command, "--iterations", request.max_iterations, kRunIterationRange,
                           "Stop after this many iterations (spread: sweeps), or when nothing moves; 0 writes the "
                           "start and its quality");

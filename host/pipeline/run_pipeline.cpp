@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 
 #include "backends/backend_table.hpp"
 #include "backends/local_device_field_backend.hpp"
 #include "common/memory_limits.hpp"
 #include "common/user_error.hpp"
+#include "mesh/point_insertion.hpp"
 #include "pipeline/default_backend.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
@@ -110,6 +112,7 @@ RunPlan plan_run_unnamed(const SurfaceMesh& mesh, const RunRequest& request) {
     return plan;
   }
   if (request.vertices_per_particle) throw UserError("--vertices-per-particle applies to --method spread");
+  if (request.relax_rounds) throw UserError("--relax-rounds applies to --method spread");
   const bool default_backend = request.backend.name.empty();
   plan.distances = plan_distances(mesh, request.distances, request.particles,
                                   !default_backend && find_backend(request.backend.name).needs_dense_table);
@@ -153,6 +156,41 @@ RunPlan plan_run(const SurfaceMesh& mesh, const RunRequest& request) {
 
 namespace {
 
+// spread's measurement: the distances of `working` (the mesh the
+// positions are vertices of) and the quality there.
+void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& working, const std::string& label) {
+  const RunRequest& request = result.plan.request;
+  result.working = working;
+  const SurfaceMesh& measured = working->mesh;
+  const auto geodesics_started = std::chrono::steady_clock::now();
+  const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
+    return obtain_distances(measured, request.distances.geodesics, result.plan.distances);
+  });
+  result.distances.kind = distances.kind;
+  result.distances.table_source = distances.source;
+  result.seconds.geodesics += seconds_since(geodesics_started);
+  const auto quality_started = std::chrono::steady_clock::now();
+  naming_memory_failures(label, "measuring the result", [&] {
+    result.distance_to_nearest =
+        distance_to_nearest_particle(measured, request.distances.geodesics.method, result.outcome.positions);
+    result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
+                                     result.distance_to_nearest, request.quiet);
+  });
+  result.seconds.quality += seconds_since(quality_started);
+  if (const LocalDistances* balls = distances.store->local_balls()) {
+    result.distances.balls = balls->statistics();
+    // The balls are solved inside the quality step: count them there, not twice.
+  }
+}
+
+double largest_finite(const std::vector<float>& values) {
+  double largest = 0;
+  for (const float v : values) {
+    if (std::isfinite(v)) largest = std::max(largest, double(v));
+  }
+  return largest;
+}
+
 // spread: the start and farthest-point optimization on the working mesh,
 // then the quality there, through a store planned for that mesh.
 RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
@@ -165,8 +203,8 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   auto working = naming_memory_failures(label, "refining the working mesh", [&] {
     return std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.working_mesh));
   });
-  result.working = working;
-  const SurfaceMesh& surface = working->mesh;
+  const std::shared_ptr<RefinedMesh> swept = working;  // the solver's mesh, kept while it lives
+  const SurfaceMesh& surface = swept->mesh;
   const auto solver = make_geodesic_solver(surface, request.distances.geodesics.method);
   // The input's vertices keep their ids on the working mesh.
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
@@ -182,26 +220,40 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
                    : spread.cycled  ? "cycle"
                    : spread.stalled ? "stalled"
                                     : "max_iterations";
+  // Then off the vertices: all particles pushed apart at once, and the
+  // points they reach made vertices of the working mesh. The relaxation
+  // keeps no state whose cover (in straight lines, with a margin for the
+  // geodesic's excess) passes kSpreadCoverShare of the farthest start's.
+  const std::vector<VertexId> swept_positions = result.outcome.positions;
+  const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);
+  const double start_cover = largest_finite(
+      distance_to_nearest_particle(surface, request.distances.geodesics.method, result.start));
+  result.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
+    const double cover_limit = kSpreadCoverShare * start_cover / kStraightCoverMargin;
+    return relax_spacing(surface, swept_positions, d_hex, relax_rounds, cover_limit, request.quiet);
+  });
+  if (result.relaxation.kept_round > 0) {
+    std::vector<TrianglePoint> moving;
+    std::vector<std::size_t> movers;
+    for (std::size_t i = 0; i < result.relaxation.points.size(); ++i) {
+      if (!result.relaxation.points[i]) continue;
+      moving.push_back(*result.relaxation.points[i]);
+      movers.push_back(i);
+    }
+    InsertedPoints inserted = insert_points(*working, mesh, moving);
+    for (std::size_t k = 0; k < movers.size(); ++k) result.outcome.positions[movers[k]] = inserted.vertices[k];
+    working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
+  }
   result.seconds.particles = seconds_since(particles_started);
 
-  const auto geodesics_started = std::chrono::steady_clock::now();
-  const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
-    return obtain_distances(surface, request.distances.geodesics, plan.distances);
-  });
-  result.distances.kind = distances.kind;
-  result.distances.table_source = distances.source;
-  result.seconds.geodesics = seconds_since(geodesics_started);
-  const auto quality_started = std::chrono::steady_clock::now();
-  naming_memory_failures(label, "measuring the result", [&] {
-    result.distance_to_nearest =
-        distance_to_nearest_particle(surface, request.distances.geodesics.method, result.outcome.positions);
-    result.quality = measure_quality(surface, *distances.store, result.outcome.positions, plan.energy,
-                                     result.distance_to_nearest, request.quiet);
-  });
-  result.seconds.quality = seconds_since(quality_started);
-  if (const LocalDistances* balls = distances.store->local_balls()) {
-    result.distances.balls = balls->statistics();
-    // The balls are solved inside the quality step: count them there, not twice.
+  measure_spread(result, working, label);
+  // The margin did not hold (a hole across a crease, where a straight line
+  // is far shorter than the geodesic): the sweeps' vertices instead.
+  if (result.relaxation.kept_round > 0 && result.quality.cover &&
+      *result.quality.cover * d_hex > kSpreadCoverShare * start_cover) {
+    result.relaxation.undone_for_cover = true;
+    result.outcome.positions = swept_positions;
+    measure_spread(result, swept, label);
   }
   result.seconds.total = result.seconds.particles + result.seconds.geodesics + result.seconds.quality;
   return result;

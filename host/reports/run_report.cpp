@@ -33,6 +33,7 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
   if (plan.method == Method::spread) {
     params["sweeps"] = request.max_iterations;
     params["vertices_per_particle"] = plan.vertices_per_particle;
+    params["relax_rounds"] = request.relax_rounds.value_or(kSpreadRelaxRounds);
     return params;
   }
   params["iterations"] = request.max_iterations;
@@ -125,6 +126,18 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
       {"final_energy", result.quality.energy},
       {"avg_iteration_ms", result.sweeps.empty() ? 0.0 : ms_sum / double(result.sweeps.size())},
       {"sweeps", sweeps}};
+  const RelaxationOutcome& relaxation = result.relaxation;
+  report["relaxation"] = {{"rounds", relaxation.rounds.size()},
+                          {"ms", relaxation.ms},
+                          {"start_spacing", relaxation.start_spacing / d_hex},
+                          {"spacing", relaxation.spacing / d_hex},
+                          {"start_cover", relaxation.start_cover / d_hex},
+                          {"cover", relaxation.cover / d_hex},
+                          {"kept_round", relaxation.kept_round},
+                          {"undone_for_cover", relaxation.undone_for_cover}};
+  nlohmann::json round_spacings = nlohmann::json::array();
+  for (const RelaxationRound& round : relaxation.rounds) round_spacings.push_back(round.spacing / d_hex);
+  report["relaxation"]["spacing_per_round"] = round_spacings;
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
   return report;

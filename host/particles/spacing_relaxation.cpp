@@ -1,0 +1,264 @@
+#include "particles/spacing_relaxation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "common/progress.hpp"
+#include "common/text_format.hpp"
+#include "mesh/point_cloud_tree.hpp"
+#include "mesh/surface_walk.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+// Pairs whose triangles' normals have a cosine under this do not push each
+// other (opposite sides of a thin sheet, 120 degrees and more apart).
+constexpr double kFacingCosine = -0.5;
+// Each round pushes for a radius this share above the target; a round that
+// ends below the target halves it, down to kSmallestGrowth.
+constexpr double kGrowth = 0.005;
+constexpr double kSmallestGrowth = 0.002;
+// Pushes a round at most. A push moves each particle by kStepShare of half
+// the overlap of each pair it is in, plus kMomentum of its last move (heavy
+// ball: measured on the sphere at n = 1,024, momentum 0.8 reaches in 100
+// rounds the spacing plain pushes reach in 400), along the surface, at most
+// a quarter of the radius.
+constexpr int kPushesPerRound = 10;
+constexpr double kStepShare = 0.9;
+constexpr double kMomentum = 0.8;
+// The neighbour lists hold the pairs within this many radii, rebuilt when
+// the particles may have used up the margin.
+constexpr double kNeighbourReach = 1.5;
+// Rounds between candidates, and the rounds without a gain of kPatienceGain
+// (a share of the spacing) after which the rounds stop.
+constexpr std::size_t kCheckEvery = 10;
+constexpr std::size_t kPatienceRounds = 60;
+constexpr double kPatienceGain = 1e-4;
+
+struct Particle {
+  std::uint32_t triangle = 0;
+  Vec3 at;
+  Vec3 velocity;       // the last move
+  bool fixed = false;  // on a vertex in no triangle: it stays
+};
+
+class Relaxation {
+ public:
+  Relaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start) : walk_(mesh) {
+    for (const VertexId v : start) {
+      Particle p;
+      p.at = mesh.positions()[v];
+      p.fixed = !walk_.first_triangle(v, p.triangle);
+      particles_.push_back(p);
+    }
+  }
+
+  // The smallest spacing over facing pairs within `reach` (infinite where none).
+  double smallest_spacing(double reach) {
+    if (!(moved_ * 2 < (reach_ - reach))) build_neighbours(std::max(reach, reach_));
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const auto& [i, j] : pairs_) smallest = std::min(smallest, distance(particles_[i].at, particles_[j].at));
+    return smallest;
+  }
+
+  // Pushes apart the pairs closer than `radius`; false where none is.
+  bool push(double radius) {
+    if (!(moved_ * 2 < reach_ - radius)) build_neighbours(kNeighbourReach * radius);
+    std::vector<Vec3> shift(particles_.size());
+    bool any = false;
+    for (const auto& [i, j] : pairs_) {
+      const Vec3 apart = particles_[i].at - particles_[j].at;
+      const double d = norm(apart);
+      if (d >= radius || d == 0) continue;
+      const Vec3 half = (0.5 * (radius - d) / d) * apart;
+      shift[i] = shift[i] + half;
+      shift[j] = shift[j] - half;
+      any = true;
+    }
+    if (!any) return false;
+    double largest = 0;
+    for (std::size_t i = 0; i < particles_.size(); ++i) {
+      Particle& p = particles_[i];
+      if (p.fixed) continue;
+      const Vec3 n = walk_.normal(p.triangle);
+      Vec3 step = kStepShare * shift[i] + kMomentum * p.velocity;
+      step = step - dot(step, n) * n;
+      const double length = norm(step);
+      if (length > radius / 4) step = (radius / 4 / length) * step;  // no jump past a neighbour
+      p.velocity = step;
+      if (length == 0) continue;
+      const SurfaceLocation moved = walk_.walk(p.triangle, p.at + step);
+      largest = std::max(largest, distance(moved.at, p.at));
+      p.triangle = moved.triangle;
+      p.at = moved.at;
+    }
+    moved_ += largest;
+    return true;
+  }
+
+  std::vector<Vec3> positions() const {
+    std::vector<Vec3> at;
+    for (const Particle& p : particles_) at.push_back(p.at);
+    return at;
+  }
+  std::vector<Vec3> normals() const {
+    std::vector<Vec3> normals;
+    for (const Particle& p : particles_) normals.push_back(p.fixed ? Vec3{} : walk_.normal(p.triangle));
+    return normals;
+  }
+  std::vector<std::optional<TrianglePoint>> points() const {
+    std::vector<std::optional<TrianglePoint>> points;
+    for (const Particle& p : particles_) {
+      if (p.fixed) points.emplace_back();
+      else points.push_back(TrianglePoint{p.triangle, walk_.walk(p.triangle, p.at).weights});
+    }
+    return points;
+  }
+  const std::vector<Particle>& particles() const { return particles_; }
+  void restore(const std::vector<Particle>& particles) {
+    particles_ = particles;
+    reach_ = 0;
+  }
+
+ private:
+  // Pairs within `reach`, each once (i < j), in index order.
+  void build_neighbours(double reach) {
+    const std::vector<Vec3> at = positions();
+    const PointCloud cloud{at};
+    const PointCloudTree tree(3, cloud);
+    pairs_.clear();
+    std::vector<std::pair<std::uint32_t, double>> near;
+    const nanoflann::SearchParams unsorted(32, 0.0f, false);
+    for (std::uint32_t i = 0; i < at.size(); ++i) {
+      if (particles_[i].fixed) continue;
+      const double query[3] = {at[i].x, at[i].y, at[i].z};
+      tree.radiusSearch(query, reach * reach, near, unsorted);
+      std::sort(near.begin(), near.end());
+      const Vec3 ni = walk_.normal(particles_[i].triangle);
+      for (const auto& [j, squared] : near) {
+        if (j <= i || particles_[j].fixed) continue;
+        if (dot(ni, walk_.normal(particles_[j].triangle)) < kFacingCosine) continue;
+        pairs_.emplace_back(i, j);
+      }
+    }
+    reach_ = reach;
+    moved_ = 0;
+  }
+
+  SurfaceWalk walk_;
+  std::vector<Particle> particles_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
+  double reach_ = 0;  // of the pairs
+  double moved_ = 0;  // the largest move of a push, summed since the pairs were found
+};
+
+}  // namespace
+
+namespace {
+
+// Per vertex, the sum of its triangles' area-weighted normals.
+std::vector<Vec3> vertex_normals(const SurfaceMesh& mesh) {
+  const auto& positions = mesh.positions();
+  std::vector<Vec3> normals(mesh.vertex_count());
+  for (const Triangle& t : mesh.triangles()) {
+    const Vec3 n = cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
+    for (const VertexId v : t) normals[v] = normals[v] + n;
+  }
+  return normals;
+}
+
+}  // namespace
+
+double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles) {
+  const auto normals = vertex_normals(mesh);
+  std::vector<Vec3> at, facing;
+  for (const VertexId v : particles) {
+    at.push_back(mesh.positions()[v]);
+    facing.push_back(normals[v]);
+  }
+  return straight_cover(mesh, at, facing);
+}
+
+double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& particles,
+                      const std::vector<Vec3>& particle_normals) {
+  if (particles.empty()) return std::numeric_limits<double>::infinity();
+  const PointCloud cloud{particles};
+  const PointCloudTree tree(3, cloud);
+  const auto& positions = mesh.positions();
+  const std::vector<Vec3> vertex_normal = vertex_normals(mesh);
+  // The nearest particle, or where it faces away (a thin sheet's other
+  // side), the nearest facing one among the kNearest nearest.
+  constexpr std::size_t kNearest = 8;
+  std::uint32_t nearest[kNearest];
+  double squared[kNearest];
+  const auto facing = [&](VertexId v, std::uint32_t particle) {
+    return dot(vertex_normal[v], particle_normals[particle]) >=
+           kFacingCosine * norm(vertex_normal[v]) * norm(particle_normals[particle]);
+  };
+  double cover = 0;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    const double query[3] = {positions[v].x, positions[v].y, positions[v].z};
+    tree.knnSearch(query, 1, nearest, squared);
+    double to_nearest = std::sqrt(squared[0]);
+    if (!facing(v, nearest[0])) {
+      const std::size_t found = tree.knnSearch(query, std::min(kNearest, particles.size()), nearest, squared);
+      for (std::size_t k = 0; k < found; ++k) {
+        if (facing(v, nearest[k])) {
+          to_nearest = std::sqrt(squared[k]);
+          break;
+        }
+      }
+    }
+    cover = std::max(cover, to_nearest);
+  }
+  return cover;
+}
+
+RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
+                                std::size_t max_rounds, double cover_limit, bool quiet) {
+  const auto started = std::chrono::steady_clock::now();
+  Relaxation relaxation(mesh, start);
+  RelaxationOutcome outcome;
+  const double reach = 2 * d_hex;
+  outcome.start_spacing = outcome.spacing = relaxation.smallest_spacing(reach);
+  outcome.start_cover = outcome.cover = straight_cover(mesh, relaxation.positions(), relaxation.normals());
+  std::vector<Particle> kept = relaxation.particles();
+  if (max_rounds > 0 && std::isfinite(outcome.spacing) && outcome.spacing > 0) {
+    ProgressLine progress("relax", max_rounds, quiet);
+    double target = outcome.spacing, growth = kGrowth, best = outcome.spacing;
+    std::size_t last_gain = 0;
+    for (std::size_t round = 1; round <= max_rounds && round - last_gain <= kPatienceRounds; ++round) {
+      const double radius = target * (1 + growth);
+      for (int i = 0; i < kPushesPerRound && relaxation.push(radius); ++i) {
+      }
+      const double spacing = relaxation.smallest_spacing(target);
+      outcome.rounds.push_back({radius, spacing});
+      if (spacing > best * (1 + kPatienceGain)) {
+        best = spacing;
+        last_gain = round;
+      }
+      if (spacing < target) growth = std::max(kSmallestGrowth, growth / 2);
+      target = std::max(target, std::min(radius, spacing * (1 + growth)));
+      if ((round % kCheckEvery == 0 || round == max_rounds) && spacing > outcome.spacing) {
+        const double cover = straight_cover(mesh, relaxation.positions(), relaxation.normals());
+        if (cover <= cover_limit) {
+          outcome.spacing = spacing;
+          outcome.cover = cover;
+          outcome.kept_round = round;
+          kept = relaxation.particles();
+        }
+      }
+      progress.update(round, "smallest spacing " + format_number("%.4f", outcome.spacing / d_hex) + " d_hex");
+    }
+    progress.finish("kept round " + std::to_string(outcome.kept_round));
+  }
+  relaxation.restore(kept);
+  outcome.points = relaxation.points();
+  outcome.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return outcome;
+}
+
+}  // namespace meshparticles

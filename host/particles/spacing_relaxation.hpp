@@ -1,0 +1,57 @@
+#pragma once
+// After farthest-point optimization, the particles leave the vertices: all
+// of them are pushed apart at once, on the surface, until no pair is closer
+// than a radius that grows while it can be reached (soft disks whose radius
+// grows, as Lubachevsky and Stillinger grow hard disks into a packing).
+// Farthest-point optimization settles where no single particle can widen
+// the smallest gap; moving them together can (docs/ALGORITHM.md,
+// "Relaxation").
+//
+// Distances here are straight lines between particles that face the same
+// way (their triangles' normals under 120 degrees apart): at a spacing the
+// surface is nearly flat, a straight line is never longer than the
+// geodesic, and two sides of a thin sheet do not push each other.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "mesh/point_insertion.hpp"
+#include "mesh/surface_mesh.hpp"
+
+namespace meshparticles {
+
+struct RelaxationRound {
+  double target = 0;   // the radius pushed for, mesh units
+  double spacing = 0;  // the smallest spacing after the round
+};
+
+struct RelaxationOutcome {
+  // The kept state's: none for a particle on a vertex in no triangle, which
+  // stays where it is.
+  std::vector<std::optional<TrianglePoint>> points;
+  double start_spacing = 0, spacing = 0;    // smallest straight-line spacing, at the start and kept
+  double start_cover = 0, cover = 0;        // the largest straight-line distance from a vertex to its nearest particle
+  std::size_t kept_round = 0;               // 0: the start (then `points` are its vertices)
+  bool undone_for_cover = false;            // set by the caller: the kept state's geodesic cover was too large
+  std::vector<RelaxationRound> rounds;
+  double ms = 0;
+};
+
+// The largest straight-line distance from a vertex of `mesh` to the nearest
+// particle facing its way: the covering radius, measured as the relaxation
+// measures spacing (a few tens of milliseconds on a million vertices).
+double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& particles,
+                      const std::vector<Vec3>& particle_normals);
+// The same for particles on vertices (facing as their vertices do).
+double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles);
+
+// From particles on the vertices `start` of `mesh`, at most `max_rounds`
+// rounds (0: the start as it is). `d_hex` sets the scale. Every
+// kCheckEvery rounds the state is a candidate, kept where its smallest
+// spacing is the largest so far and its straight_cover at most
+// `cover_limit` (the start is always a candidate). Deterministic: the same
+// mesh and start give the same bits. Unless `quiet`, a progress line.
+RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
+                                std::size_t max_rounds, double cover_limit, bool quiet);
+
+}  // namespace meshparticles

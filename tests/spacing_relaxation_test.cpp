@@ -1,0 +1,174 @@
+// Spread's relaxation: points inserted into a mesh become vertices exactly
+// where they were; a point walked along the surface reaches its nearest
+// surface point; the relaxation widens the smallest spacing without passing
+// its cover limit, on the surface, the same bits every time; and a run
+// keeps the relaxed particles only where their cover stays within 1.1x the
+// farthest start's.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/random.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/nearest_on_triangle.hpp"
+#include "mesh/point_insertion.hpp"
+#include "mesh/surface_walk.hpp"
+#include "particles/initial_placement.hpp"
+#include "particles/spacing_relaxation.hpp"
+#include "pipeline/run_pipeline.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+SurfaceMesh committed(const std::string& name) {
+  std::vector<std::string> warnings;
+  return read_mesh(std::string(MESHES_DIR) + "/" + name, warnings);
+}
+
+// The nearest point of any triangle of `mesh` to `p`: the definition.
+double distance_to_surface(const SurfaceMesh& mesh, Vec3 p) {
+  double nearest = std::numeric_limits<double>::infinity();
+  const auto& x = mesh.positions();
+  for (const Triangle& t : mesh.triangles()) {
+    const auto w = nearest_on_triangle(p, x[t[0]], x[t[1]], x[t[2]]);
+    nearest = std::min(nearest, distance(p, at_weights(w, x[t[0]], x[t[1]], x[t[2]])));
+  }
+  return nearest;
+}
+
+Vec3 on_input_position(const SurfaceMesh& input, const SurfacePoint& point) {
+  const auto& x = input.positions();
+  return at_weights(point.weights, x[point.corners[0]], x[point.corners[1]], x[point.corners[2]]);
+}
+
+TEST(PointInsertion, PointsBecomeVerticesWhereTheyWere) {
+  const SurfaceMesh input = committed("torus.off");
+  const RefinedMesh refined = refine_by_midpoints(input, 1);
+  const SurfaceMesh& mesh = refined.mesh;
+  std::vector<TrianglePoint> points = {
+      {0, {0.2, 0.3, 0.5}},       // inside
+      {0, {0.6, 0.3, 0.1}},       // inside the same triangle, after the first split it
+      {5, {0.5, 0.495, 0.005}},   // within the snap of an edge: split there
+      {9, {0.995, 0.003, 0.002}}, // within the snap of a corner: that corner
+      {12, {1.0 / 3, 1.0 / 3, 1.0 / 3}},
+  };
+  const auto& x = mesh.positions();
+  const InsertedPoints inserted = insert_points(refined, input, points);
+  const SurfaceMesh& result = inserted.refined.mesh;
+  ASSERT_EQ(inserted.vertices.size(), points.size());
+  EXPECT_EQ(result.vertex_count(), mesh.vertex_count() + 4);  // one point was a corner
+  EXPECT_EQ(inserted.vertices[3], mesh.triangles()[9][0]);
+  EXPECT_EQ(result.triangle_count(), mesh.triangle_count() + 2 + 2 + 2 + 2);  // three splits, one edge of two triangles
+  EXPECT_NEAR(result.area(), mesh.area(), 1e-12 * mesh.area());
+  EXPECT_EQ(result.boundary_vertex_count(), 0u);  // still closed: every edge split on both sides
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) ASSERT_EQ(distance(result.positions()[v], x[v]), 0.0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Triangle& t = mesh.triangles()[points[i].triangle];
+    const Vec3 wanted = at_weights(points[i].weights, x[t[0]], x[t[1]], x[t[2]]);
+    const double tolerance = i == 2 || i == 3 ? 0.01 * mesh.mean_edge_length() : 1e-12;
+    EXPECT_NEAR(distance(result.positions()[inserted.vertices[i]], wanted), 0, tolerance) << "point " << i;
+  }
+  // Every vertex, old and new, as a point of the input is where it is.
+  ASSERT_EQ(inserted.refined.on_input.size(), result.vertex_count());
+  for (VertexId v = 0; v < result.vertex_count(); ++v) {
+    ASSERT_NEAR(distance(on_input_position(input, inserted.refined.on_input[v]), result.positions()[v]), 0, 1e-12)
+        << "vertex " << v;
+  }
+}
+
+TEST(SurfaceWalk, ReachesTheNearestSurfacePoint) {
+  const SurfaceMesh mesh = refine_by_midpoints(committed("atrium.off"), 1).mesh;
+  const SurfaceWalk walk(mesh);
+  SplitMix64 random(7);
+  const double step = 0.5 * mesh.mean_edge_length();
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto t = std::uint32_t(random.next() % mesh.triangle_count());
+    const Triangle& c = mesh.triangles()[t];
+    const Vec3 from = at_weights({1.0 / 3, 1.0 / 3, 1.0 / 3}, mesh.positions()[c[0]], mesh.positions()[c[1]],
+                                 mesh.positions()[c[2]]);
+    const Vec3 offset{step * (random.uniform() - 0.5), step * (random.uniform() - 0.5), step * (random.uniform() - 0.5)};
+    const Vec3 target = from + offset;
+    const SurfaceLocation reached = walk.walk(t, target);
+    EXPECT_NEAR(distance(reached.at, target), distance_to_surface(mesh, target), 1e-9 * step) << "trial " << trial;
+  }
+}
+
+class RelaxationWidens : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
+  const SurfaceMesh input = committed(GetParam());
+  constexpr std::size_t kParticles = 128;
+  RunRequest request;
+  request.particles = kParticles;
+  const RefinedMesh working = build_working_mesh(input, plan_run(input, request).working_mesh);
+  const SurfaceMesh& mesh = working.mesh;
+  const auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
+  const double d_hex = hexagonal_spacing(input.area(), kParticles);
+  const double cover_limit = 1.1 * straight_cover(mesh, start);
+  const RelaxationOutcome relaxed = relax_spacing(mesh, start, d_hex, 150, cover_limit, true);
+  EXPECT_GT(relaxed.kept_round, 0u);
+  EXPECT_GT(relaxed.spacing, 1.1 * relaxed.start_spacing);
+  EXPECT_LE(relaxed.cover, cover_limit);
+  // The kept points: on the surface, as far apart as reported.
+  std::vector<Vec3> at;
+  for (const auto& point : relaxed.points) {
+    ASSERT_TRUE(point);
+    const Triangle& c = mesh.triangles()[point->triangle];
+    at.push_back(at_weights(point->weights, mesh.positions()[c[0]], mesh.positions()[c[1]], mesh.positions()[c[2]]));
+    EXPECT_GE(std::min({point->weights[0], point->weights[1], point->weights[2]}), 0.0);
+  }
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    for (std::size_t j = i + 1; j < at.size(); ++j) smallest = std::min(smallest, distance(at[i], at[j]));
+  }
+  EXPECT_NEAR(smallest, relaxed.spacing, 1e-9 * d_hex);
+  const RelaxationOutcome again = relax_spacing(mesh, start, d_hex, 150, cover_limit, true);
+  ASSERT_EQ(again.points.size(), relaxed.points.size());
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    EXPECT_EQ(again.points[i]->triangle, relaxed.points[i]->triangle);
+    EXPECT_EQ(again.points[i]->weights, relaxed.points[i]->weights);
+  }
+  // No rounds: the start, kept.
+  const RelaxationOutcome none = relax_spacing(mesh, start, d_hex, 0, cover_limit, true);
+  EXPECT_EQ(none.kept_round, 0u);
+  EXPECT_EQ(none.spacing, none.start_spacing);
+}
+
+std::string stem(const ::testing::TestParamInfo<const char*>& mesh) {
+  return std::string(mesh.param).substr(0, std::string(mesh.param).find('.'));
+}
+INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphere.off", "torus.off", "atrium.off"),
+                         stem);
+
+// A whole run: the relaxed particles are vertices of the run's working
+// mesh where they stopped, more evenly spaced than the sweeps alone, with a
+// cover within 1.1x the farthest start's.
+TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
+  const SurfaceMesh mesh = committed("sphere.off");
+  RunRequest request;
+  request.mesh_label = "sphere.off";
+  request.particles = 256;
+  request.quiet = true;
+  const RunResult relaxed = run_pipeline(mesh, request);
+  request.relax_rounds = 0;
+  const RunResult swept = run_pipeline(mesh, request);
+  request.max_iterations = 0;
+  const RunResult start = run_pipeline(mesh, request);
+  EXPECT_EQ(swept.relaxation.kept_round, 0u);
+  ASSERT_GT(relaxed.relaxation.kept_round, 0u);
+  EXPECT_FALSE(relaxed.relaxation.undone_for_cover);
+  EXPECT_GT(*relaxed.quality.rho, *swept.quality.rho + 0.05);
+  EXPECT_LT(*relaxed.quality.nn_cv, 0.5 * *swept.quality.nn_cv);
+  EXPECT_LE(*relaxed.quality.cover, 1.1 * *start.quality.cover);
+  // The geodesic smallest spacing is at least the straight one the relaxation kept.
+  EXPECT_GE(*relaxed.quality.nn_min, (1 - 1e-3) * relaxed.relaxation.spacing);
+  for (const VertexId p : relaxed.outcome.positions) {
+    const Vec3 at = relaxed.working->mesh.positions()[p];
+    EXPECT_NEAR(distance(on_input_position(mesh, relaxed.working->on_input[p]), at), 0, 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
