@@ -17,6 +17,7 @@
 #include "mesh/surface_walk.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/spacing_relaxation.hpp"
+#include "pipeline/point_sets.hpp"
 #include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles::testing {
@@ -168,6 +169,38 @@ TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
     const Vec3 at = relaxed.working->mesh.positions()[p];
     EXPECT_NEAR(distance(on_input_position(mesh, relaxed.working->on_input[p]), at), 0, 1e-12);
   }
+}
+
+// `quality` on points inside triangles: inserted, not snapped, so each
+// nearest-neighbour distance is within 1% of the exact one (on the sphere:
+// the great-circle distance between the points pushed out to the sphere).
+TEST(QualityOfSurfacePoints, PointsInsideTrianglesAreMeasuredWithinOnePercent) {
+  const SurfaceMesh mesh = committed("sphere.off");
+  SplitMix64 random(3);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 64; ++i) {
+    const Triangle& t = mesh.triangles()[random.below(mesh.triangle_count())];
+    double a = 0.1 + random.uniform(), b = 0.1 + random.uniform(), c = 0.1 + random.uniform();
+    const double sum = a + b + c;
+    points.push_back(at_weights({a / sum, b / sum, c / sum}, mesh.positions()[t[0]], mesh.positions()[t[1]],
+                                mesh.positions()[t[2]]));
+  }
+  PointSetsRequest request;
+  request.names = {"points"};
+  request.points = {points};
+  request.geodesics.quiet = true;
+  const PointSetsMeasurement measured = measure_point_sets(mesh, request);
+  EXPECT_LT(measured.sets[0].snapped.largest_snap, 1e-12);
+  double radius = 0;
+  for (const Vec3& p : mesh.positions()) radius += norm(p) / double(mesh.vertex_count());
+  double exact_min = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = i + 1; j < points.size(); ++j) {
+      const double cosine = dot(points[i], points[j]) / (norm(points[i]) * norm(points[j]));
+      exact_min = std::min(exact_min, radius * std::acos(std::clamp(cosine, -1.0, 1.0)));
+    }
+  }
+  EXPECT_NEAR(*measured.sets[0].quality.nn_min, exact_min, 0.01 * exact_min);
 }
 
 }  // namespace

@@ -74,10 +74,9 @@ void add_shared_options(CLI::App& command, QualityOptions& options) {
   add_distance_table_options(command, options.table);
   command
       .add_option("--refine", options.refine,
-                  "The refined mesh the points are measured on: auto (the mesh itself if every point lies on its "
-                  "vertices, else spread's working mesh if they lie on it, else the fewest uniform midpoint rounds "
-                  "that put every point within 0.5% of a spacing of a vertex), spread (that working mesh), or 0 to "
-                  "8 uniform rounds")
+                  "The mesh the points are measured on, points between its vertices inserted as vertices: auto "
+                  "(the mesh itself if every point lies on its vertices, else spread's working mesh), spread (that "
+                  "working mesh), or 0 to 8 uniform midpoint rounds")
       ->check(CLI::IsMember({"auto", "spread", "0", "1", "2", "3", "4", "5", "6", "7", "8"}))
       ->capture_default_str();
 }
@@ -88,7 +87,7 @@ void add_quality_command(CLI::App& app) {
   auto options = std::make_shared<QualityOptions>();
   CLI::App* quality = app.add_subcommand(
       "quality", "How evenly a particle file covers a mesh: nearest-neighbour distances, packing and covering radii, "
-                 "energy (points are snapped to the nearest vertex of the mesh, refined where they lie between vertices)");
+                 "energy (points between vertices are measured where they are, inserted as vertices of a refined mesh)");
   quality->add_option("mesh", options->mesh, "Mesh file")->required();
   quality->add_option("particles", options->particle_files, "Particle file: one \"x y z\" per line (.particles)")
       ->required()

@@ -19,8 +19,10 @@ void set_refinement(PointSetsRequest& request, const std::string& refine) {
 
 PointSetsMeasurement measure_point_sets(const SurfaceMesh& input, const PointSetsRequest& request) {
   if (request.sigma) check_sigma_computable({request.potential, *request.sigma});
-  // Points between the input's vertices are measured where they lie on vertices.
+  // Points between the input's vertices are measured as vertices of a
+  // refined mesh, inserted where they are.
   PointSetsMeasurement out{measuring_mesh(input, request.points, request.uniform_levels, request.spread_mesh), {}, {}, {}};
+  std::vector<SnappedParticles> placed = place_on_vertices(out.measuring.refined, input, request.points);
   const SurfaceMesh& mesh = out.measuring.refined.mesh;
   // A local store's cutoff scales with the spacing of the set with the fewest particles (the widest).
   std::size_t fewest = request.points.front().size();
@@ -29,7 +31,7 @@ PointSetsMeasurement measure_point_sets(const SurfaceMesh& input, const PointSet
       mesh, request.geodesics, plan_distances(mesh, request.distances, std::min(fewest, mesh.vertex_count()), false));
   const GeodesicMethod method = request.geodesics.method;
   for (std::size_t k = 0; k < request.points.size(); ++k) {
-    out.sets.push_back(measure_particle_file(mesh, *obtained.store, method, request.names[k], request.points[k],
+    out.sets.push_back(measure_particle_file(mesh, *obtained.store, method, request.names[k], std::move(placed[k]),
                                              request.potential, request.sigma, request.geodesics.quiet));
   }
   if (out.sets.size() == 2) {

@@ -18,20 +18,14 @@ struct MeasuredSet {
   DistributionQuality quality;
 };
 
-// Points between vertices (a spread run's, or another tool's on the
-// surface) are measured on a refined mesh where they lie on vertices or
-// close to them (within kOnVertex hexagonal spacings: a nearest-neighbour
-// distance then moves by at most twice that by snapping). `uniform_levels`
-// given: that many midpoint rounds everywhere. `spread`: the working mesh a
-// default spread run of the smallest set's n takes. Neither (auto): the
-// mesh itself if every point of every set lies on its vertices, else that
-// working mesh if they lie on it, else the fewest uniform rounds at which
-// every point does, stopping short of
-// kMeasuringVerticesPerParticle vertices per particle of the smallest set
-// (and of kMeasuringMaxVertices). Round 0 is the mesh itself.
+// The mesh particle files are measured on: `uniform_levels` given, that
+// many midpoint rounds everywhere; `spread`, the working mesh a default
+// spread run of the smallest set's n takes; neither (auto), the mesh
+// itself where every point of every set lies on its vertices (within
+// kOnVertex hexagonal spacings: a paper run's, a vertex sampler's), else
+// that working mesh. Points that are not on its vertices are then inserted
+// as vertices (place_on_vertices): measured where they are, not snapped.
 inline constexpr double kOnVertex = 0.005;
-inline constexpr double kMeasuringVerticesPerParticle = 100;
-inline constexpr std::size_t kMeasuringMaxVertices = 2'000'000;
 struct MeasuringMesh {
   RefinedMesh refined;
   bool spread = false;  // the spread working mesh, else uniform rounds
@@ -39,10 +33,18 @@ struct MeasuringMesh {
 MeasuringMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vector<Vec3>>& sets,
                              std::optional<unsigned> uniform_levels, bool spread);
 
-// `points`: read_particle_points(path), read by the caller before the
-// distances so that a bad file fails fast.
+// Each point of each set as a vertex of `measuring`: the vertex it is on
+// (within kOnVertexExactly mean edges), else the nearest surface point,
+// inserted into `measuring` as a vertex. largest_snap: the largest distance
+// from a point to its vertex, that is to the surface (insertion moves a
+// point onto an edge or corner within 2% of a triangle's height of it).
+inline constexpr double kOnVertexExactly = 1e-9;
+std::vector<SnappedParticles> place_on_vertices(RefinedMesh& measuring, const SurfaceMesh& input,
+                                                const std::vector<std::vector<Vec3>>& sets);
+
+// `placed`: one set of place_on_vertices on `mesh`.
 MeasuredSet measure_particle_file(const SurfaceMesh& mesh, const DistanceStore& distances, GeodesicMethod method,
-                                  const std::string& path, const std::vector<Vec3>& points, Potential potential,
+                                  const std::string& path, SnappedParticles placed, Potential potential,
                                   std::optional<double> sigma, bool quiet);
 
 // The mean over the particles of `from` of the geodesic distance to the
