@@ -231,8 +231,9 @@ def quality(
     quiet: bool = False,
 ) -> Dict[str, Any]:
     """`meshparticles quality MESH PARTICLES --json` on `points` (P x 3, or a
-    Result): the points snapped to the nearest vertices of a measuring mesh
-    and measured by geodesic distances."""
+    Result): the points made vertices of a measuring mesh (the input where
+    they lie on its vertices, else inserted into a refined copy where they
+    are) and measured by geodesic distances."""
     return _measure(_core.quality_json, mesh, [points], refine=refine, cache_dir=cache_dir, sigma=sigma,
                     potential=potential, geodesic=geodesic, distances=distances, cutoff=cutoff,
                     no_cache=no_cache, threads=threads, quiet=quiet)
