@@ -108,9 +108,11 @@ TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
   const auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
   const double d_hex = hexagonal_spacing(input.area(), kParticles);
   const double cover_limit = 1.1 * straight_cover(mesh, start);
-  const RelaxationOutcome relaxed = relax_spacing(mesh, start, d_hex, 150, cover_limit, true);
-  EXPECT_GT(relaxed.kept_round, 0u);
-  EXPECT_GT(relaxed.spacing, 1.1 * relaxed.start_spacing);
+  const RelaxationOutcome outcome = relax_spacing(mesh, start, d_hex, 150, {cover_limit}, true);
+  ASSERT_EQ(outcome.candidates.size(), 1u);
+  const RelaxationCandidate& relaxed = outcome.candidates.front();
+  EXPECT_GT(relaxed.round, 0u);
+  EXPECT_GT(relaxed.spacing, 1.1 * outcome.start_spacing);
   EXPECT_LE(relaxed.cover, cover_limit);
   // The kept points: on the surface, as far apart as reported.
   std::vector<Vec3> at;
@@ -125,16 +127,17 @@ TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
     for (std::size_t j = i + 1; j < at.size(); ++j) smallest = std::min(smallest, distance(at[i], at[j]));
   }
   EXPECT_NEAR(smallest, relaxed.spacing, 1e-9 * d_hex);
-  const RelaxationOutcome again = relax_spacing(mesh, start, d_hex, 150, cover_limit, true);
-  ASSERT_EQ(again.points.size(), relaxed.points.size());
+  const RelaxationOutcome again = relax_spacing(mesh, start, d_hex, 150, {cover_limit}, true);
+  const auto& again_points = again.candidates.front().points;
+  ASSERT_EQ(again_points.size(), relaxed.points.size());
   for (std::size_t i = 0; i < at.size(); ++i) {
-    EXPECT_EQ(again.points[i]->triangle, relaxed.points[i]->triangle);
-    EXPECT_EQ(again.points[i]->weights, relaxed.points[i]->weights);
+    EXPECT_EQ(again_points[i]->triangle, relaxed.points[i]->triangle);
+    EXPECT_EQ(again_points[i]->weights, relaxed.points[i]->weights);
   }
   // No rounds: the start, kept.
-  const RelaxationOutcome none = relax_spacing(mesh, start, d_hex, 0, cover_limit, true);
-  EXPECT_EQ(none.kept_round, 0u);
-  EXPECT_EQ(none.spacing, none.start_spacing);
+  const RelaxationOutcome none = relax_spacing(mesh, start, d_hex, 0, {cover_limit}, true);
+  EXPECT_EQ(none.candidates.front().round, 0u);
+  EXPECT_EQ(none.candidates.front().spacing, none.start_spacing);
 }
 
 std::string stem(const ::testing::TestParamInfo<const char*>& mesh) {
@@ -157,14 +160,14 @@ TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
   const RunResult swept = run_pipeline(mesh, request);
   request.max_iterations = 0;
   const RunResult start = run_pipeline(mesh, request);
-  EXPECT_EQ(swept.relaxation.kept_round, 0u);
-  ASSERT_GT(relaxed.relaxation.kept_round, 0u);
-  EXPECT_FALSE(relaxed.relaxation.undone_for_cover);
+  EXPECT_EQ(swept.relaxation.kept, swept.relaxation.candidates.size());  // none: the sweeps' vertices
+  ASSERT_LT(relaxed.relaxation.kept, relaxed.relaxation.candidates.size());
+  const RelaxationCandidate& kept = relaxed.relaxation.candidates[relaxed.relaxation.kept];
   EXPECT_GT(*relaxed.quality.rho, *swept.quality.rho + 0.05);
   EXPECT_LT(*relaxed.quality.nn_cv, 0.5 * *swept.quality.nn_cv);
   EXPECT_LE(*relaxed.quality.cover, 1.1 * *start.quality.cover);
   // The geodesic smallest spacing is at least the straight one the relaxation kept.
-  EXPECT_GE(*relaxed.quality.nn_min, (1 - 1e-3) * relaxed.relaxation.spacing);
+  EXPECT_GE(*relaxed.quality.nn_min, (1 - 1e-3) * kept.spacing);
   for (const VertexId p : relaxed.outcome.positions) {
     const Vec3 at = relaxed.working->mesh.positions()[p];
     EXPECT_NEAR(distance(on_input_position(mesh, relaxed.working->on_input[p]), at), 0, 1e-12);

@@ -25,16 +25,26 @@ struct RelaxationRound {
   double spacing = 0;  // the smallest spacing after the round
 };
 
-struct RelaxationOutcome {
-  // The kept state's: none for a particle on a vertex in no triangle, which
-  // stays where it is.
+// A state the relaxation passed: the most spread one within a cover limit.
+struct RelaxationCandidate {
+  // None for a particle on a vertex in no triangle, which stays where it is.
   std::vector<std::optional<TrianglePoint>> points;
-  double start_spacing = 0, spacing = 0;    // smallest straight-line spacing, at the start and kept
-  double start_cover = 0, cover = 0;        // the largest straight-line distance from a vertex to its nearest particle
-  std::size_t kept_round = 0;               // 0: the start (then `points` are its vertices)
-  bool undone_for_cover = false;            // set by the caller: the kept state's geodesic cover was too large
+  double spacing = 0;      // the smallest straight-line spacing
+  double cover = 0;        // straight_cover
+  std::size_t round = 0;   // 0: the start (then `points` are its vertices)
+};
+
+struct RelaxationOutcome {
+  double start_spacing = 0, start_cover = 0;
+  // Per cover limit given, in its order: the state with the largest
+  // smallest spacing whose straight cover is within it.
+  std::vector<RelaxationCandidate> candidates;
   std::vector<RelaxationRound> rounds;
   double ms = 0;
+  // Set by the caller: the candidate it kept (candidates.size(): none, the
+  // start), and whether a candidate was passed over for its geodesic cover.
+  std::size_t kept = 0;
+  bool passed_over_for_cover = false;
 };
 
 // The largest straight-line distance from a vertex of `mesh` to the nearest
@@ -46,12 +56,13 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& particle
 double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles);
 
 // From particles on the vertices `start` of `mesh`, at most `max_rounds`
-// rounds (0: the start as it is). `d_hex` sets the scale. Every
-// kCheckEvery rounds the state is a candidate, kept where its smallest
-// spacing is the largest so far and its straight_cover at most
-// `cover_limit` (the start is always a candidate). Deterministic: the same
-// mesh and start give the same bits. Unless `quiet`, a progress line.
+// rounds (0: the start as it is): first kFoamRounds pushing for a radius a
+// little over the hexagonal spacing `d_hex`, which evens out the density
+// (every particle is pushed from all sides, so no vacancy stays), then
+// rounds whose radius grows from the smallest spacing reached. Every few
+// rounds the state is a candidate for each of `cover_limits`. Deterministic:
+// the same mesh and start give the same bits. Unless `quiet`, a progress line.
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
-                                std::size_t max_rounds, double cover_limit, bool quiet);
+                                std::size_t max_rounds, const std::vector<double>& cover_limits, bool quiet);
 
 }  // namespace meshparticles

@@ -220,41 +220,43 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
                    : spread.cycled  ? "cycle"
                    : spread.stalled ? "stalled"
                                     : "max_iterations";
-  // Then off the vertices: all particles pushed apart at once, and the
-  // points they reach made vertices of the working mesh. The relaxation
-  // keeps no state whose cover (in straight lines, with a margin for the
-  // geodesic's excess) passes kSpreadCoverShare of the farthest start's.
-  const std::vector<VertexId> swept_positions = result.outcome.positions;
+  // Then off the vertices: all particles pushed apart at once. Of the
+  // states it passed, the most spread one whose geodesic cover is within
+  // kSpreadCoverShare of the farthest start's is kept: candidates within that
+  // share in straight lines, then within it over kStraightCoverMargin,
+  // each inserted into the working mesh and its cover measured, the first
+  // that passes kept (else the sweeps' vertices).
   const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);
-  const double start_cover = largest_finite(
-      distance_to_nearest_particle(surface, request.distances.geodesics.method, result.start));
+  const GeodesicMethod method = request.distances.geodesics.method;
+  const double cover_limit = kSpreadCoverShare * largest_finite(distance_to_nearest_particle(surface, method, result.start));
   result.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
-    const double cover_limit = kSpreadCoverShare * start_cover / kStraightCoverMargin;
-    return relax_spacing(surface, swept_positions, d_hex, relax_rounds, cover_limit, request.quiet);
+    return relax_spacing(surface, result.outcome.positions, d_hex, relax_rounds,
+                         {cover_limit, cover_limit / kStraightCoverMargin}, request.quiet);
   });
-  if (result.relaxation.kept_round > 0) {
+  RelaxationOutcome& relaxation = result.relaxation;
+  for (std::size_t k = 0; k < relaxation.candidates.size() && relaxation.kept == relaxation.candidates.size(); ++k) {
+    const RelaxationCandidate& candidate = relaxation.candidates[k];
+    if (candidate.round == 0 || (k > 0 && candidate.round == relaxation.candidates[k - 1].round)) continue;
     std::vector<TrianglePoint> moving;
     std::vector<std::size_t> movers;
-    for (std::size_t i = 0; i < result.relaxation.points.size(); ++i) {
-      if (!result.relaxation.points[i]) continue;
-      moving.push_back(*result.relaxation.points[i]);
+    for (std::size_t i = 0; i < candidate.points.size(); ++i) {
+      if (!candidate.points[i]) continue;
+      moving.push_back(*candidate.points[i]);
       movers.push_back(i);
     }
-    InsertedPoints inserted = insert_points(*working, mesh, moving);
-    for (std::size_t k = 0; k < movers.size(); ++k) result.outcome.positions[movers[k]] = inserted.vertices[k];
+    InsertedPoints inserted = insert_points(*swept, mesh, moving);
+    std::vector<VertexId> positions = result.outcome.positions;
+    for (std::size_t m = 0; m < movers.size(); ++m) positions[movers[m]] = inserted.vertices[m];
+    if (largest_finite(distance_to_nearest_particle(inserted.refined.mesh, method, positions)) > cover_limit) {
+      relaxation.passed_over_for_cover = true;
+      continue;
+    }
+    relaxation.kept = k;
+    result.outcome.positions = std::move(positions);
     working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
   }
   result.seconds.particles = seconds_since(particles_started);
-
   measure_spread(result, working, label);
-  // The margin did not hold (a hole across a crease, where a straight line
-  // is far shorter than the geodesic): the sweeps' vertices instead.
-  if (result.relaxation.kept_round > 0 && result.quality.cover &&
-      *result.quality.cover * d_hex > kSpreadCoverShare * start_cover) {
-    result.relaxation.undone_for_cover = true;
-    result.outcome.positions = swept_positions;
-    measure_spread(result, swept, label);
-  }
   result.seconds.total = result.seconds.particles + result.seconds.geodesics + result.seconds.quality;
   return result;
 }

@@ -38,14 +38,16 @@ inline constexpr double kSpreadMinGain = 1e-3;
 inline constexpr double kSpreadStallGain = 1e-4;
 // spread: rounds of relaxation after the sweeps (docs/ALGORITHM.md,
 // "Relaxation"); it stops earlier where its radius stops growing.
-inline constexpr std::size_t kSpreadRelaxRounds = 300;
+inline constexpr std::size_t kSpreadRelaxRounds = 200;
 // spread's relaxation keeps no state whose covering radius is over this
 // share of the farthest start's (farthest-point sampling is nearly optimal
 // for cover; issue 29 asks no more than 1.1 times it).
 inline constexpr double kSpreadCoverShare = 1.1;
 // The relaxation measures cover in straight lines, shorter than geodesics:
-// its limit is the share above divided by this margin (measured: straight
-// covers 1.2 to 1.7% under fast marching's on the committed meshes).
+// its second candidate is the most spread state within the share above
+// divided by this margin (measured: straight covers 1.2 to 1.7% under fast
+// marching's on the committed meshes), tried where the first's geodesic
+// cover is over the share.
 inline constexpr double kStraightCoverMargin = 1.03;
 struct RunRequest {
   std::string mesh_label;  // names the mesh in messages and reports: its path
@@ -114,7 +116,7 @@ struct RunResult {
   // start and distance_to_nearest are on it. Null for paper (the input).
   std::shared_ptr<const RefinedMesh> working;
   std::vector<SweepRecord> sweeps;  // spread
-  RelaxationOutcome relaxation;     // spread (its points are inserted into `working`)
+  RelaxationOutcome relaxation;     // spread (the kept candidate's points are inserted into `working`)
   std::string stopped;              // spread: converged, cycle, stalled or max_iterations (SpreadOutcome)
   std::vector<VertexId> start;
   RunOutcome outcome;      // the trace (paper) and the final positions

@@ -127,17 +127,18 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
       {"avg_iteration_ms", result.sweeps.empty() ? 0.0 : ms_sum / double(result.sweeps.size())},
       {"sweeps", sweeps}};
   const RelaxationOutcome& relaxation = result.relaxation;
+  const bool relaxed = relaxation.kept < relaxation.candidates.size();
+  nlohmann::json round_spacings = nlohmann::json::array();
+  for (const RelaxationRound& round : relaxation.rounds) round_spacings.push_back(round.spacing / d_hex);
   report["relaxation"] = {{"rounds", relaxation.rounds.size()},
                           {"ms", relaxation.ms},
                           {"start_spacing", relaxation.start_spacing / d_hex},
-                          {"spacing", relaxation.spacing / d_hex},
                           {"start_cover", relaxation.start_cover / d_hex},
-                          {"cover", relaxation.cover / d_hex},
-                          {"kept_round", relaxation.kept_round},
-                          {"undone_for_cover", relaxation.undone_for_cover}};
-  nlohmann::json round_spacings = nlohmann::json::array();
-  for (const RelaxationRound& round : relaxation.rounds) round_spacings.push_back(round.spacing / d_hex);
-  report["relaxation"]["spacing_per_round"] = round_spacings;
+                          {"kept_round", relaxed ? relaxation.candidates[relaxation.kept].round : 0},
+                          {"spacing", relaxed ? relaxation.candidates[relaxation.kept].spacing / d_hex
+                                              : relaxation.start_spacing / d_hex},
+                          {"passed_over_for_cover", relaxation.passed_over_for_cover},
+                          {"spacing_per_round", round_spacings}};
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
   return report;
