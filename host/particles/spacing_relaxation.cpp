@@ -44,7 +44,7 @@ constexpr double kMomentum = 0.8;
 constexpr double kNeighbourReach = 1.5;
 // Rounds between candidates, and the rounds without a gain of kPatienceGain
 // (a share of the spacing) after which the rounds stop.
-constexpr std::size_t kCheckEvery = 5;
+constexpr std::size_t kCheckEvery = 10;
 constexpr std::size_t kPatienceRounds = 60;
 constexpr double kPatienceGain = 1e-4;
 
