@@ -38,7 +38,7 @@ inline constexpr double kSpreadMinGain = 1e-3;
 inline constexpr double kSpreadStallGain = 1e-4;
 // spread: rounds of relaxation after the sweeps (docs/ALGORITHM.md,
 // "Relaxation"); it stops earlier where its radius stops growing.
-inline constexpr std::size_t kSpreadRelaxRounds = 200;
+inline constexpr std::size_t kSpreadRelaxRounds = 150;
 // spread's relaxation keeps no state whose covering radius is over this
 // share of the farthest start's (farthest-point sampling is nearly optimal
 // for cover; issue 29 asks no more than 1.1 times it).
