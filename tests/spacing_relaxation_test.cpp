@@ -108,7 +108,7 @@ TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
   const auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
   const double d_hex = hexagonal_spacing(input.area(), kParticles);
   const double cover_limit = 1.1 * straight_cover(mesh, start);
-  const RelaxationOutcome outcome = relax_spacing(mesh, start, d_hex, 150, {cover_limit}, true);
+  const RelaxationOutcome outcome = relax_spacing(mesh, start, d_hex, 150, {cover_limit}, 0, true);
   ASSERT_EQ(outcome.candidates.size(), 1u);
   const RelaxationCandidate& relaxed = outcome.candidates.front();
   EXPECT_GT(relaxed.round, 0u);
@@ -127,7 +127,7 @@ TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
     for (std::size_t j = i + 1; j < at.size(); ++j) smallest = std::min(smallest, distance(at[i], at[j]));
   }
   EXPECT_NEAR(smallest, relaxed.spacing, 1e-9 * d_hex);
-  const RelaxationOutcome again = relax_spacing(mesh, start, d_hex, 150, {cover_limit}, true);
+  const RelaxationOutcome again = relax_spacing(mesh, start, d_hex, 150, {cover_limit}, 0, true);
   const auto& again_points = again.candidates.front().points;
   ASSERT_EQ(again_points.size(), relaxed.points.size());
   for (std::size_t i = 0; i < at.size(); ++i) {
@@ -135,9 +135,23 @@ TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
     EXPECT_EQ(again_points[i]->weights, relaxed.points[i]->weights);
   }
   // No rounds: the start, kept.
-  const RelaxationOutcome none = relax_spacing(mesh, start, d_hex, 0, {cover_limit}, true);
+  const RelaxationOutcome none = relax_spacing(mesh, start, d_hex, 0, {cover_limit}, 0, true);
   EXPECT_EQ(none.candidates.front().round, 0u);
   EXPECT_EQ(none.candidates.front().spacing, none.start_spacing);
+}
+
+// Two particles on one point are pushed apart too (a pair at distance 0 has
+// no direction of its own: it takes one of the triangle's).
+TEST(Relaxation, SeparatesParticlesOnOnePoint) {
+  const SurfaceMesh mesh = refine_by_midpoints(committed("sphere.off"), 1).mesh;
+  constexpr std::size_t kParticles = 64;
+  auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
+  start.back() = start.front();
+  const double d_hex = hexagonal_spacing(mesh.area(), kParticles);
+  const RelaxationOutcome outcome = relax_spacing(mesh, start, d_hex, 150, {1e9}, 0, true);
+  EXPECT_EQ(outcome.start_spacing, 0.0);
+  EXPECT_GT(outcome.candidates.front().round, 0u);
+  EXPECT_GT(outcome.candidates.front().spacing, 0.8 * d_hex);
 }
 
 std::string stem(const ::testing::TestParamInfo<const char*>& mesh) {

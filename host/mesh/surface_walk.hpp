@@ -28,6 +28,12 @@ class SurfaceWalk {
   // A triangle holding vertex v (none: the vertex is in no triangle).
   bool first_triangle(VertexId v, std::uint32_t& triangle) const;
   Vec3 normal(std::uint32_t triangle) const { return normals_[triangle]; }  // unit (zero if degenerate)
+  // The unit direction of the triangle's first edge (zero if it has no length).
+  Vec3 first_edge_direction(std::uint32_t triangle) const {
+    const Triangle& c = mesh_.triangles()[triangle];
+    const Vec3 edge = mesh_.positions()[c[1]] - mesh_.positions()[c[0]];
+    return norm(edge) > 0 ? (1.0 / norm(edge)) * edge : Vec3{};
+  }
 
  private:
   SurfaceLocation nearest_on(std::uint32_t triangle, Vec3 target) const;

@@ -30,7 +30,7 @@ struct RelaxationCandidate {
   // None for a particle on a vertex in no triangle, which stays where it is.
   std::vector<std::optional<TrianglePoint>> points;
   double spacing = 0;      // the smallest straight-line spacing
-  double cover = 0;        // straight_cover
+  double cover = 0;        // straight_cover, scaled as at the start (relax_spacing)
   std::size_t round = 0;   // 0: the start (then `points` are its vertices)
 };
 
@@ -45,6 +45,7 @@ struct RelaxationOutcome {
   // start), and whether a candidate was passed over for its geodesic cover.
   std::size_t kept = 0;
   bool passed_over_for_cover = false;
+  bool undone_for_spacing = false;  // the kept candidate's geodesic smallest spacing was under the sweeps' own
 };
 
 // The largest straight-line distance from a vertex of `mesh` to the nearest
@@ -60,9 +61,12 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 // little over the hexagonal spacing `d_hex`, which evens out the density
 // (every particle is pushed from all sides, so no vacancy stays), then
 // rounds whose radius grows from the smallest spacing reached. Every few
-// rounds the state is a candidate for each of `cover_limits`. Deterministic:
+// rounds the state is a candidate for each of `cover_limits`, its straight
+// cover scaled by the start's `start_geodesic_cover` over its straight one
+// (0: unscaled). Deterministic:
 // the same mesh and start give the same bits. Unless `quiet`, a progress line.
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
-                                std::size_t max_rounds, const std::vector<double>& cover_limits, bool quiet);
+                                std::size_t max_rounds, const std::vector<double>& cover_limits,
+                                double start_geodesic_cover, bool quiet);
 
 }  // namespace meshparticles

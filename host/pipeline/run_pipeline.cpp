@@ -229,9 +229,11 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);
   const GeodesicMethod method = request.distances.geodesics.method;
   const double cover_limit = kSpreadCoverShare * largest_finite(distance_to_nearest_particle(surface, method, result.start));
+  const std::vector<VertexId> swept_positions = result.outcome.positions;
   result.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
-    return relax_spacing(surface, result.outcome.positions, d_hex, relax_rounds,
-                         {cover_limit, cover_limit / kStraightCoverMargin}, request.quiet);
+    const double swept_cover = relax_rounds == 0 ? 0.0 : largest_finite(distance_to_nearest_particle(surface, method, swept_positions));
+    return relax_spacing(surface, swept_positions, d_hex, relax_rounds,
+                         {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet);
   });
   RelaxationOutcome& relaxation = result.relaxation;
   for (std::size_t k = 0; k < relaxation.candidates.size() && relaxation.kept == relaxation.candidates.size(); ++k) {
@@ -257,6 +259,16 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   }
   result.seconds.particles = seconds_since(particles_started);
   measure_spread(result, working, label);
+  // Straight lines misjudged the surface (pairs on two sides of a thin part
+  // that do not push each other, but are close around its tip): the
+  // relaxed set is less spread than the sweeps left it, so the sweeps' set.
+  if (relaxation.kept < relaxation.candidates.size() && !result.sweeps.empty() && result.quality.nn_min &&
+      *result.quality.nn_min < (1 - kSpreadMinGain) * result.sweeps.back().min_spacing) {
+    relaxation.kept = relaxation.candidates.size();
+    relaxation.undone_for_spacing = true;
+    result.outcome.positions = swept_positions;
+    measure_spread(result, swept, label);
+  }
   result.seconds.total = result.seconds.particles + result.seconds.geodesics + result.seconds.quality;
   return result;
 }

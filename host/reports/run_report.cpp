@@ -138,6 +138,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
                           {"spacing", relaxed ? relaxation.candidates[relaxation.kept].spacing / d_hex
                                               : relaxation.start_spacing / d_hex},
                           {"passed_over_for_cover", relaxation.passed_over_for_cover},
+                          {"undone_for_spacing", relaxation.undone_for_spacing},
                           {"spacing_per_round", round_spacings}};
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
