@@ -40,7 +40,8 @@ constexpr int kPushesPerRound = 10;
 constexpr double kStepShare = 0.9;
 constexpr double kMomentum = 0.8;
 // The neighbour lists hold the pairs within this many radii, rebuilt when
-// the particles may have used up the margin.
+// two particles may have closed the margin between them (each moved half
+// of it from where it was when the pairs were found).
 constexpr double kNeighbourReach = 1.5;
 // Rounds between candidates (each measures its cover from every vertex: 4%
 // of a 100k-vertex run at n = 4,096 when it was every 5 rounds; the kept
@@ -147,10 +148,13 @@ class Relaxation {
       const double length = norm(step);
       if (length > radius / 4) step = (radius / 4 / length) * step;  // no jump past a neighbour
       p.velocity = step;
-      if (length == 0) continue;
-      const SurfaceLocation moved = walk_.walk(p.triangle, p.at + step);
-      p.triangle = moved.triangle;
-      p.at = moved.at;
+      if (length > 0) {
+        const SurfaceLocation moved = walk_.walk(p.triangle, p.at + step);
+        p.triangle = moved.triangle;
+        p.at = moved.at;
+      }
+      // Every particle's, moved this push or not: one that moved earlier
+      // and stopped may still be the farthest from where the pairs were found.
       largest = std::max(largest, distance(p.at, at_build_[i]));
     }
     moved_ = largest;
@@ -216,6 +220,7 @@ class Relaxation {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
   double reach_ = 0;  // of the pairs
   double moved_ = 0;  // the farthest any particle is from where it was when the pairs were found
+  // (the pairs hold every pair closer than reach_ - 2 moved_)
   std::vector<Vec3> at_build_;
 };
 
