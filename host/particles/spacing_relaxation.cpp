@@ -282,12 +282,7 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
     at.push_back(mesh.positions()[v]);
     facing.push_back(normals[v]);
   }
-  return straight_cover(mesh, at, facing);
-}
-
-double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& particles,
-                      const std::vector<Vec3>& particle_normals) {
-  return straight_cover(mesh, vertex_normals(mesh), particles, particle_normals);
+  return straight_cover(mesh, normals, at, facing);
 }
 
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
@@ -327,7 +322,7 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
       for (int i = 0; i < kPushesPerRound && relaxation.push(radius); ++i) {
       }
       const double spacing = relaxation.smallest_spacing(evening ? radius : target);
-      outcome.rounds.push_back({radius, spacing});
+      outcome.round_spacings.push_back(spacing);
       if (!std::isfinite(spacing)) continue;  // no pair within reach: nothing to compare
       if (!evening) {
         if (spacing > best * (1 + kPatienceGain)) {

@@ -20,11 +20,6 @@
 
 namespace meshparticles {
 
-struct RelaxationRound {
-  double target = 0;   // the radius pushed for, mesh units
-  double spacing = 0;  // the smallest spacing after the round
-};
-
 // A state the relaxation passed: the most spread one within a cover limit.
 struct RelaxationCandidate {
   // None for a particle on a vertex in no triangle, which stays where it is.
@@ -39,7 +34,7 @@ struct RelaxationOutcome {
   // Per cover limit given, in its order: the state with the largest
   // smallest spacing whose straight cover is within it.
   std::vector<RelaxationCandidate> candidates;
-  std::vector<RelaxationRound> rounds;
+  std::vector<double> round_spacings;  // the smallest straight spacing after each round, mesh units
   double ms = 0;
   // Set by the caller: the candidate it kept (candidates.size(): none, the
   // start), and whether a candidate was passed over for its geodesic cover.
@@ -49,11 +44,9 @@ struct RelaxationOutcome {
 };
 
 // The largest straight-line distance from a vertex of `mesh` to the nearest
-// particle facing its way: the covering radius, measured as the relaxation
-// measures spacing (a few tens of milliseconds on a million vertices).
-double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& particles,
-                      const std::vector<Vec3>& particle_normals);
-// The same for particles on vertices (facing as their vertices do).
+// particle on a vertex facing its way: the covering radius, measured as the
+// relaxation measures its candidates' (a few tens of milliseconds on a
+// million vertices).
 double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles);
 
 // From particles on the vertices `start` of `mesh`, at most `max_rounds`

@@ -158,7 +158,10 @@ namespace {
 
 // spread's measurement: the distances of `working` (the mesh the
 // positions are vertices of) and the quality there.
-void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& working, const std::string& label) {
+// `to_nearest`: distance_to_nearest_particle of the positions on `working`
+// where the caller has it already.
+void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& working, const std::string& label,
+                    std::vector<float> to_nearest = {}) {
   const RunRequest& request = result.plan.request;
   result.working = working;
   const SurfaceMesh& measured = working->mesh;
@@ -172,7 +175,9 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   const auto quality_started = std::chrono::steady_clock::now();
   naming_memory_failures(label, "measuring the result", [&] {
     result.distance_to_nearest =
-        distance_to_nearest_particle(measured, request.distances.geodesics.method, result.outcome.positions);
+        to_nearest.empty()
+            ? distance_to_nearest_particle(measured, request.distances.geodesics.method, result.outcome.positions)
+            : std::move(to_nearest);
     result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
                                      result.distance_to_nearest, request.quiet);
   });
@@ -228,14 +233,18 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   // that passes kept (else the sweeps' vertices).
   const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);
   const GeodesicMethod method = request.distances.geodesics.method;
-  const double cover_limit = kSpreadCoverShare * largest_finite(distance_to_nearest_particle(surface, method, result.start));
+  const double cover_limit =
+      relax_rounds == 0 ? 0.0
+                        : kSpreadCoverShare * largest_finite(distance_to_nearest_particle(surface, method, result.start));
   const std::vector<VertexId> swept_positions = result.outcome.positions;
   result.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
-    const double swept_cover = relax_rounds == 0 ? 0.0 : largest_finite(distance_to_nearest_particle(surface, method, swept_positions));
+    const double swept_cover =
+        relax_rounds == 0 ? 0.0 : largest_finite(distance_to_nearest_particle(surface, method, swept_positions));
     return relax_spacing(surface, swept_positions, d_hex, relax_rounds,
                          {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet);
   });
   RelaxationOutcome& relaxation = result.relaxation;
+  std::vector<float> kept_to_nearest;  // the kept candidate's, for the measurement
   for (std::size_t k = 0; k < relaxation.candidates.size() && relaxation.kept == relaxation.candidates.size(); ++k) {
     const RelaxationCandidate& candidate = relaxation.candidates[k];
     if (candidate.round == 0 || (k > 0 && candidate.round == relaxation.candidates[k - 1].round)) continue;
@@ -249,16 +258,18 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
     InsertedPoints inserted = insert_points(*swept, mesh, moving);
     std::vector<VertexId> positions = result.outcome.positions;
     for (std::size_t m = 0; m < movers.size(); ++m) positions[movers[m]] = inserted.vertices[m];
-    if (largest_finite(distance_to_nearest_particle(inserted.refined.mesh, method, positions)) > cover_limit) {
+    std::vector<float> to_nearest = distance_to_nearest_particle(inserted.refined.mesh, method, positions);
+    if (largest_finite(to_nearest) > cover_limit) {
       relaxation.passed_over_for_cover = true;
       continue;
     }
     relaxation.kept = k;
+    kept_to_nearest = std::move(to_nearest);
     result.outcome.positions = std::move(positions);
     working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
   }
   result.seconds.particles = seconds_since(particles_started);
-  measure_spread(result, working, label);
+  measure_spread(result, working, label, std::move(kept_to_nearest));
   // Straight lines misjudged the surface (pairs on two sides of a thin part
   // that do not push each other, but are close around its tip): the
   // relaxed set is less spread than the sweeps left it, so the sweeps' set.

@@ -129,8 +129,8 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
   const RelaxationOutcome& relaxation = result.relaxation;
   const bool relaxed = relaxation.kept < relaxation.candidates.size();
   nlohmann::json round_spacings = nlohmann::json::array();
-  for (const RelaxationRound& round : relaxation.rounds) round_spacings.push_back(round.spacing / d_hex);
-  report["relaxation"] = {{"rounds", relaxation.rounds.size()},
+  for (const double spacing : relaxation.round_spacings) round_spacings.push_back(spacing / d_hex);
+  report["relaxation"] = {{"rounds", relaxation.round_spacings.size()},
                           {"ms", relaxation.ms},
                           {"start_spacing", relaxation.start_spacing / d_hex},
                           {"start_cover", relaxation.start_cover / d_hex},
