@@ -188,6 +188,61 @@ TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
   }
 }
 
+// Where the relaxation is not kept (here: one round, which cannot pass the
+// sweeps' spacing), the sweeps go on on the working mesh cut once more,
+// and that set is kept: evener than the sweeps' own, its cover within 1.1x
+// the farthest start's, on vertices that lie on the input surface.
+TEST(SpreadRun, SweepsGoOnFinerWhereTheRelaxationIsNotKept) {
+  const SurfaceMesh mesh = committed("sphere.off");
+  RunRequest request;
+  request.mesh_label = "sphere.off";
+  request.particles = 256;
+  request.quiet = true;
+  request.relax_rounds = 1;
+  const RunResult finer = run_pipeline(mesh, request);
+  request.relax_rounds = 0;
+  const RunResult swept = run_pipeline(mesh, request);
+  request.max_iterations = 0;
+  const RunResult start = run_pipeline(mesh, request);
+  EXPECT_FALSE(swept.finer_sweeps.tried);  // --relax-rounds 0: the sweeps' vertices, as asked
+  ASSERT_EQ(finer.relaxation.kept, finer.relaxation.candidates.size());
+  ASSERT_TRUE(finer.finer_sweeps.tried);
+  ASSERT_TRUE(finer.finer_sweeps.kept);
+  EXPECT_FALSE(finer.finer_sweeps.sweeps.empty());
+  EXPECT_EQ(finer.working->mesh.vertex_count(), finer.finer_sweeps.vertices);
+  EXPECT_GT(finer.working->mesh.vertex_count(), 3 * swept.working->mesh.vertex_count());
+  EXPECT_GT(*finer.quality.rho, *swept.quality.rho + 0.02);
+  EXPECT_LT(*finer.quality.nn_cv, *swept.quality.nn_cv);
+  EXPECT_LE(*finer.quality.cover, 1.1 * *start.quality.cover);
+  EXPECT_NEAR(finer.finer_sweeps.cover, *finer.quality.cover * finer.quality.d_hex, 1e-9 * finer.quality.d_hex);
+  for (const VertexId p : finer.outcome.positions) {
+    const Vec3 at = finer.working->mesh.positions()[p];
+    EXPECT_NEAR(distance(on_input_position(mesh, finer.working->on_input[p]), at), 0, 1e-12);
+  }
+}
+
+// ... and not kept where their cover passes 1.1x the farthest start's
+// (the torus at n = 128): the run ends on the sweeps' own vertices.
+TEST(SpreadRun, FinerSweepsOverTheCoverLimitAreNotKept) {
+  const SurfaceMesh mesh = committed("torus.off");
+  RunRequest request;
+  request.mesh_label = "torus.off";
+  request.particles = 128;
+  request.quiet = true;
+  request.relax_rounds = 1;
+  const RunResult finer = run_pipeline(mesh, request);
+  request.relax_rounds = 0;
+  const RunResult swept = run_pipeline(mesh, request);
+  request.max_iterations = 0;
+  const RunResult start = run_pipeline(mesh, request);
+  ASSERT_TRUE(finer.finer_sweeps.tried);
+  EXPECT_GT(finer.finer_sweeps.cover, 1.1 * *start.quality.cover * start.quality.d_hex);
+  EXPECT_FALSE(finer.finer_sweeps.kept);
+  EXPECT_EQ(finer.outcome.positions, swept.outcome.positions);
+  EXPECT_EQ(finer.working->mesh.vertex_count(), swept.working->mesh.vertex_count());
+  EXPECT_EQ(*finer.quality.rho, *swept.quality.rho);
+}
+
 // `quality` on points inside triangles: inserted, not snapped, so each
 // nearest-neighbour distance is within 1% of the exact one (on the sphere:
 // the great-circle distance between the points pushed out to the sphere).

@@ -9,6 +9,7 @@
 #include "backends/local_device_field_backend.hpp"
 #include "common/memory_limits.hpp"
 #include "common/user_error.hpp"
+#include "mesh/point_cloud_tree.hpp"
 #include "mesh/point_insertion.hpp"
 #include "pipeline/default_backend.hpp"
 #include "pipeline/distances.hpp"
@@ -196,6 +197,80 @@ double largest_finite(const std::vector<float>& values) {
   return largest;
 }
 
+// The vertices of `finer` at the places of `positions` on `coarse` (the
+// nearest: a finer midpoint refinement of the input holds the coarser's
+// vertices); none where two would share one.
+std::optional<std::vector<VertexId>> same_places(const SurfaceMesh& coarse, const SurfaceMesh& finer,
+                                                 const std::vector<VertexId>& positions) {
+  const PointCloud cloud{finer.positions()};
+  const PointCloudTree tree(3, cloud);
+  std::vector<VertexId> mapped;
+  for (const VertexId v : positions) {
+    const Vec3& p = coarse.positions()[v];
+    const double query[3] = {p.x, p.y, p.z};
+    std::uint32_t nearest = 0;
+    double squared = 0;
+    tree.knnSearch(query, 1, &nearest, &squared);
+    mapped.push_back(nearest);
+  }
+  std::vector<VertexId> sorted = mapped;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return std::nullopt;
+  return mapped;
+}
+
+// Where the relaxation was not kept (the surface folds or comes within a
+// spacing of itself, and straight lines misjudge it), the sweeps go on from
+// where they stopped on the working mesh cut kFinerSweepsRounds rounds
+// finer: farthest-point optimization on vertices is held back by how coarse
+// they are. Their result is kept
+// where its geodesic cover is within `cover_limit` and its smallest
+// spacing measures wider than the set `result` holds now (the sweeps' own
+// smallest spacings are each mover's when it moved, not the final set's).
+void sweep_finer(const SurfaceMesh& mesh, RunResult& result, double cover_limit) {
+  const RunRequest& request = result.plan.request;
+  const std::string& label = request.mesh_label;
+  WorkingMeshPlan finer_plan = result.plan.working_mesh;
+  finer_plan.levels += kFinerSweepsRounds;
+  if (result.sweeps.empty() || refined_vertex_count(mesh, finer_plan.levels) > finer_plan.max_vertices) return;
+  const auto started = std::chrono::steady_clock::now();
+  FinerSweeps& finer = result.finer_sweeps;
+  finer.tried = true;
+  const auto finer_mesh = naming_memory_failures(label, "refining the working mesh further", [&] {
+    return std::make_shared<RefinedMesh>(build_working_mesh(mesh, finer_plan));
+  });
+  finer.vertices = finer_mesh->mesh.vertex_count();
+  const std::optional<std::vector<VertexId>> from =
+      same_places(result.working->mesh, finer_mesh->mesh, result.outcome.positions);
+  if (!from) return;
+  const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
+  const GeodesicMethod method = request.distances.geodesics.method;
+  SpreadOutcome spread = naming_memory_failures(label, "spreading the particles further", [&] {
+    const auto solver = make_geodesic_solver(finer_mesh->mesh, method);
+    return optimize_farthest_points(finer_mesh->mesh, *solver, *from, request.max_iterations, kSpreadMinGain * d_hex,
+                                    kSpreadStallGain * d_hex, request.quiet);
+  });
+  finer.sweeps = spread.sweeps;
+  std::vector<float> to_nearest = distance_to_nearest_particle(finer_mesh->mesh, method, spread.positions);
+  finer.cover = largest_finite(to_nearest);
+  result.seconds.particles += seconds_since(started);
+  if (finer.cover > cover_limit) return;
+  RunResult before = result;
+  result.outcome.positions = std::move(spread.positions);
+  measure_spread(result, finer_mesh, label, std::move(to_nearest));
+  if (result.quality.nn_min && before.quality.nn_min && *result.quality.nn_min > *before.quality.nn_min) {
+    result.finer_sweeps.kept = true;
+    return;
+  }
+  // Measured less spread (the sweeps' own spacings are fast marching's
+  // from each mover, the measurement's between every pair): the set before.
+  const FinerSweeps tried = result.finer_sweeps;
+  const RunTimes seconds = result.seconds;
+  result = std::move(before);
+  result.finer_sweeps = tried;
+  result.seconds = seconds;
+}
+
 // spread: the start and farthest-point optimization on the working mesh,
 // then the quality there, through a store planned for that mesh.
 RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
@@ -280,6 +355,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
     result.outcome.positions = swept_positions;
     measure_spread(result, swept, label);
   }
+  if (relax_rounds > 0 && relaxation.kept == relaxation.candidates.size()) sweep_finer(mesh, result, cover_limit);
   result.seconds.total = result.seconds.particles + result.seconds.geodesics + result.seconds.quality;
   return result;
 }

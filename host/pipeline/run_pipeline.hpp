@@ -49,6 +49,11 @@ inline constexpr double kSpreadCoverShare = 1.1;
 // marching's on the committed meshes), tried where the first's geodesic
 // cover is over the share.
 inline constexpr double kStraightCoverMargin = 1.03;
+// spread: where the relaxation is not kept, the sweeps go on on the working
+// mesh cut this many more midpoint rounds (each about four times the
+// vertices): a finer mesh lets farthest-point optimization spread further
+// (docs/ALGORITHM.md, "Where the relaxation is not kept").
+inline constexpr unsigned kFinerSweepsRounds = 1;
 struct RunRequest {
   std::string mesh_label;  // names the mesh in messages and reports: its path
   std::size_t particles = 1024;
@@ -108,6 +113,15 @@ struct DistancesUsed {
   LocalDistances::Statistics balls;      // local
 };
 
+// spread's sweeps on a finer working mesh, where the relaxation was not kept.
+struct FinerSweeps {
+  bool tried = false;            // the relaxation was not kept and a finer mesh fits the vertex cap
+  bool kept = false;             // they spread further within the cover limit, and measured so
+  std::size_t vertices = 0;      // of the finer mesh
+  std::vector<SweepRecord> sweeps;
+  double cover = 0;              // their geodesic cover on the finer mesh, mesh units
+};
+
 struct RunResult {
   RunPlan plan;
   std::string device;      // "serial" or the OpenCL device's name
@@ -117,6 +131,7 @@ struct RunResult {
   std::shared_ptr<const RefinedMesh> working;
   std::vector<SweepRecord> sweeps;  // spread
   RelaxationOutcome relaxation;     // spread (the kept candidate's points are inserted into `working`)
+  FinerSweeps finer_sweeps;         // spread
   std::string stopped;              // spread: converged, cycle, stalled or max_iterations (SpreadOutcome)
   std::vector<VertexId> start;
   RunOutcome outcome;      // the trace (paper) and the final positions

@@ -95,20 +95,25 @@ nlohmann::json seconds_json(const RunTimes& seconds) {
           {"total", seconds.total}};
 }
 
+// Sweeps of farthest-point optimization, spacings in hexagonal spacings.
+nlohmann::json sweeps_json(const std::vector<SweepRecord>& sweeps, double d_hex) {
+  nlohmann::json records = nlohmann::json::array();
+  for (const SweepRecord& sweep : sweeps) {
+    records.push_back({{"moved", sweep.moved},
+                       {"ms", sweep.ms},
+                       {"min_spacing", sweep.min_spacing / d_hex},
+                       {"mean_spacing", sweep.mean_spacing / d_hex}});
+  }
+  return records;
+}
+
 // spread: the sweeps of farthest-point optimization in place of the
 // energy trace, and the working mesh.
 nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
                              const std::optional<std::string>& mesh_sha256) {
   const double d_hex = result.quality.d_hex;
-  nlohmann::json sweeps = nlohmann::json::array();
   double ms_sum = 0;
-  for (const SweepRecord& sweep : result.sweeps) {
-    sweeps.push_back({{"moved", sweep.moved},
-                      {"ms", sweep.ms},
-                      {"min_spacing", sweep.min_spacing / d_hex},
-                      {"mean_spacing", sweep.mean_spacing / d_hex}});
-    ms_sum += sweep.ms;
-  }
+  for (const SweepRecord& sweep : result.sweeps) ms_sum += sweep.ms;
   const SurfaceMesh& working = result.working->mesh;
   nlohmann::json report = {
       {"version", program_version()},
@@ -125,7 +130,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
       {"stopped", result.stopped},
       {"final_energy", result.quality.energy},
       {"avg_iteration_ms", result.sweeps.empty() ? 0.0 : ms_sum / double(result.sweeps.size())},
-      {"sweeps", sweeps}};
+      {"sweeps", sweeps_json(result.sweeps, d_hex)}};
   const RelaxationOutcome& relaxation = result.relaxation;
   const bool relaxed = relaxation.kept < relaxation.candidates.size();
   nlohmann::json round_spacings = nlohmann::json::array();
@@ -140,6 +145,12 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
                           {"passed_over_for_cover", relaxation.passed_over_for_cover},
                           {"undone_for_spacing", relaxation.undone_for_spacing},
                           {"spacing_per_round", round_spacings}};
+  const FinerSweeps& finer = result.finer_sweeps;
+  report["finer_sweeps"] = {{"tried", finer.tried},
+                            {"kept", finer.kept},
+                            {"vertices", finer.vertices},
+                            {"cover", finer.cover / d_hex},
+                            {"sweeps", sweeps_json(finer.sweeps, d_hex)}};
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
   return report;
