@@ -245,13 +245,13 @@ void sweep_finer(const SurfaceMesh& mesh, RunResult& result, double cover_limit)
   if (!from) return;
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   const GeodesicMethod method = request.distances.geodesics.method;
+  const auto solver = make_geodesic_solver(finer_mesh->mesh, method);
   SpreadOutcome spread = naming_memory_failures(label, "spreading the particles further", [&] {
-    const auto solver = make_geodesic_solver(finer_mesh->mesh, method);
     return optimize_farthest_points(finer_mesh->mesh, *solver, *from, request.max_iterations, kSpreadMinGain * d_hex,
                                     kSpreadStallGain * d_hex, request.quiet);
   });
   finer.sweeps = spread.sweeps;
-  std::vector<float> to_nearest = distance_to_nearest_particle(finer_mesh->mesh, method, spread.positions);
+  std::vector<float> to_nearest = distance_to_nearest_particle(*solver, finer_mesh->mesh, spread.positions);
   finer.cover = largest_finite(to_nearest);
   result.seconds.particles += seconds_since(started);
   if (finer.cover > cover_limit) return;
@@ -310,11 +310,11 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   const GeodesicMethod method = request.distances.geodesics.method;
   const double cover_limit =
       relax_rounds == 0 ? 0.0
-                        : kSpreadCoverShare * largest_finite(distance_to_nearest_particle(surface, method, result.start));
+                        : kSpreadCoverShare * largest_finite(distance_to_nearest_particle(*solver, surface, result.start));
   const std::vector<VertexId> swept_positions = result.outcome.positions;
   result.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
     const double swept_cover =
-        relax_rounds == 0 ? 0.0 : largest_finite(distance_to_nearest_particle(surface, method, swept_positions));
+        relax_rounds == 0 ? 0.0 : largest_finite(distance_to_nearest_particle(*solver, surface, swept_positions));
     return relax_spacing(surface, swept_positions, d_hex, relax_rounds,
                          {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet);
   });

@@ -21,9 +21,14 @@ constexpr std::size_t kProgressParticles = 2000;
 
 std::vector<float> distance_to_nearest_particle(const SurfaceMesh& mesh, GeodesicMethod method,
                                                 std::span<const VertexId> positions) {
+  return distance_to_nearest_particle(*make_geodesic_solver(mesh, method), mesh, positions);
+}
+
+std::vector<float> distance_to_nearest_particle(const GeodesicSolver& solver, const SurfaceMesh& mesh,
+                                                std::span<const VertexId> positions) {
   std::vector<double> distances(mesh.vertex_count());
   SolverScratch scratch;
-  make_geodesic_solver(mesh, method)->solve(positions, distances, scratch);
+  solver.solve(positions, distances, scratch);
   return std::vector<float>(distances.begin(), distances.end());
 }
 
