@@ -243,6 +243,67 @@ TEST(SpreadRun, FinerSweepsOverTheCoverLimitAreNotKept) {
   EXPECT_EQ(*finer.quality.rho, *swept.quality.rho);
 }
 
+// `quality` of a run whose sweeps went on on a finer mesh measures the
+// points on that mesh, where they are vertices, and gives back the run's
+// own figures.
+TEST(QualityOfSurfacePoints, AFinerSweepsRunIsMeasuredOnItsOwnMesh) {
+  const SurfaceMesh mesh = committed("sphere.off");
+  RunRequest run;
+  run.mesh_label = "sphere.off";
+  run.particles = 256;
+  run.quiet = true;
+  run.relax_rounds = 1;
+  const RunResult finer = run_pipeline(mesh, run);
+  ASSERT_TRUE(finer.finer_sweeps.kept);
+  PointSetsRequest request;
+  request.names = {"points"};
+  request.points.emplace_back();
+  for (const VertexId p : finer.outcome.positions) request.points[0].push_back(finer.working->mesh.positions()[p]);
+  request.geodesics.quiet = true;
+  const PointSetsMeasurement measured = measure_point_sets(mesh, request);
+  EXPECT_EQ(measured.measuring.refined.mesh.vertex_count(), finer.working->mesh.vertex_count());
+  EXPECT_LT(measured.sets[0].snapped.largest_snap, 1e-12);
+  EXPECT_NEAR(*measured.sets[0].quality.rho, *finer.quality.rho, 1e-9);
+  EXPECT_NEAR(*measured.sets[0].quality.cover, *finer.quality.cover, 1e-9);
+}
+
+// A point is placed on the surface sheet it lies on, not on a nearer
+// vertex's sheet: two parallel squares a hair apart, the upper one's
+// vertices shifted half a cell, each point of the upper one nearest in
+// space to a vertex of the lower one.
+TEST(QualityOfSurfacePoints, PointsOnAThinWallAreMeasuredOnTheirOwnSide) {
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  constexpr int kCells = 8;
+  constexpr double kGap = 0.01;
+  for (int sheet = 0; sheet < 2; ++sheet) {
+    const auto first = VertexId(positions.size());
+    const double shift = sheet == 0 ? 0.0 : 0.5;
+    for (int i = 0; i <= kCells; ++i) {
+      for (int j = 0; j <= kCells; ++j) positions.push_back({i + shift, j + shift, sheet * kGap});
+    }
+    const auto at = [&](int i, int j) { return VertexId(first + i * (kCells + 1) + j); };
+    for (int i = 0; i < kCells; ++i) {
+      for (int j = 0; j < kCells; ++j) {
+        triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  }
+  const SurfaceMesh mesh(positions, triangles);
+  std::vector<Vec3> points;  // on the upper sheet, above lower vertices
+  for (int i = 2; i <= 6; i += 2) {
+    for (int j = 2; j <= 6; j += 2) points.push_back({double(i), double(j) + 0.1, kGap});
+  }
+  PointSetsRequest request;
+  request.names = {"points"};
+  request.points = {points};
+  request.uniform_levels = 0;  // the mesh as it is (refined, the upper sheet would have a vertex nearer)
+  request.geodesics.quiet = true;
+  const PointSetsMeasurement measured = measure_point_sets(mesh, request);
+  EXPECT_LT(measured.sets[0].snapped.largest_snap, 1e-9);
+}
+
 // `quality` on points inside triangles: inserted, not snapped, so each
 // nearest-neighbour distance is within 1% of the exact one (on the sphere:
 // the great-circle distance between the points pushed out to the sphere).

@@ -21,6 +21,13 @@ WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particle
   return plan;
 }
 
+std::optional<WorkingMeshPlan> plan_finer_working_mesh(const SurfaceMesh& input, const WorkingMeshPlan& plan) {
+  WorkingMeshPlan finer = plan;
+  finer.levels += kFinerSweepsRounds;
+  if (refined_vertex_count(input, finer.levels) > finer.max_vertices) return std::nullopt;
+  return finer;
+}
+
 RefinedMesh build_working_mesh(const SurfaceMesh& input, const WorkingMeshPlan& plan) {
   return refine_by_midpoints_then_long_edges(input, plan.levels, plan.longest_edge, plan.max_vertices);
 }

@@ -7,6 +7,7 @@
 // for the run and for `quality`, which measures a spread run's particles
 // on the same mesh.
 #include <cstddef>
+#include <optional>
 
 #include "mesh/midpoint_refinement.hpp"
 
@@ -34,6 +35,13 @@ struct WorkingMeshPlan {
 };
 
 WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particles, double vertices_per_particle);
+
+// Where spread's relaxation is not kept, its sweeps go on on the working
+// mesh cut this many midpoint rounds more (each about four times the
+// vertices): a finer mesh lets farthest-point optimization spread further
+// (docs/ALGORITHM.md, "Finer sweeps"). None where that passes the cap.
+inline constexpr unsigned kFinerSweepsRounds = 1;
+std::optional<WorkingMeshPlan> plan_finer_working_mesh(const SurfaceMesh& input, const WorkingMeshPlan& plan);
 RefinedMesh build_working_mesh(const SurfaceMesh& input, const WorkingMeshPlan& plan);
 
 }  // namespace meshparticles

@@ -15,6 +15,7 @@
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/sigma_check.hpp"
+#include "quality/particle_sets.hpp"
 
 namespace meshparticles {
 
@@ -197,9 +198,9 @@ double largest_finite(const std::vector<float>& values) {
   return largest;
 }
 
-// The vertices of `finer` at the places of `positions` on `coarse` (the
-// nearest: a finer midpoint refinement of the input holds the coarser's
-// vertices); none where two would share one.
+// The vertices of `finer` at the places of `positions` on `coarse` (a
+// finer midpoint refinement of the input holds the coarser's vertices);
+// none where one has no vertex there, or two would share one.
 std::optional<std::vector<VertexId>> same_places(const SurfaceMesh& coarse, const SurfaceMesh& finer,
                                                  const std::vector<VertexId>& positions) {
   const PointCloud cloud{finer.positions()};
@@ -211,6 +212,7 @@ std::optional<std::vector<VertexId>> same_places(const SurfaceMesh& coarse, cons
     std::uint32_t nearest = 0;
     double squared = 0;
     tree.knnSearch(query, 1, &nearest, &squared);
+    if (std::sqrt(squared) > kOnVertexExactly * coarse.mean_edge_length()) return std::nullopt;
     mapped.push_back(nearest);
   }
   std::vector<VertexId> sorted = mapped;
@@ -222,7 +224,7 @@ std::optional<std::vector<VertexId>> same_places(const SurfaceMesh& coarse, cons
 // Where the relaxation was not kept (the surface folds or comes within a
 // spacing of itself, and straight lines misjudge it), the sweeps go on from
 // where they stopped on the working mesh cut kFinerSweepsRounds rounds
-// finer: farthest-point optimization on vertices is held back by how coarse
+// finer (plan_finer_working_mesh): farthest-point optimization on vertices is held back by how coarse
 // they are. Their result is kept
 // where its geodesic cover is within `cover_limit` and its smallest
 // spacing measures wider than the set `result` holds now (the sweeps' own
@@ -230,14 +232,13 @@ std::optional<std::vector<VertexId>> same_places(const SurfaceMesh& coarse, cons
 void sweep_finer(const SurfaceMesh& mesh, RunResult& result, double cover_limit) {
   const RunRequest& request = result.plan.request;
   const std::string& label = request.mesh_label;
-  WorkingMeshPlan finer_plan = result.plan.working_mesh;
-  finer_plan.levels += kFinerSweepsRounds;
-  if (result.sweeps.empty() || refined_vertex_count(mesh, finer_plan.levels) > finer_plan.max_vertices) return;
+  const std::optional<WorkingMeshPlan> finer_plan = plan_finer_working_mesh(mesh, result.plan.working_mesh);
+  if (result.sweeps.empty() || !finer_plan) return;
   const auto started = std::chrono::steady_clock::now();
   FinerSweeps& finer = result.finer_sweeps;
   finer.tried = true;
   const auto finer_mesh = naming_memory_failures(label, "refining the working mesh further", [&] {
-    return std::make_shared<RefinedMesh>(build_working_mesh(mesh, finer_plan));
+    return std::make_shared<RefinedMesh>(build_working_mesh(mesh, *finer_plan));
   });
   finer.vertices = finer_mesh->mesh.vertex_count();
   const std::optional<std::vector<VertexId>> from =

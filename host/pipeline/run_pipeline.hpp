@@ -49,11 +49,6 @@ inline constexpr double kSpreadCoverShare = 1.1;
 // marching's on the committed meshes), tried where the first's geodesic
 // cover is over the share.
 inline constexpr double kStraightCoverMargin = 1.03;
-// spread: where the relaxation is not kept, the sweeps go on on the working
-// mesh cut this many more midpoint rounds (each about four times the
-// vertices): a finer mesh lets farthest-point optimization spread further
-// (docs/ALGORITHM.md, "Where the relaxation is not kept").
-inline constexpr unsigned kFinerSweepsRounds = 1;
 struct RunRequest {
   std::string mesh_label;  // names the mesh in messages and reports: its path
   std::size_t particles = 1024;

@@ -1,14 +1,40 @@
 #include "quality/particle_sets.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 #include <utility>
 
+#include "mesh/nearest_surface_point.hpp"
+#include "mesh/point_cloud_tree.hpp"
 #include "mesh/point_insertion.hpp"
-#include "mesh/surface_walk.hpp"
 #include "particles/spread_working_mesh.hpp"
 
 namespace meshparticles {
+
+namespace {
+
+// The share of a set's points on the working mesh's vertices above which
+// its finer mesh is tried.
+constexpr double kFinerMeshHint = 0.1;
+
+// The share of `points` within `tolerance` of a vertex of `mesh`.
+double share_on_vertices(const SurfaceMesh& mesh, const std::vector<Vec3>& points, double tolerance) {
+  if (points.empty()) return 1;
+  const PointCloud cloud{mesh.positions()};
+  const PointCloudTree tree(3, cloud);
+  std::size_t on = 0;
+  for (const Vec3& p : points) {
+    const double query[3] = {p.x, p.y, p.z};
+    std::uint32_t v = 0;
+    double squared = 0;
+    tree.knnSearch(query, 1, &v, &squared);
+    on += std::sqrt(squared) <= tolerance ? 1 : 0;
+  }
+  return double(on) / double(points.size());
+}
+
+}  // namespace
 
 MeasuringMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vector<Vec3>>& sets,
                              std::optional<unsigned> uniform_levels, bool spread) {
@@ -25,13 +51,29 @@ MeasuringMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vec
   // Points on the input's vertices (a paper run's, a vertex sampler's) are
   // measured on the input, as the paper run measured them itself.
   if (!spread && on_vertices(mesh)) return {refine_by_midpoints(mesh, 0), false};
-  return {build_working_mesh(mesh, plan_working_mesh(mesh, fewest, kSpreadVerticesPerParticle)), true};
+  const WorkingMeshPlan plan = plan_working_mesh(mesh, fewest, kSpreadVerticesPerParticle);
+  RefinedMesh working = build_working_mesh(mesh, plan);
+  // A spread run whose sweeps went on on a finer mesh (its relaxation not
+  // kept) left its particles on that mesh's vertices: measured there, as
+  // the run measured them. Built only where some of every set's points sit
+  // on the working mesh's vertices, as about a quarter of that finer mesh's
+  // vertices do (points between vertices, a relaxed run's or a surface
+  // sampler's, almost never do).
+  const std::optional<WorkingMeshPlan> finer_plan = plan_finer_working_mesh(mesh, plan);
+  if (finer_plan && !on_vertices(working.mesh) &&
+      std::all_of(sets.begin(), sets.end(), [&](const std::vector<Vec3>& set) {
+        return share_on_vertices(working.mesh, set, tolerance) >= kFinerMeshHint;
+      })) {
+    RefinedMesh finer = build_working_mesh(mesh, *finer_plan);
+    if (on_vertices(finer.mesh)) return {std::move(finer), true};
+  }
+  return {std::move(working), true};
 }
 
 std::vector<SnappedParticles> place_on_vertices(RefinedMesh& measuring, const SurfaceMesh& input,
                                                 const std::vector<std::vector<Vec3>>& sets) {
   const SurfaceMesh& mesh = measuring.mesh;
-  const SurfaceWalk walk(mesh);
+  const NearestSurfacePoint nearest_point(mesh);
   std::vector<SnappedParticles> placed;
   std::vector<TrianglePoint> off_vertices;
   std::vector<std::pair<std::size_t, std::size_t>> which;  // (set, point) of each in off_vertices
@@ -39,13 +81,10 @@ std::vector<SnappedParticles> place_on_vertices(RefinedMesh& measuring, const Su
     placed.push_back(snap_to_vertices(mesh, sets[k]));
     for (std::size_t i = 0; i < sets[k].size(); ++i) {
       const VertexId nearest = placed[k].positions[i];
-      std::uint32_t triangle = 0;
-      if (distance(mesh.positions()[nearest], sets[k][i]) <= kOnVertexExactly * mesh.mean_edge_length() ||
-          !walk.first_triangle(nearest, triangle)) {
-        continue;
-      }
-      const SurfaceLocation location = walk.walk(triangle, sets[k][i]);
-      off_vertices.push_back({location.triangle, location.weights});
+      if (distance(mesh.positions()[nearest], sets[k][i]) <= kOnVertexExactly * mesh.mean_edge_length()) continue;
+      const std::optional<SurfaceLocation> location = nearest_point.find(sets[k][i]);
+      if (!location) continue;
+      off_vertices.push_back({location->triangle, location->weights});
       which.emplace_back(k, i);
     }
   }
