@@ -1,9 +1,11 @@
 // Spread's relaxation: points inserted into a mesh become vertices exactly
 // where they were; a point walked along the surface reaches its nearest
 // surface point; the relaxation widens the smallest spacing without passing
-// its cover limit, on the surface, the same bits every time; and a run
-// keeps the relaxed particles only where their cover stays within 1.1x the
-// farthest start's.
+// its cover limit, on the surface, the same bits every time; a run keeps
+// the relaxed particles only where their cover stays within 1.1x the
+// farthest start's, and where it keeps none its sweeps go on on a finer
+// mesh under the same two rules; `quality` places points on their own
+// sheet of the surface and measures a run on the mesh it ran on.
 #include <gtest/gtest.h>
 
 #include <algorithm>

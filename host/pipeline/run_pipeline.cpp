@@ -224,11 +224,11 @@ std::optional<std::vector<VertexId>> same_places(const SurfaceMesh& coarse, cons
 // Where the relaxation was not kept (the surface folds or comes within a
 // spacing of itself, and straight lines misjudge it), the sweeps go on from
 // where they stopped on the working mesh cut kFinerSweepsRounds rounds
-// finer (plan_finer_working_mesh): farthest-point optimization on vertices is held back by how coarse
-// they are. Their result is kept
-// where its geodesic cover is within `cover_limit` and its smallest
-// spacing measures wider than the set `result` holds now (the sweeps' own
-// smallest spacings are each mover's when it moved, not the final set's).
+// finer (plan_finer_working_mesh): farthest-point optimization on vertices
+// is held back by how coarse they are. Their result is kept where its
+// geodesic cover is within `cover_limit` and its smallest spacing measures
+// wider than the set `result` holds now (the sweeps' own smallest spacings
+// are each mover's when it moved, not the final set's).
 void sweep_finer(const SurfaceMesh& mesh, RunResult& result, double cover_limit) {
   const RunRequest& request = result.plan.request;
   const std::string& label = request.mesh_label;
