@@ -9,8 +9,8 @@
 #include "backends/local_device_field_backend.hpp"
 #include "common/memory_limits.hpp"
 #include "common/user_error.hpp"
-#include "mesh/point_cloud_tree.hpp"
 #include "mesh/point_insertion.hpp"
+#include "particles/particle_file.hpp"
 #include "pipeline/default_backend.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
@@ -203,22 +203,14 @@ double largest_finite(const std::vector<float>& values) {
 // none where one has no vertex there, or two would share one.
 std::optional<std::vector<VertexId>> same_places(const SurfaceMesh& coarse, const SurfaceMesh& finer,
                                                  const std::vector<VertexId>& positions) {
-  const PointCloud cloud{finer.positions()};
-  const PointCloudTree tree(3, cloud);
-  std::vector<VertexId> mapped;
-  for (const VertexId v : positions) {
-    const Vec3& p = coarse.positions()[v];
-    const double query[3] = {p.x, p.y, p.z};
-    std::uint32_t nearest = 0;
-    double squared = 0;
-    tree.knnSearch(query, 1, &nearest, &squared);
-    if (std::sqrt(squared) > kOnVertexExactly * coarse.mean_edge_length()) return std::nullopt;
-    mapped.push_back(nearest);
-  }
-  std::vector<VertexId> sorted = mapped;
+  std::vector<Vec3> places;
+  for (const VertexId v : positions) places.push_back(coarse.positions()[v]);
+  const SnappedParticles snapped = snap_to_vertices(finer, places);
+  if (snapped.largest_snap > kOnVertexExactly * coarse.mean_edge_length()) return std::nullopt;
+  std::vector<VertexId> sorted = snapped.positions;
   std::sort(sorted.begin(), sorted.end());
   if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return std::nullopt;
-  return mapped;
+  return snapped.positions;
 }
 
 // Where the relaxation was not kept (the surface folds or comes within a

@@ -1,12 +1,10 @@
 #include "quality/particle_sets.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <tuple>
 #include <utility>
 
 #include "mesh/nearest_surface_point.hpp"
-#include "mesh/point_cloud_tree.hpp"
 #include "mesh/point_insertion.hpp"
 #include "particles/spread_working_mesh.hpp"
 
@@ -18,18 +16,14 @@ namespace {
 // its finer mesh is tried.
 constexpr double kFinerMeshHint = 0.1;
 
-// The share of `points` within `tolerance` of a vertex of `mesh`.
-double share_on_vertices(const SurfaceMesh& mesh, const std::vector<Vec3>& points, double tolerance) {
+// The share of `points` within `tolerance` of the vertices of `mesh` they
+// were snapped to.
+double share_on_vertices(const SurfaceMesh& mesh, const std::vector<Vec3>& points, const SnappedParticles& snapped,
+                         double tolerance) {
   if (points.empty()) return 1;
-  const PointCloud cloud{mesh.positions()};
-  const PointCloudTree tree(3, cloud);
   std::size_t on = 0;
-  for (const Vec3& p : points) {
-    const double query[3] = {p.x, p.y, p.z};
-    std::uint32_t v = 0;
-    double squared = 0;
-    tree.knnSearch(query, 1, &v, &squared);
-    on += std::sqrt(squared) <= tolerance ? 1 : 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    on += distance(mesh.positions()[snapped.positions[i]], points[i]) <= tolerance ? 1 : 0;
   }
   return double(on) / double(points.size());
 }
@@ -60,10 +54,14 @@ MeasuringMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vec
   // vertices do (points between vertices, a relaxed run's or a surface
   // sampler's, almost never do).
   const std::optional<WorkingMeshPlan> finer_plan = plan_finer_working_mesh(mesh, plan);
-  if (finer_plan && !on_vertices(working.mesh) &&
-      std::all_of(sets.begin(), sets.end(), [&](const std::vector<Vec3>& set) {
-        return share_on_vertices(working.mesh, set, tolerance) >= kFinerMeshHint;
-      })) {
+  if (!finer_plan) return {std::move(working), true};
+  bool all_on = true, finer_hinted = true;
+  for (const auto& set : sets) {
+    const SnappedParticles snapped = snap_to_vertices(working.mesh, set);
+    all_on = all_on && snapped.largest_snap <= tolerance;
+    finer_hinted = finer_hinted && share_on_vertices(working.mesh, set, snapped, tolerance) >= kFinerMeshHint;
+  }
+  if (!all_on && finer_hinted) {
     RefinedMesh finer = build_working_mesh(mesh, *finer_plan);
     if (on_vertices(finer.mesh)) return {std::move(finer), true};
   }
