@@ -46,6 +46,39 @@ Vec3 on_input_position(const SurfaceMesh& input, const SurfacePoint& point) {
   return at_weights(point.weights, x[point.corners[0]], x[point.corners[1]], x[point.corners[2]]);
 }
 
+// A default run of `particles` on a committed mesh, quiet.
+RunRequest spread_request(const std::string& name, std::size_t particles) {
+  RunRequest request;
+  request.mesh_label = name;
+  request.particles = particles;
+  request.quiet = true;
+  return request;
+}
+
+// A run as `request` asks, and beside it the sweeps alone (--relax-rounds
+// 0) and the farthest start alone (--iterations 0).
+struct RunWithBaselines {
+  RunResult asked, swept, start;
+};
+RunWithBaselines run_with_baselines(const SurfaceMesh& mesh, RunRequest request) {
+  RunWithBaselines runs;
+  runs.asked = run_pipeline(mesh, request);
+  request.relax_rounds = 0;
+  runs.swept = run_pipeline(mesh, request);
+  request.max_iterations = 0;
+  runs.start = run_pipeline(mesh, request);
+  return runs;
+}
+
+// Every particle of `result` is a vertex of its working mesh that lies on
+// the input surface where its on_input says.
+void expect_on_input_surface(const SurfaceMesh& input, const RunResult& result) {
+  for (const VertexId p : result.outcome.positions) {
+    const Vec3 at = result.working->mesh.positions()[p];
+    EXPECT_NEAR(distance(on_input_position(input, result.working->on_input[p]), at), 0, 1e-12);
+  }
+}
+
 TEST(PointInsertion, PointsBecomeVerticesWhereTheyWere) {
   const SurfaceMesh input = committed("torus.off");
   const RefinedMesh refined = refine_by_midpoints(input, 1);
@@ -167,15 +200,7 @@ INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphe
 // cover within 1.1x the farthest start's.
 TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
   const SurfaceMesh mesh = committed("sphere.off");
-  RunRequest request;
-  request.mesh_label = "sphere.off";
-  request.particles = 256;
-  request.quiet = true;
-  const RunResult relaxed = run_pipeline(mesh, request);
-  request.relax_rounds = 0;
-  const RunResult swept = run_pipeline(mesh, request);
-  request.max_iterations = 0;
-  const RunResult start = run_pipeline(mesh, request);
+  const auto [relaxed, swept, start] = run_with_baselines(mesh, spread_request("sphere.off", 256));
   EXPECT_EQ(swept.relaxation.kept, swept.relaxation.candidates.size());  // none: the sweeps' vertices
   ASSERT_LT(relaxed.relaxation.kept, relaxed.relaxation.candidates.size());
   const RelaxationCandidate& kept = relaxed.relaxation.candidates[relaxed.relaxation.kept];
@@ -184,10 +209,7 @@ TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
   EXPECT_LE(*relaxed.quality.cover, 1.1 * *start.quality.cover);
   // The geodesic smallest spacing is at least the straight one the relaxation kept.
   EXPECT_GE(*relaxed.quality.nn_min, (1 - 1e-3) * kept.spacing);
-  for (const VertexId p : relaxed.outcome.positions) {
-    const Vec3 at = relaxed.working->mesh.positions()[p];
-    EXPECT_NEAR(distance(on_input_position(mesh, relaxed.working->on_input[p]), at), 0, 1e-12);
-  }
+  expect_on_input_surface(mesh, relaxed);
 }
 
 // Where the relaxation is not kept (here: one round, which cannot pass the
@@ -196,16 +218,9 @@ TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
 // the farthest start's, on vertices that lie on the input surface.
 TEST(SpreadRun, SweepsGoOnFinerWhereTheRelaxationIsNotKept) {
   const SurfaceMesh mesh = committed("sphere.off");
-  RunRequest request;
-  request.mesh_label = "sphere.off";
-  request.particles = 256;
-  request.quiet = true;
+  RunRequest request = spread_request("sphere.off", 256);
   request.relax_rounds = 1;
-  const RunResult finer = run_pipeline(mesh, request);
-  request.relax_rounds = 0;
-  const RunResult swept = run_pipeline(mesh, request);
-  request.max_iterations = 0;
-  const RunResult start = run_pipeline(mesh, request);
+  const auto [finer, swept, start] = run_with_baselines(mesh, request);
   EXPECT_FALSE(swept.finer_sweeps.tried);  // --relax-rounds 0: the sweeps' vertices, as asked
   ASSERT_EQ(finer.relaxation.kept, finer.relaxation.candidates.size());
   ASSERT_TRUE(finer.finer_sweeps.tried);
@@ -217,26 +232,16 @@ TEST(SpreadRun, SweepsGoOnFinerWhereTheRelaxationIsNotKept) {
   EXPECT_LT(*finer.quality.nn_cv, *swept.quality.nn_cv);
   EXPECT_LE(*finer.quality.cover, 1.1 * *start.quality.cover);
   EXPECT_NEAR(finer.finer_sweeps.cover, *finer.quality.cover * finer.quality.d_hex, 1e-9 * finer.quality.d_hex);
-  for (const VertexId p : finer.outcome.positions) {
-    const Vec3 at = finer.working->mesh.positions()[p];
-    EXPECT_NEAR(distance(on_input_position(mesh, finer.working->on_input[p]), at), 0, 1e-12);
-  }
+  expect_on_input_surface(mesh, finer);
 }
 
 // ... and not kept where their cover passes 1.1x the farthest start's
 // (the torus at n = 128): the run ends on the sweeps' own vertices.
 TEST(SpreadRun, FinerSweepsOverTheCoverLimitAreNotKept) {
   const SurfaceMesh mesh = committed("torus.off");
-  RunRequest request;
-  request.mesh_label = "torus.off";
-  request.particles = 128;
-  request.quiet = true;
+  RunRequest request = spread_request("torus.off", 128);
   request.relax_rounds = 1;
-  const RunResult finer = run_pipeline(mesh, request);
-  request.relax_rounds = 0;
-  const RunResult swept = run_pipeline(mesh, request);
-  request.max_iterations = 0;
-  const RunResult start = run_pipeline(mesh, request);
+  const auto [finer, swept, start] = run_with_baselines(mesh, request);
   ASSERT_TRUE(finer.finer_sweeps.tried);
   EXPECT_GT(finer.finer_sweeps.cover, 1.1 * *start.quality.cover * start.quality.d_hex);
   EXPECT_FALSE(finer.finer_sweeps.kept);
@@ -250,10 +255,7 @@ TEST(SpreadRun, FinerSweepsOverTheCoverLimitAreNotKept) {
 // own figures.
 TEST(QualityOfSurfacePoints, AFinerSweepsRunIsMeasuredOnItsOwnMesh) {
   const SurfaceMesh mesh = committed("sphere.off");
-  RunRequest run;
-  run.mesh_label = "sphere.off";
-  run.particles = 256;
-  run.quiet = true;
+  RunRequest run = spread_request("sphere.off", 256);
   run.relax_rounds = 1;
   const RunResult finer = run_pipeline(mesh, run);
   ASSERT_TRUE(finer.finer_sweeps.kept);
