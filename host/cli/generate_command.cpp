@@ -4,6 +4,8 @@
 #include <memory>
 #include <optional>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
 #include "common/atomic_file.hpp"
@@ -21,6 +23,7 @@ struct GenerateOptions {
   std::string out_dir = "meshes";
   std::optional<std::size_t> vertices;
   std::optional<std::size_t> population;
+  std::string family = "atrium";
   std::uint64_t seed = 1;
 };
 
@@ -33,9 +36,60 @@ void write_generated(const SurfaceMesh& mesh, const std::filesystem::path& file)
             << " triangles)\n";
 }
 
+nlohmann::json vec_json(Vec3 v) { return {v.x, v.y, v.z}; }
+
+// population.json: what each ellipsoid shape is, so that a surface point's
+// parameter (its true correspondence) can be worked out from where it lies.
+nlohmann::json ellipsoid_truth(const std::string& file, const EllipsoidVariant& shape) {
+  return {{"mesh", file},
+          {"elongation", shape.elongation},
+          {"bump_height", shape.bump_height},
+          {"axes", vec_json(shape.axes)},
+          {"rotation", {vec_json(shape.rotation[0]), vec_json(shape.rotation[1]), vec_json(shape.rotation[2])}},
+          {"scale", shape.scale},
+          {"translation", vec_json(shape.translation)}};
+}
+
+// Shape i from the i-th number of the seed's sequence: a population is fixed
+// by its seed, and a longer one begins with the shorter.
+void write_population(const GenerateOptions& options) {
+  const std::filesystem::path out(options.out_dir);
+  const std::size_t vertices = options.vertices.value_or(kPopulationVertices);
+  SplitMix64 shape_seeds(options.seed);
+  nlohmann::json shapes = nlohmann::json::array();
+  for (std::size_t i = 0; i < *options.population; ++i) {
+    char name[40];
+    std::snprintf(name, sizeof name, "%s_%03zu.off", options.family.c_str(), i);
+    if (options.family == "atrium") {
+      write_generated(generate_atrium_variant(shape_seeds.next(), vertices), out / name);
+    } else {
+      const EllipsoidVariant shape = generate_ellipsoid_variant(shape_seeds.next(), vertices);
+      write_generated(shape.mesh, out / name);
+      shapes.push_back(ellipsoid_truth(name, shape));
+    }
+  }
+  if (options.family == "ellipsoid") {
+    const nlohmann::json truth = {
+        {"family", "ellipsoid"},
+        {"parameter", "u = normalize(diag(axes)^-1 x), x = rotation^T (world - translation) / scale"},
+        {"surface", "x(u) = (1 + bump_height exp(-(1 - u.bump_direction) / bump_width) + knob_height exp(-(1 - "
+                    "u.knob_direction) / knob_width)) diag(axes) u, "
+                    "axes = (1.5 (1 + elongation), 1, 0.7 / (1 + elongation))"},
+        {"bump_direction", vec_json(kEllipsoidBump.direction)},
+        {"bump_width", kEllipsoidBump.width},
+        {"knob_direction", vec_json(kEllipsoidKnob.direction)},
+        {"knob_width", kEllipsoidKnob.width},
+        {"knob_height", kEllipsoidKnob.height},
+        {"seed", options.seed},
+        {"shapes", shapes}};
+    write_file_atomically(out / "population.json", [&](std::ostream& stream) { stream << truth.dump(2) << "\n"; });
+    std::cerr << "wrote " << (out / "population.json").string() << " (each shape's parameters and pose)\n";
+  }
+}
+
 void run_generate(const GenerateOptions& options) {
   if (options.population && !options.names.empty()) {
-    throw UserError("--population writes atrium-like shapes: give no NAMES");
+    throw UserError("--population writes a population of --family shapes: give no NAMES");
   }
   if (options.vertices && options.names.empty() && !options.population) {
     throw UserError("--vertices needs the meshes to make at that size: sphere, atrium or both");
@@ -43,15 +97,7 @@ void run_generate(const GenerateOptions& options) {
   create_directory_for(options.out_dir, "output directory");
   check_writable_directory(options.out_dir);
   if (options.population) {
-    // Shape i from the i-th number of the seed's sequence: a population is
-    // fixed by its seed, and a longer one begins with the shorter.
-    SplitMix64 shape_seeds(options.seed);
-    for (std::size_t i = 0; i < *options.population; ++i) {
-      const SurfaceMesh mesh = generate_atrium_variant(shape_seeds.next(), options.vertices.value_or(kPopulationVertices));
-      char name[40];
-      std::snprintf(name, sizeof name, "atrium_%03zu.off", i);
-      write_generated(mesh, std::filesystem::path(options.out_dir) / name);
-    }
+    write_population(options);
     return;
   }
   for (const std::string& name : options.names.empty() ? generated_mesh_names() : options.names) {
@@ -75,8 +121,13 @@ void add_generate_command(CLI::App& app) {
                           "benchmarks on large meshes); with --population, each shape's size (default " +
                               std::to_string(kPopulationVertices) + ")");
   add_whole_number_option(*generate, "--population", options->population, kPopulationRange,
-                          "Write this many atrium-like shapes instead, atrium_000.off, ..., each with its own "
-                          "size, body and bulges from --seed (for batch benchmarks)");
+                          "Write a population of this many shapes instead, FAMILY_000.off, ..., from --seed");
+  generate->add_option("--family", options->family,
+                       "With --population: atrium (each with its own size, body and bulges; for batch benchmarks) "
+                       "or ellipsoid (two true modes, each meshed on its own and posed at random, with the true "
+                       "correspondence in population.json; for correspond)")
+      ->check(CLI::IsMember({"atrium", "ellipsoid"}))
+      ->capture_default_str();
   add_whole_number_option(*generate, "--seed", options->seed, kSeedRange, "Seed of the --population");
   generate->callback([options] { run_generate(*options); });
 }

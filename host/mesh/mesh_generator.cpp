@@ -395,3 +395,57 @@ SurfaceMesh generate_atrium_variant(std::uint64_t seed, std::size_t vertices) {
 }
 
 }  // namespace meshparticles
+
+namespace meshparticles {
+
+const EllipsoidBump kEllipsoidBump = {normalized({1.0, 0.5, 0.7}), 0.08, 0};
+const EllipsoidBump kEllipsoidKnob = {normalized({-0.4, 0.8, -0.45}), 0.04, 0.25};
+
+namespace {
+
+// A rotation drawn uniformly (Shoemake's unit quaternion), as its rows.
+std::array<Vec3, 3> random_rotation(SplitMix64& random) {
+  const double u1 = random.uniform(), u2 = 2 * kPi * random.uniform(), u3 = 2 * kPi * random.uniform();
+  const double w = std::sqrt(1 - u1) * std::sin(u2), x = std::sqrt(1 - u1) * std::cos(u2);
+  const double y = std::sqrt(u1) * std::sin(u3), z = std::sqrt(u1) * std::cos(u3);
+  return {Vec3{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+          Vec3{2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+          Vec3{2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+}
+
+Vec3 rotate(const std::array<Vec3, 3>& rows, Vec3 p) { return {dot(rows[0], p), dot(rows[1], p), dot(rows[2], p)}; }
+
+}  // namespace
+
+EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vertices) {
+  SplitMix64 random(seed);
+  const double elongation = 0.2 * (2 * random.uniform() - 1);
+  const double height = 0.35 + 0.25 * (2 * random.uniform() - 1);
+  // Three unequal axes whatever the elongation, and a bump off every plane of
+  // symmetry: no turn or mirror of a shape fits it, so its correspondence is
+  // fixed by its geometry.
+  const Vec3 axes{1.5 * (1 + elongation), 1.0, 0.7 / (1 + elongation)};
+  // Any point maps to the surface point of its parameter, so the mesher's
+  // projections keep every vertex on the shape and its parameter exact.
+  const Projection onto_shape = [axes, height](Vec3 p) {
+    const Vec3 u = normalized({p.x / axes.x, p.y / axes.y, p.z / axes.z});
+    const double r = 1 + height * std::exp(-(1 - dot(u, kEllipsoidBump.direction)) / kEllipsoidBump.width) +
+                     kEllipsoidKnob.height * std::exp(-(1 - dot(u, kEllipsoidKnob.direction)) / kEllipsoidKnob.width);
+    return r * Vec3{axes.x * u.x, axes.y * u.y, axes.z * u.z};
+  };
+  const int frequency = std::max(2, frequency_for(vertices) + int(random.below(3)) - 1);
+  const std::array<Vec3, 3> meshing_turn = random_rotation(random);
+  WorkMesh mesh = geodesic_sphere(frequency);
+  for (auto v : mesh.vertices()) mesh.point(v) = to_point(onto_shape(rotate(meshing_turn, to_vec(mesh.point(v)))));
+  improve(mesh, onto_shape);
+  const SurfaceMesh unposed = to_surface_mesh(mesh);
+
+  const std::array<Vec3, 3> rotation = random_rotation(random);
+  const double scale = std::exp(std::log(0.5) + std::log(4.0) * random.uniform());  // 0.5 to 2
+  const Vec3 translation{10 * random.uniform() - 5, 10 * random.uniform() - 5, 10 * random.uniform() - 5};
+  std::vector<Vec3> posed;
+  for (const Vec3& p : unposed.positions()) posed.push_back(scale * rotate(rotation, p) + translation);
+  return {SurfaceMesh(std::move(posed), unposed.triangles()), elongation, height, axes, rotation, scale, translation};
+}
+
+}  // namespace meshparticles

@@ -4,6 +4,7 @@
 // imitate the output of an FEM mesher: a coarse base mesh refined by splitting
 // its longest edges, then Delaunay edge flips and smoothing with projection
 // back onto the analytic surface, which leaves irregular valences.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,5 +34,37 @@ SurfaceMesh generate_mesh_at(const std::string& name, std::size_t vertices);
 // bulges, each moved, resized and reshaped at random from `seed`, the whole
 // scaled by 0.8 to 1.2, at about `vertices` vertices as generate_mesh_at.
 SurfaceMesh generate_atrium_variant(std::uint64_t seed, std::size_t vertices);
+
+// A shape of a population whose correspondence is known and whose variation
+// has two true modes (issue 31's test populations): the unit sphere's point u
+// goes to x(u) = r(u) diag(axes) u, r(u) = 1 + bump_height exp(-(1 - u.b)/w)
+// + a fixed knob's term alike, with the bump's direction b and width w
+// fixed (kEllipsoidBump; the knob, kEllipsoidKnob, keeps a small bump's
+// shape from fitting itself turned half round), axes =
+// (1.5 (1 + e), 1, 0.7 / (1 + e)); the elongation e (mode 1, within +-0.2)
+// and the bump's height (mode 2, 0.1 to 0.6) vary from shape to shape. Each shape is meshed on its own (a
+// geodesic sphere of its own frequency, turned at random before it is
+// mapped, then improved), so vertex ids say nothing about where a vertex is;
+// then posed at random: world = scale rotation x + translation. A surface
+// point's parameter is u = normalize(diag(axes)^-1 x) of its unposed x.
+struct EllipsoidBump {
+  Vec3 direction;
+  double width;
+  double height;  // the knob's; the bump's is each shape's own
+};
+extern const EllipsoidBump kEllipsoidBump;
+extern const EllipsoidBump kEllipsoidKnob;
+
+struct EllipsoidVariant {
+  SurfaceMesh mesh;  // posed
+  double elongation = 0, bump_height = 0;
+  Vec3 axes{};
+  std::array<Vec3, 3> rotation{};  // rows of the pose's rotation
+  double scale = 1;
+  Vec3 translation{};
+};
+
+// About `vertices` vertices (the frequency nearest it, give or take one).
+EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vertices);
 
 }  // namespace meshparticles
