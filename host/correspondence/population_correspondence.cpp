@@ -3,6 +3,7 @@
 #include "common/progress.hpp"
 #include "correspondence/closest_surface_point.hpp"
 #include "correspondence/point_tree.hpp"
+#include "correspondence/template_deformation.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
 #include "reports/particle_locations.hpp"
@@ -26,8 +27,15 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
   return measure_point_sets(mesh, request).sets.front().quality;
 }
 
-ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const PointSet& template_points,
-                             const Similarity& template_frame, const PointSet& template_particles, bool quiet) {
+// The template's particles as its vertices' weights, so that they follow the template as it deforms.
+struct TemplateParticle {
+  Triangle corners{};  // template vertex ids
+  std::array<double, 3> weights{};
+};
+
+ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const SurfaceMesh& template_mesh,
+                             const PointSet& template_points, const Similarity& template_frame,
+                             const std::vector<TemplateParticle>& template_particles, bool quiet) {
   ShapeCorrespondence shape;
   shape.mesh = file;
   shape.vertices = mesh.vertex_count();
@@ -36,9 +44,13 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   const PointSet common = shape.alignment.to_common.apply(world);
   const PointTree tree(common);
   const VertexTriangles around = vertex_triangles(mesh.triangles(), mesh.vertex_count());
-  shape.particles.resize(template_particles.rows(), 3);
-  for (Eigen::Index i = 0; i < template_particles.rows(); ++i) {
-    const SurfaceHit hit = closest_surface_point(mesh, around, common, tree, template_particles.row(i));
+  const PointSet deformed = deform_template(template_mesh, template_points, common);
+  shape.particles.resize(Eigen::Index(template_particles.size()), 3);
+  for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
+    const TemplateParticle& particle = template_particles[std::size_t(i)];
+    Eigen::RowVector3d query = Eigen::RowVector3d::Zero();
+    for (std::size_t k = 0; k < 3; ++k) query += particle.weights[k] * deformed.row(Eigen::Index(particle.corners[k]));
+    const SurfaceHit hit = closest_surface_point(mesh, around, common, tree, query);
     SurfaceLocation location;
     std::size_t heaviest = 0;
     for (std::size_t k = 0; k < 3; ++k) {
@@ -71,16 +83,21 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request)
   const Similarity template_frame = canonical_frame(template_mesh);
   const PointSet template_points = template_frame.apply(vertex_points(template_mesh));
   const std::vector<ParticleLocation> locations = particle_locations(template_mesh, population.template_run);
-  PointSet template_particles(Eigen::Index(locations.size()), 3);
-  for (std::size_t i = 0; i < locations.size(); ++i) {
-    template_particles.row(Eigen::Index(i)) << locations[i].at.x, locations[i].at.y, locations[i].at.z;
+  std::vector<TemplateParticle> template_particles;
+  for (const ParticleLocation& location : locations) {
+    TemplateParticle particle;
+    for (std::size_t k = 0; k < 3; ++k) {
+      particle.corners[k] = *template_mesh.vertex_of_input_id(location.corners[k]);
+      particle.weights[k] = location.weights[k];
+    }
+    template_particles.push_back(particle);
   }
-  template_particles = template_frame.apply(template_particles);
 
   ProgressLine progress("correspond", request.meshes.size(), request.quiet);
   for (std::size_t s = 0; s < request.meshes.size(); ++s) {
     const SurfaceMesh mesh = s == 0 ? template_mesh : load_mesh(request.meshes[s], request.quiet, {});
-    population.shapes.push_back(transfer(request.meshes[s], mesh, template_points, template_frame, template_particles, request.quiet));
+    population.shapes.push_back(transfer(request.meshes[s], mesh, template_mesh, template_points, template_frame,
+                                         template_particles, request.quiet));
     progress.update(s + 1);
   }
   progress.finish();

@@ -1,0 +1,99 @@
+// The test populations of issue 31 and the template's deformation onto a
+// shape: an ellipsoid shape's vertices lie exactly where its parameters say
+// (the known correspondence is only as good as that), its shapes are meshed
+// each on its own, and the deformation follows a stretched shape where
+// nearest points cannot.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "correspondence/mesh_alignment.hpp"
+#include "correspondence/point_tree.hpp"
+#include "correspondence/template_deformation.hpp"
+#include "mesh/mesh_generator.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+Vec3 unrotate(const std::array<Vec3, 3>& rows, Vec3 p) {
+  return p.x * rows[0] + p.y * rows[1] + p.z * rows[2];  // the transpose's product
+}
+
+double bump_term(const EllipsoidBump& bump, Vec3 u) { return std::exp(-(1 - dot(u, bump.direction)) / bump.width); }
+
+// The parameter of an unposed surface point, as population.json says.
+Vec3 parameter_of(const EllipsoidVariant& shape, Vec3 unposed) {
+  return normalized({unposed.x / shape.axes.x, unposed.y / shape.axes.y, unposed.z / shape.axes.z});
+}
+
+TEST(EllipsoidPopulation, EveryVertexLiesOnItsShapeAtItsParameter) {
+  const EllipsoidVariant shape = generate_ellipsoid_variant(7, 1500);
+  double worst = 0;
+  for (const Vec3& world : shape.mesh.positions()) {
+    const Vec3 unposed = (1 / shape.scale) * unrotate(shape.rotation, world + (-1.0) * shape.translation);
+    const Vec3 u = parameter_of(shape, unposed);
+    const double r = 1 + shape.bump_height * bump_term(kEllipsoidBump, u) + kEllipsoidKnob.height * bump_term(kEllipsoidKnob, u);
+    const Vec3 on_surface = r * Vec3{shape.axes.x * u.x, shape.axes.y * u.y, shape.axes.z * u.z};
+    worst = std::max(worst, norm(on_surface + (-1.0) * unposed));
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GE(shape.bump_height, 0.1);
+  EXPECT_LE(shape.bump_height, 0.6);
+  EXPECT_LE(std::abs(shape.elongation), 0.2);
+}
+
+TEST(EllipsoidPopulation, ShapesAreMeshedEachOnItsOwnAndPosedAtRandom) {
+  std::set<std::size_t> sizes;
+  std::vector<Vec3> first_vertex_parameters;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const EllipsoidVariant shape = generate_ellipsoid_variant(seed, 1500);
+    sizes.insert(shape.mesh.vertex_count());
+    const Vec3 unposed = (1 / shape.scale) * unrotate(shape.rotation, shape.mesh.positions()[0] + (-1.0) * shape.translation);
+    first_vertex_parameters.push_back(parameter_of(shape, unposed));
+  }
+  EXPECT_GE(sizes.size(), 2u) << "every shape has the same vertex count";
+  // Vertex 0 is somewhere else on every shape: ids say nothing.
+  for (std::size_t k = 1; k < first_vertex_parameters.size(); ++k) {
+    EXPECT_LT(dot(first_vertex_parameters[k], first_vertex_parameters[0]), 0.999) << "shape " << k;
+  }
+  // The same seed gives the same shape, bit for bit.
+  const EllipsoidVariant again = generate_ellipsoid_variant(3, 1500), once = generate_ellipsoid_variant(3, 1500);
+  EXPECT_EQ(again.mesh.positions().front().x, once.mesh.positions().front().x);
+  EXPECT_EQ(again.mesh.triangles(), once.mesh.triangles());
+}
+
+// The template: the committed-style sphere; the shape: another meshing of
+// the sphere stretched along x and squeezed along z. The true place of
+// template vertex p on the shape is the stretch of p. Deformed, the template
+// must land nearer those places than the nearest shape vertices do.
+TEST(TemplateDeformation, FollowsAStretchedShapeBetterThanNearestPoints) {
+  const SurfaceMesh template_mesh = generate_mesh_at("sphere", 700);
+  const SurfaceMesh shape_mesh = generate_mesh_at("sphere", 1000);
+  const Eigen::RowVector3d stretch(1.5, 1.0, 0.6);
+  const PointSet template_points = vertex_points(template_mesh);
+  PointSet shape_points = vertex_points(shape_mesh);
+  shape_points.array().rowwise() *= stretch.array();
+  PointSet truth = template_points;
+  truth.array().rowwise() *= stretch.array();
+
+  const PointSet deformed = deform_template(template_mesh, template_points, shape_points);
+  const PointTree shape_tree(shape_points);
+  double nearest_error = 0, deformed_error = 0;
+  for (Eigen::Index v = 0; v < template_points.rows(); ++v) {
+    nearest_error += (shape_points.row(shape_tree.nearest(template_points.row(v)).front()) - truth.row(v)).norm();
+    deformed_error += (deformed.row(v) - truth.row(v)).norm();
+  }
+  nearest_error /= double(template_points.rows());
+  deformed_error /= double(template_points.rows());
+  EXPECT_LT(deformed_error, 0.5 * nearest_error) << "deformed " << deformed_error << ", nearest " << nearest_error;
+}
+
+TEST(TemplateDeformation, LeavesATemplateOnItselfWhereItIs) {
+  const SurfaceMesh mesh = generate_mesh("torus");
+  const PointSet points = vertex_points(mesh);
+  EXPECT_EQ((deform_template(mesh, points, points) - points).cwiseAbs().maxCoeff(), 0.0);
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
