@@ -349,3 +349,9 @@ set_tests_properties(cli.shape_model PROPERTIES LABELS fast)
 add_test(NAME cli.correspond COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
                                      ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond)
 set_tests_properties(cli.correspond PROPERTIES LABELS fast)
+# correspond on a population with a known correspondence (issue 31's
+# yardstick, scripts/correspondence_error.py), against batch.
+add_test(NAME cli.correspond_population COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_population.sh
+                                                $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/scripts
+                                                ${CMAKE_CURRENT_BINARY_DIR}/correspond_population)
+set_tests_properties(cli.correspond_population PROPERTIES LABELS fast TIMEOUT 300)

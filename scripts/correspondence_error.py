@@ -1,0 +1,100 @@
+#!/usr/bin/python3
+"""How far apart particle i lands across a population whose true correspondence is known.
+
+    scripts/correspondence_error.py POPULATION.json PARTICLES... [--json FILE]
+
+POPULATION.json is what `meshparticles generate --population N --family ellipsoid`
+writes beside its meshes: each shape's parameters and pose. PARTICLES are
+"x y z" rows in the shapes' own (world) coordinates, row i the same particle
+on every shape: `correspond`'s shapes/NNN_STEM.particles, `batch`'s
+STEM/particles.particles, or any tool's file named after its mesh's stem.
+
+Each particle's place is mapped back to the shapes' common parameter, the
+unit sphere (u = normalize(diag(axes)^-1 x) of its unposed position x). The
+spread of particle i is the mean great-circle distance of its places from
+their mean direction, in particle spacings of the parameter sphere
+(sqrt(8 pi / (sqrt(3) n)), the hexagonal spacing of n points on it). 0 is a
+perfect correspondence; particles placed at random spread about 5 spacings
+at n = 256. Prints the median, mean and 90th percentile over the particles,
+and the largest distance of a particle from its shape's surface (a particle
+off the surface maps to a wrong parameter). Uses Debian's python3-numpy.
+"""
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+
+def shape_of(file, shapes):
+    """The population's shape a particle file belongs to, by its mesh's stem."""
+    path = Path(file)
+    for shape in shapes:
+        stem = Path(shape["mesh"]).stem
+        if path.stem == stem or path.stem.endswith("_" + stem) or path.parent.name == stem:
+            return shape
+    sys.exit(f"correspondence_error: {file}: no shape of the population is named like it")
+
+
+def parameters(points, shape, population):
+    """Each point's parameter on the unit sphere, and how far the point is off its shape's surface."""
+    rotation = np.array(shape["rotation"])
+    axes = np.array(shape["axes"])
+    unposed = (points - np.array(shape["translation"])) @ rotation / shape["scale"]
+    u = unposed / axes
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    bump = np.exp(-(1 - u @ np.array(population["bump_direction"])) / population["bump_width"])
+    knob = np.exp(-(1 - u @ np.array(population["knob_direction"])) / population["knob_width"])
+    radius = 1 + shape["bump_height"] * bump + population["knob_height"] * knob
+    on_surface = radius[:, None] * axes * u
+    return u, np.linalg.norm(unposed - on_surface, axis=1)
+
+
+def spread(population, files):
+    shapes = population["shapes"]
+    per_shape, off_surface = [], 0.0
+    for file in files:
+        points = np.loadtxt(file, ndmin=2)
+        u, off = parameters(points, shape_of(file, shapes), population)
+        per_shape.append(u)
+        off_surface = max(off_surface, float(off.max()))
+    counts = {len(u) for u in per_shape}
+    if len(counts) != 1:
+        sys.exit(f"correspondence_error: the files hold different numbers of particles: {sorted(counts)}")
+    u = np.stack(per_shape)  # shapes x particles x 3
+    mean = u.sum(axis=0)
+    mean /= np.linalg.norm(mean, axis=1, keepdims=True)
+    angle = np.arccos(np.clip(np.einsum("spk,pk->sp", u, mean), -1, 1))
+    n = u.shape[1]
+    spacing = math.sqrt(8 * math.pi / (math.sqrt(3) * n))
+    per_particle = angle.mean(axis=0) / spacing
+    return {
+        "shapes": len(files),
+        "particles": n,
+        "median": float(np.median(per_particle)),
+        "mean": float(per_particle.mean()),
+        "p90": float(np.percentile(per_particle, 90)),
+        "largest_off_surface": off_surface,
+    }
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("population", type=Path)
+    parser.add_argument("particles", nargs="+", type=Path)
+    parser.add_argument("--json", type=Path, help="also write the figures here")
+    args = parser.parse_args()
+    if len(args.particles) < 2:
+        sys.exit("correspondence_error: give the particle files of at least 2 shapes")
+    result = spread(json.loads(args.population.read_text()), args.particles)
+    print(f"spread of particle i across {result['shapes']} shapes, in particle spacings (n = {result['particles']}): "
+          f"median {result['median']:.3f}, mean {result['mean']:.3f}, 90th percentile {result['p90']:.3f}; "
+          f"largest distance off a surface {result['largest_off_surface']:.2g}")
+    if args.json:
+        args.json.write_text(json.dumps(result, indent=2) + "\n")
+
+
+if __name__ == "__main__":
+    main()
