@@ -5,13 +5,20 @@
 // nearest points cannot.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <numbers>
 #include <set>
 
 #include "correspondence/mesh_alignment.hpp"
+#include "correspondence/population_correspondence.hpp"
 #include "correspondence/point_tree.hpp"
 #include "correspondence/template_deformation.hpp"
 #include "mesh/mesh_generator.hpp"
+#include "mesh/mesh_writer.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -93,6 +100,80 @@ TEST(TemplateDeformation, LeavesATemplateOnItselfWhereItIs) {
   const SurfaceMesh mesh = generate_mesh("torus");
   const PointSet points = vertex_points(mesh);
   EXPECT_EQ((deform_template(mesh, points, points) - points).cwiseAbs().maxCoeff(), 0.0);
+}
+
+// Four ellipsoid shapes on disk, and the spread of particle i across them
+// measured in their common parameter, as scripts/correspondence_error.py does.
+class SmallPopulation : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = std::filesystem::temp_directory_path() / ("mp_population_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(directory_);
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+      shapes_.push_back(generate_ellipsoid_variant(seed, 900));
+      files_.push_back(directory_ / ("shape_" + std::to_string(seed) + ".off"));
+      write_mesh(shapes_.back().mesh, files_.back());
+    }
+  }
+  void TearDown() override { std::filesystem::remove_all(directory_); }
+
+  PopulationCorrespondence correspond(std::size_t iterations, double weight) const {
+    CorrespondRequest request;
+    request.meshes = files_;
+    request.run.particles = 96;
+    request.quiet = true;
+    request.refinement.iterations = iterations;
+    request.refinement.correspondence_weight = weight;
+    return correspond_population(request);
+  }
+
+  // Mean over particles of the mean angle from their mean direction, in
+  // particle spacings of the unit sphere.
+  double spread(const PopulationCorrespondence& population) const {
+    const Eigen::Index count = population.shapes.front().particles.rows();
+    double total = 0;
+    for (Eigen::Index i = 0; i < count; ++i) {
+      std::vector<Vec3> directions;
+      Vec3 sum{};
+      for (std::size_t s = 0; s < shapes_.size(); ++s) {
+        const EllipsoidVariant& shape = shapes_[s];
+        const auto& p = population.shapes[s].particles;
+        const Vec3 world{p(i, 0), p(i, 1), p(i, 2)};
+        directions.push_back(
+            parameter_of(shape, (1 / shape.scale) * unrotate(shape.rotation, world + (-1.0) * shape.translation)));
+        sum = sum + directions.back();
+      }
+      for (const Vec3& u : directions) total += std::acos(std::clamp(dot(u, normalized(sum)), -1.0, 1.0));
+    }
+    const double spacing = std::sqrt(8 * std::numbers::pi / (std::sqrt(3.0) * double(count)));
+    return total / double(count * Eigen::Index(shapes_.size())) / spacing;
+  }
+
+  static double worst_nn_cv(const PopulationCorrespondence& population) {
+    double worst = 0;
+    for (const ShapeCorrespondence& shape : population.shapes) worst = std::max(worst, shape.quality.nn_cv.value());
+    return worst;
+  }
+
+  std::filesystem::path directory_;
+  std::vector<EllipsoidVariant> shapes_;
+  std::vector<std::filesystem::path> files_;
+};
+
+// The joint refinement evens every shape out, and its correspondence step is
+// what keeps particle i in place while it does: without it (weight 0) the
+// same iterations let the particles drift apart across shapes.
+TEST_F(SmallPopulation, JointRefinementEvensShapesOutWhileTheCorrespondenceHolds) {
+  const PopulationCorrespondence transferred = correspond(0, 0.1);
+  const PopulationCorrespondence refined = correspond(600, 0.1);
+  const PopulationCorrespondence unheld = correspond(600, 0.0);
+  EXPECT_EQ(refined.refinement.overlap.size(), 600u);
+  EXPECT_LT(worst_nn_cv(refined), 0.8 * worst_nn_cv(transferred))
+      << "refined " << worst_nn_cv(refined) << ", transferred " << worst_nn_cv(transferred);
+  EXPECT_LT(spread(refined), 0.3);
+  EXPECT_LT(spread(refined), 0.85 * spread(unheld)) << "held " << spread(refined) << ", unheld " << spread(unheld);
+  // Row i is one particle: the template's stays near where its run put it.
+  EXPECT_LT(spread(transferred), 0.3);
 }
 
 }  // namespace

@@ -25,6 +25,8 @@ struct CorrespondOptions {
   std::uint64_t seed = 1;
   bool no_scale = false;
   std::size_t samples = 1000;
+  std::size_t refine_iterations = JointRefinementOptions{}.iterations;
+  double correspondence_weight = JointRefinementOptions{}.correspondence_weight;
   bool quiet = false;
 };
 
@@ -45,13 +47,17 @@ void run_correspond(const CorrespondOptions& options) {
   request.run.particles = options.particles;
   request.run.seed = options.seed;
   request.quiet = options.quiet;
+  request.refinement.iterations = options.refine_iterations;
+  request.refinement.correspondence_weight = options.correspondence_weight;
   const PopulationCorrespondence population = correspond_population(request);
 
   std::vector<PointSet> shapes;
   for (const ShapeCorrespondence& shape : population.shapes) shapes.push_back(shape.particles);
   const ShapeModel model = build_shape_model(shapes, !options.no_scale, options.samples, options.seed, options.quiet);
   const nlohmann::json params = {{"particles", options.particles}, {"seed", options.seed},
-                                 {"scale", !options.no_scale}, {"samples", options.samples}};
+                                 {"scale", !options.no_scale}, {"samples", options.samples},
+                                 {"refine_iterations", options.refine_iterations},
+                                 {"correspondence_weight", options.correspondence_weight}};
   const ShapeModelOutputs outputs{names, &model, params};
 
   nlohmann::json shape_rows = nlohmann::json::array();
@@ -64,7 +70,10 @@ void run_correspond(const CorrespondOptions& options) {
                           {"quality", quality_json(shape.quality)}});
   }
   const nlohmann::json summary = {{"version", program_version()},
-                                  {"method", "template transfer"},
+                                  {"method", options.refine_iterations > 0 ? "template transfer, then joint refinement"
+                                                                           : "template transfer"},
+                                  {"refinement", {{"overlap", population.refinement.overlap},
+                                                  {"correspondence_step", population.refinement.correspondence_step}}},
                                   {"params", params},
                                   {"template", {{"mesh", names.front()}, {"quality", quality_json(population.template_run.quality)}}},
                                   {"shapes", shape_rows},
@@ -99,6 +108,13 @@ void add_correspond_command(CLI::App& app) {
   command->add_flag("--no-scale", options->no_scale, "Model: align by rotation and translation only");
   add_whole_number_option(*command, "--samples", options->samples, WholeRange{1, 1000000},
                           "Model: shapes drawn per number of modes, for specificity");
+  add_whole_number_option(*command, "--refine-iterations", options->refine_iterations, WholeRange{0, 100000},
+                          "Iterations of the joint refinement after the transfer (0: the transfer alone)");
+  command->add_option("--correspondence-weight", options->correspondence_weight,
+                      "Refinement: the correspondence step's weight against the sampling step's (0: each shape "
+                      "evened out on its own)")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "No progress lines");
   command->callback([options] { run_correspond(*options); });
 }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "correspondence/joint_refinement.hpp"
 #include "correspondence/mesh_alignment.hpp"
 #include "quality/distribution_quality.hpp"
 #include "pipeline/run_pipeline.hpp"
@@ -22,12 +23,13 @@ namespace meshparticles {
 struct CorrespondRequest {
   std::vector<std::filesystem::path> meshes;  // the first is the template
   RunRequest run;                             // the template's run (-n, seed, method, ...)
+  JointRefinementOptions refinement;
   bool quiet = false;
 };
 
 // A point of a shape's surface: a triangle (corner ids as in the file) and
 // barycentric weights, and the corner with the largest weight.
-struct SurfaceLocation {
+struct ShapeLocation {
   std::array<VertexId, 3> corners{};
   std::array<double, 3> weights{};
   VertexId vertex = 0;
@@ -37,7 +39,7 @@ struct ShapeCorrespondence {
   std::filesystem::path mesh;
   std::size_t vertices = 0;
   MeshAlignment alignment;
-  std::vector<SurfaceLocation> locations;  // per particle: where it lies on this shape
+  std::vector<ShapeLocation> locations;  // per particle: where it lies on this shape
   PointSet particles;                      // their positions, the shape's own coordinates
   DistributionQuality quality;             // how evenly they cover the shape, as `quality` measures a file
 };
@@ -45,6 +47,7 @@ struct ShapeCorrespondence {
 struct PopulationCorrespondence {
   RunResult template_run;
   std::vector<ShapeCorrespondence> shapes;
+  JointRefinementRecord refinement;
 };
 
 // Throws UserError for a mesh that cannot be read (naming it), and for -n

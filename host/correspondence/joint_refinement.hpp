@@ -1,0 +1,45 @@
+#pragma once
+// After the transfer, every shape's particles move together (issue 31's
+// joint optimization, in the spirit of ShapeWorks' particle system): on each
+// shape a sampling step pushes closer-than-spacing pairs apart along the
+// surface, as the template's own run spread them, and a correspondence step
+// pulls each shape, in the population's aligned frame, towards the model of
+// the others (the gradient of the regularised ensemble entropy, log det(C +
+// alpha I), which shrinks the shape-to-shape variation that few shapes
+// share, and leaves the true modes alone). The transfer's particles are
+// consistent but crowded; the sampling alone would even each shape out on
+// its own and lose the correspondence; together they do both.
+#include <cstddef>
+#include <vector>
+
+#include "mesh/surface_mesh.hpp"
+#include "mesh/surface_walk.hpp"
+
+namespace meshparticles {
+
+// One shape's particles while they move: where each lies on its mesh.
+struct ShapeParticles {
+  const SurfaceMesh* mesh = nullptr;
+  std::vector<SurfaceLocation> at;
+};
+
+struct JointRefinementOptions {
+  std::size_t iterations = 200;
+  // The correspondence step's weight against the sampling step's (0: each
+  // shape evened out on its own, and the correspondence drifts).
+  double correspondence_weight = 0.1;
+};
+
+struct JointRefinementRecord {
+  // Per iteration: the mean overlap of closer-than-spacing pairs (each
+  // shape's sampling objective, in its hexagonal spacings) and the mean
+  // length of the correspondence step (in the aligned frame's spacings).
+  std::vector<double> overlap, correspondence_step;
+};
+
+// Moves every shape's particles (all shapes hold the same count, row i the
+// same particle). Deterministic. Unless `quiet`, a progress line.
+JointRefinementRecord refine_jointly(std::vector<ShapeParticles>& shapes, const JointRefinementOptions& options,
+                                     bool quiet);
+
+}  // namespace meshparticles
