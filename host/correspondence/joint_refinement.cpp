@@ -97,6 +97,23 @@ std::vector<PointSet> correspondence_steps(const std::vector<PointSet>& shapes, 
   return steps;
 }
 
+double centroid_size(const PointSet& points) {
+  const Eigen::RowVector3d centre = points.colwise().mean();
+  return std::sqrt((points.rowwise() - centre).squaredNorm());
+}
+
+// The spacing in the aligned frame, where Procrustes scales every shape to
+// the shapes' mean centroid size: each shape's spacing at that size, averaged.
+double aligned_spacing(const std::vector<PointSet>& shapes, const std::vector<double>& spacings) {
+  std::vector<double> sizes;
+  for (const PointSet& shape : shapes) sizes.push_back(centroid_size(shape));
+  double mean_size = 0;
+  for (const double size : sizes) mean_size += size / double(sizes.size());
+  double spacing = 0;
+  for (std::size_t k = 0; k < shapes.size(); ++k) spacing += spacings[k] * mean_size / sizes[k] / double(shapes.size());
+  return spacing;
+}
+
 }  // namespace
 
 JointRefinementRecord refine_jointly(std::vector<ShapeParticles>& shapes, const JointRefinementOptions& options,
@@ -114,23 +131,10 @@ JointRefinementRecord refine_jointly(std::vector<ShapeParticles>& shapes, const 
   for (std::size_t iteration = 0; iteration < options.iterations; ++iteration) {
     std::vector<PointSet> points;
     for (const ShapeParticles& shape : shapes) points.push_back(positions(shape));
-    // The aligned frame's unit is the shapes' mean size: its spacing is the
-    // shapes' spacings at that size.
-    double aligned_spacing = 0;
-    for (std::size_t k = 0; k < shapes.size(); ++k) {
-      const Eigen::RowVector3d centre = points[k].colwise().mean();
-      const double size = std::sqrt((points[k].rowwise() - centre).squaredNorm());
-      aligned_spacing += spacings[k] / size;
-    }
-    double mean_size = 0;
-    for (const PointSet& shape : points) {
-      const Eigen::RowVector3d centre = shape.colwise().mean();
-      mean_size += std::sqrt((shape.rowwise() - centre).squaredNorm());
-    }
-    aligned_spacing *= mean_size / double(shapes.size() * shapes.size());
+    const double aligned = aligned_spacing(points, spacings);
     double mean_step = 0, overlap = 0;
     const std::vector<PointSet> pulls = options.correspondence_weight > 0
-                                            ? correspondence_steps(points, aligned_spacing, mean_step)
+                                            ? correspondence_steps(points, aligned, mean_step)
                                             : std::vector<PointSet>(shapes.size(), PointSet::Zero(Eigen::Index(particles), 3));
     for (std::size_t k = 0; k < shapes.size(); ++k) {
       const PointSet push = sampling_step(points[k], spacings[k], overlap);

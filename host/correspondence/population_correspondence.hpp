@@ -1,12 +1,12 @@
 #pragma once
-// Particles that correspond across a population (issue 31, first part):
-// the template (the first shape) is sampled by the default run (spread);
-// every shape is brought into the template's frame (mesh_alignment); each
-// template particle then goes to the nearest point of each shape's surface,
-// so particle i sits at the same place, up to how well the shapes fit, on
-// every shape. The joint optimisation
-// that would also keep each shape evenly spread (ShapeWorks' entropy
-// system) is not done yet: docs/CORRESPONDENCE.md.
+// Particles that correspond across a population (issue 31): the template
+// (the first shape) is sampled by the default run (spread); every shape is
+// brought into the template's frame (mesh_alignment) and the template is
+// deformed onto it (template_deformation); each template particle goes to
+// the nearest point of each shape's surface, so particle i sits at the same
+// place, up to how well the shapes fit, on every shape; then every shape's
+// particles are refined together (joint_refinement): each shape evened out
+// while the correspondence holds. docs/CORRESPONDENCE.md.
 #include <array>
 #include <cstddef>
 #include <filesystem>
