@@ -1,11 +1,11 @@
 #include "correspondence/joint_refinement.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "common/progress.hpp"
 #include "correspondence/point_tree.hpp"
+#include "particles/particle_params.hpp"
 #include "shape_model/procrustes.hpp"
 
 namespace meshparticles {
@@ -32,10 +32,6 @@ constexpr double kShapeNoise = 0.05;
 constexpr double kPush = 0.25;
 // How much of the shrinkable variation one iteration removes.
 constexpr double kShrinkRate = 0.5;
-
-double hexagonal_spacing(double area, std::size_t particles) {
-  return std::sqrt(2 * area / (std::sqrt(3.0) * double(particles)));
-}
 
 PointSet positions(const ShapeParticles& shape) {
   PointSet points(Eigen::Index(shape.at.size()), 3);
