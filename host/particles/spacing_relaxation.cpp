@@ -8,15 +8,11 @@
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
 #include "mesh/point_cloud_tree.hpp"
-#include "mesh/surface_walk.hpp"
 
 namespace meshparticles {
 
 namespace {
 
-// Pairs whose triangles' normals have a cosine under this do not push each
-// other (opposite sides of a thin sheet, 120 degrees and more apart).
-constexpr double kFacingCosine = -0.5;
 // The first rounds push for this many hexagonal spacings: every pair closer
 // than a little over the mean spacing pushes, so the density evens out and
 // no vacancy (a hole a spacing wide) is left for the growing radius to jam
@@ -27,206 +23,10 @@ constexpr double kFacingCosine = -0.5;
 // 0.950 to 0.960 elsewhere (1.3: 0.943 to 0.952).
 constexpr std::size_t kFoamRounds = 50;
 constexpr double kFoamRadius = 1.2;
-// Then each round pushes for a radius this share above the target; a round
-// that ends below the target halves it, down to kSmallestGrowth.
-constexpr double kGrowth = 0.005;
-constexpr double kSmallestGrowth = 0.002;
-// Pushes a round at most. A push moves each particle by kStepShare of half
-// the overlap of each pair it is in, plus kMomentum of its last move (heavy
-// ball: measured on the sphere at n = 1,024, momentum 0.8 reaches in 100
-// rounds the spacing plain pushes reach in 400), along the surface, at most
-// a quarter of the radius.
-constexpr int kPushesPerRound = 10;
-constexpr double kStepShare = 0.9;
-constexpr double kMomentum = 0.8;
-// The neighbour lists hold the pairs within this many radii, rebuilt when
-// two particles may have closed the margin between them (each moved half
-// of it from where it was when the pairs were found).
-constexpr double kNeighbourReach = 1.5;
 // Rounds between candidates (each measures its cover from every vertex: 4%
 // of a 100k-vertex run at n = 4,096 when it was every 5 rounds; the kept
-// round was the last in every case measured), and the rounds without a gain
-// of kPatienceGain (a share of the spacing) after which the rounds stop.
+// round was the last in every case measured).
 constexpr std::size_t kCheckEvery = 25;
-constexpr std::size_t kPatienceRounds = 60;
-constexpr double kPatienceGain = 1e-4;
-
-struct Particle {
-  std::uint32_t triangle = 0;
-  Vec3 at;
-  Vec3 velocity;       // the last move
-  bool fixed = false;  // on a vertex in no triangle: it stays
-};
-
-// Spreads the low 21 bits of x to every third bit.
-std::uint64_t spread_bits(std::uint64_t x) {
-  x &= 0x1FFFFF;
-  x = (x | x << 32) & 0x1F00000000FFFF;
-  x = (x | x << 16) & 0x1F0000FF0000FF;
-  x = (x | x << 8) & 0x100F00F00F00F00F;
-  x = (x | x << 4) & 0x10C30C30C30C30C3;
-  x = (x | x << 2) & 0x1249249249249249;
-  return x;
-}
-
-// The particles' indices in Morton (Z-curve) order of their vertices in
-// the mesh's bounding box; ties by index.
-std::vector<std::uint32_t> morton_order(const SurfaceMesh& mesh, const std::vector<VertexId>& start) {
-  Vec3 low{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-           std::numeric_limits<double>::infinity()};
-  Vec3 high = -1.0 * low;
-  for (const Vec3& p : mesh.positions()) {
-    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
-    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
-  }
-  const auto cell = [](double value, double from, double to) {
-    const double share = to > from ? (value - from) / (to - from) : 0;
-    return std::uint64_t(std::clamp(share, 0.0, 1.0) * double(0x1FFFFF));
-  };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
-  for (std::uint32_t i = 0; i < start.size(); ++i) {
-    const Vec3& p = mesh.positions()[start[i]];
-    keyed.emplace_back(spread_bits(cell(p.x, low.x, high.x)) | spread_bits(cell(p.y, low.y, high.y)) << 1 |
-                           spread_bits(cell(p.z, low.z, high.z)) << 2,
-                       i);
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<std::uint32_t> order;
-  for (const auto& [key, i] : keyed) order.push_back(i);
-  return order;
-}
-
-class Relaxation {
- public:
-  // The particles are held in Morton order of their start (neighbours near
-  // in memory: on the 1M sphere at n = 100,000 a push in the farthest
-  // start's order, which scatters them, spent most of its time waiting on
-  // memory); points() gives them back in the caller's order.
-  Relaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start) : walk_(mesh), order_(morton_order(mesh, start)) {
-    for (const std::uint32_t i : order_) {
-      Particle p;
-      p.at = mesh.positions()[start[i]];
-      p.fixed = !walk_.first_triangle(start[i], p.triangle);
-      particles_.push_back(p);
-    }
-  }
-
-  // The smallest spacing over facing pairs within `reach` (infinite where none).
-  double smallest_spacing(double reach) {
-    if (!(moved_ * 2 < (reach_ - reach))) build_neighbours(std::max(reach, reach_));
-    double smallest = std::numeric_limits<double>::infinity();
-    for (const auto& [i, j] : pairs_) smallest = std::min(smallest, distance(particles_[i].at, particles_[j].at));
-    return smallest;
-  }
-
-  // Pushes apart the pairs closer than `radius`; false where none is.
-  bool push(double radius) {
-    if (!(moved_ * 2 < reach_ - radius)) build_neighbours(kNeighbourReach * radius);
-    std::vector<Vec3> shift(particles_.size());
-    bool any = false;
-    for (const auto& [i, j] : pairs_) {
-      Vec3 apart = particles_[i].at - particles_[j].at;
-      double d = norm(apart);
-      if (d >= radius) continue;
-      if (d == 0) {  // on one point: apart along a direction of i's triangle, the same every time
-        apart = tangent(particles_[i].triangle);
-        d = 1;
-      }
-      const Vec3 half = (0.5 * (radius - norm(particles_[i].at - particles_[j].at)) / d) * apart;
-      shift[i] = shift[i] + half;
-      shift[j] = shift[j] - half;
-      any = true;
-    }
-    if (!any) return false;
-    double largest = 0;
-    for (std::size_t i = 0; i < particles_.size(); ++i) {
-      Particle& p = particles_[i];
-      if (p.fixed) continue;
-      const Vec3 n = walk_.normal(p.triangle);
-      Vec3 step = kStepShare * shift[i] + kMomentum * p.velocity;
-      step = step - dot(step, n) * n;
-      const double length = norm(step);
-      if (length > radius / 4) step = (radius / 4 / length) * step;  // no jump past a neighbour
-      p.velocity = step;
-      if (length > 0) {
-        const SurfaceLocation moved = walk_.walk(p.triangle, p.at + step);
-        p.triangle = moved.triangle;
-        p.at = moved.at;
-      }
-      // Every particle's, moved this push or not: one that moved earlier
-      // and stopped may still be the farthest from where the pairs were found.
-      largest = std::max(largest, distance(p.at, at_build_[i]));
-    }
-    moved_ = largest;
-    return true;
-  }
-
-  // A unit direction in the plane of `triangle` (its first edge).
-  Vec3 tangent(std::uint32_t triangle) const { return walk_.first_edge_direction(triangle); }
-
-  std::vector<Vec3> positions() const {
-    std::vector<Vec3> at;
-    for (const Particle& p : particles_) at.push_back(p.at);
-    return at;
-  }
-  std::vector<Vec3> normals() const {
-    std::vector<Vec3> normals;
-    for (const Particle& p : particles_) normals.push_back(p.fixed ? Vec3{} : walk_.normal(p.triangle));
-    return normals;
-  }
-  std::vector<std::optional<TrianglePoint>> points() const {
-    std::vector<std::optional<TrianglePoint>> points(particles_.size());
-    for (std::size_t k = 0; k < particles_.size(); ++k) {
-      const Particle& p = particles_[k];
-      if (!p.fixed) points[order_[k]] = TrianglePoint{p.triangle, walk_.walk(p.triangle, p.at).weights};
-    }
-    return points;
-  }
-  const std::vector<Particle>& particles() const { return particles_; }
-  void restore(const std::vector<Particle>& particles) {
-    particles_ = particles;
-    reach_ = 0;
-  }
-
- private:
-  // Pairs within `reach`, each once (i < j), in index order.
-  void build_neighbours(double reach) {
-    const std::vector<Vec3> at = positions();
-    const PointCloud cloud{at};
-    const PointCloudTree tree(3, cloud);
-    pairs_.clear();
-    std::vector<std::pair<std::uint32_t, double>> near;
-    const nanoflann::SearchParams unsorted(32, 0.0f, false);
-    for (std::uint32_t i = 0; i < at.size(); ++i) {
-      if (particles_[i].fixed) continue;
-      const double query[3] = {at[i].x, at[i].y, at[i].z};
-      tree.radiusSearch(query, reach * reach, near, unsorted);
-      std::sort(near.begin(), near.end());
-      const Vec3 ni = walk_.normal(particles_[i].triangle);
-      for (const auto& [j, squared] : near) {
-        if (j <= i || particles_[j].fixed) continue;
-        if (dot(ni, walk_.normal(particles_[j].triangle)) < kFacingCosine) continue;
-        pairs_.emplace_back(i, j);
-      }
-    }
-    reach_ = reach;
-    moved_ = 0;
-    at_build_ = at;
-  }
-
-  SurfaceWalk walk_;
-  std::vector<std::uint32_t> order_;  // held particle k is the caller's particle order_[k]
-  std::vector<Particle> particles_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
-  double reach_ = 0;  // of the pairs
-  double moved_ = 0;  // the farthest any particle is from where it was when the pairs were found
-  // (the pairs hold every pair closer than reach_ - 2 moved_)
-  std::vector<Vec3> at_build_;
-};
-
-}  // namespace
-
-namespace {
 
 // Per vertex, the sum of its triangles' area-weighted normals.
 std::vector<Vec3> vertex_normals(const SurfaceMesh& mesh) {
@@ -252,7 +52,7 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& vertex_n
   double squared[kNearest];
   const auto facing = [&](VertexId v, std::uint32_t particle) {
     return dot(vertex_normal[v], particle_normals[particle]) >=
-           kFacingCosine * norm(vertex_normal[v]) * norm(particle_normals[particle]);
+           PackingRelaxation::kFacingCosine * norm(vertex_normal[v]) * norm(particle_normals[particle]);
   };
   double cover = 0;
   for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
@@ -285,11 +85,15 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
   return straight_cover(mesh, normals, at, facing);
 }
 
+double straight_cover(const SurfaceMesh& mesh, const PackingRelaxation& particles) {
+  return straight_cover(mesh, vertex_normals(mesh), particles.positions(), particles.normals());
+}
+
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
                                 std::size_t max_rounds, const std::vector<double>& cover_limits,
                                 double start_geodesic_cover, bool quiet) {
   const auto started = std::chrono::steady_clock::now();
-  Relaxation relaxation(mesh, start);
+  PackingRelaxation relaxation(mesh, start);
   RelaxationOutcome outcome;
   const double reach = 2 * d_hex;
   outcome.start_spacing = relaxation.smallest_spacing(reach);
@@ -302,36 +106,26 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
   const double to_geodesic = start_geodesic_cover > 0 && outcome.start_cover > 0 && std::isfinite(outcome.start_cover)
                                  ? start_geodesic_cover / outcome.start_cover
                                  : 1.0;
-  std::vector<std::vector<Particle>> kept(cover_limits.size(), relaxation.particles());
+  std::vector<std::vector<PackingRelaxation::Particle>> kept(cover_limits.size(), relaxation.particles());
   for (const double limit : cover_limits) {
     (void)limit;
     outcome.candidates.push_back({{}, outcome.start_spacing, to_geodesic * outcome.start_cover, 0});
   }
   if (max_rounds > 0 && std::isfinite(outcome.start_spacing)) {
     ProgressLine progress("relax", max_rounds, quiet);
-    double target = 0, growth = kGrowth, best = 0;
-    std::size_t last_gain = 0;
+    std::optional<RadiusGrowth> growth;
     for (std::size_t round = 1; round <= max_rounds; ++round) {
       const bool evening = round <= kFoamRounds;
       if (round == kFoamRounds + 1) {  // the growth starts from what the even density reached
-        target = best = relaxation.smallest_spacing(target > 0 ? target : reach);
-        last_gain = round;
+        growth.emplace(relaxation.smallest_spacing(reach), round);
       }
-      if (!evening && round - last_gain > kPatienceRounds) break;
-      const double radius = evening ? kFoamRadius * d_hex : target * (1 + growth);
-      for (int i = 0; i < kPushesPerRound && relaxation.push(radius); ++i) {
-      }
-      const double spacing = relaxation.smallest_spacing(evening ? radius : target);
+      if (!evening && !growth->patient(round)) break;
+      const double radius = evening ? kFoamRadius * d_hex : growth->radius();
+      relaxation.push_round(radius);
+      const double spacing = relaxation.smallest_spacing(evening ? radius : growth->target());
       outcome.round_spacings.push_back(spacing);
       if (!std::isfinite(spacing)) continue;  // no pair within reach: nothing to compare
-      if (!evening) {
-        if (spacing > best * (1 + kPatienceGain)) {
-          best = spacing;
-          last_gain = round;
-        }
-        if (spacing < target) growth = std::max(kSmallestGrowth, growth / 2);
-        target = std::max(target, std::min(radius, spacing * (1 + growth)));
-      }
+      if (!evening) growth->record(radius, spacing, round);
       const bool wanted = std::any_of(outcome.candidates.begin(), outcome.candidates.end(),
                                       [&](const RelaxationCandidate& c) { return spacing > c.spacing; });
       if ((round % kCheckEvery == 0 || round == max_rounds) && wanted) {

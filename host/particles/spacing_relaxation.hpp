@@ -7,16 +7,15 @@
 // the smallest gap; moving them together can (docs/ALGORITHM.md,
 // "Relaxation").
 //
-// Distances here are straight lines between particles that face the same
-// way (their triangles' normals under 120 degrees apart): at a spacing the
-// surface is nearly flat, a straight line is never longer than the
-// geodesic, and two sides of a thin sheet do not push each other.
+// The pushes and the growing radius are particles/packing_relaxation's:
+// straight-line distances between particles that face the same way.
 #include <cstddef>
 #include <optional>
 #include <vector>
 
 #include "mesh/point_insertion.hpp"
 #include "mesh/surface_mesh.hpp"
+#include "particles/packing_relaxation.hpp"
 
 namespace meshparticles {
 
@@ -48,6 +47,8 @@ struct RelaxationOutcome {
 // relaxation measures its candidates' (a few tens of milliseconds on a
 // million vertices).
 double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles);
+// The same of particles that a relaxation holds.
+double straight_cover(const SurfaceMesh& mesh, const PackingRelaxation& particles);
 
 // From particles on the vertices `start` of `mesh`, at most `max_rounds`
 // rounds (0: the start as it is): first kFoamRounds pushing for a radius a

@@ -1,0 +1,230 @@
+#include "particles/packing_relaxation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mesh/point_cloud_tree.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+// Pushes a round at most. A push moves each particle by kStepShare of half
+// the overlap of each pair it is in, plus kMomentum of its last move (heavy
+// ball: measured on the sphere at n = 1,024, momentum 0.8 reaches in 100
+// rounds the spacing plain pushes reach in 400), along the surface, at most
+// a quarter of the radius.
+constexpr int kPushesPerRound = 10;
+constexpr double kStepShare = 0.9;
+constexpr double kMomentum = 0.8;
+// The neighbour lists hold the pairs within this many radii, rebuilt when
+// two particles may have closed the margin between them (each moved half
+// of it from where it was when the pairs were found).
+constexpr double kNeighbourReach = 1.5;
+// Each growing round pushes for a radius this share above the target; a
+// round that ends below the target halves it, down to kSmallestGrowth.
+constexpr double kGrowth = 0.005;
+constexpr double kSmallestGrowth = 0.002;
+// The rounds without a gain of kPatienceGain (a share of the spacing) after
+// which the growing rounds stop.
+constexpr std::size_t kPatienceRounds = 60;
+constexpr double kPatienceGain = 1e-4;
+
+// Spreads the low 21 bits of x to every third bit.
+std::uint64_t spread_bits(std::uint64_t x) {
+  x &= 0x1FFFFF;
+  x = (x | x << 32) & 0x1F00000000FFFF;
+  x = (x | x << 16) & 0x1F0000FF0000FF;
+  x = (x | x << 8) & 0x100F00F00F00F00F;
+  x = (x | x << 4) & 0x10C30C30C30C30C3;
+  x = (x | x << 2) & 0x1249249249249249;
+  return x;
+}
+
+// The indices of `points` in Morton (Z-curve) order in the mesh's bounding
+// box; ties by index.
+std::vector<std::uint32_t> morton_order(const SurfaceMesh& mesh, const std::vector<Vec3>& points) {
+  Vec3 low{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+           std::numeric_limits<double>::infinity()};
+  Vec3 high = -1.0 * low;
+  for (const Vec3& p : mesh.positions()) {
+    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+  }
+  const auto cell = [](double value, double from, double to) {
+    const double share = to > from ? (value - from) / (to - from) : 0;
+    return std::uint64_t(std::clamp(share, 0.0, 1.0) * double(0x1FFFFF));
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+  for (std::uint32_t i = 0; i < points.size(); ++i) {
+    const Vec3& p = points[i];
+    keyed.emplace_back(spread_bits(cell(p.x, low.x, high.x)) | spread_bits(cell(p.y, low.y, high.y)) << 1 |
+                           spread_bits(cell(p.z, low.z, high.z)) << 2,
+                       i);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> order;
+  for (const auto& [key, i] : keyed) order.push_back(i);
+  return order;
+}
+
+}  // namespace
+
+PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start) : walk_(mesh) {
+  std::vector<SurfaceLocation> locations;
+  for (const VertexId v : start) {
+    SurfaceLocation location;
+    location.at = mesh.positions()[v];
+    if (!walk_.first_triangle(v, location.triangle)) location.triangle = kNoTriangle;
+    locations.push_back(location);
+  }
+  hold(mesh, locations);
+}
+
+PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start) : walk_(mesh) {
+  hold(mesh, start);
+}
+
+// The particles are held in Morton order of their start (neighbours near in
+// memory: on the 1M sphere at n = 100,000 a push in the farthest start's
+// order, which scatters them, spent most of its time waiting on memory).
+void PackingRelaxation::hold(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start) {
+  start_ = start;
+  std::vector<Vec3> at;
+  for (const SurfaceLocation& location : start) at.push_back(location.at);
+  order_ = morton_order(mesh, at);
+  for (const std::uint32_t i : order_) {
+    Particle p;
+    p.at = start[i].at;
+    p.fixed = start[i].triangle == kNoTriangle;
+    p.triangle = p.fixed ? 0 : start[i].triangle;
+    particles_.push_back(p);
+  }
+}
+
+double PackingRelaxation::smallest_spacing(double reach) {
+  if (!(moved_ * 2 < (reach_ - reach))) build_neighbours(std::max(reach, reach_));
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& [i, j] : pairs_) smallest = std::min(smallest, distance(particles_[i].at, particles_[j].at));
+  return smallest;
+}
+
+bool PackingRelaxation::push(double radius, const std::vector<Vec3>& nudge) {
+  if (!(moved_ * 2 < reach_ - radius)) build_neighbours(kNeighbourReach * radius);
+  std::vector<Vec3> shift(particles_.size());
+  bool any = false;
+  for (const auto& [i, j] : pairs_) {
+    Vec3 apart = particles_[i].at - particles_[j].at;
+    double d = norm(apart);
+    if (d >= radius) continue;
+    if (d == 0) {  // on one point: apart along a direction of i's triangle, the same every time
+      apart = tangent(particles_[i].triangle);
+      d = 1;
+    }
+    const Vec3 half = (0.5 * (radius - norm(particles_[i].at - particles_[j].at)) / d) * apart;
+    shift[i] = shift[i] + half;
+    shift[j] = shift[j] - half;
+    any = true;
+  }
+  if (!any && nudge.empty()) return false;
+  double largest = 0;
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    Particle& p = particles_[i];
+    if (p.fixed) continue;
+    const Vec3 n = walk_.normal(p.triangle);
+    Vec3 step = kStepShare * shift[i] + kMomentum * p.velocity;
+    if (!nudge.empty()) step = step + nudge[order_[i]];
+    step = step - dot(step, n) * n;
+    const double length = norm(step);
+    if (length > radius / 4) step = (radius / 4 / length) * step;  // no jump past a neighbour
+    p.velocity = step;
+    if (length > 0) {
+      const SurfaceLocation moved = walk_.walk(p.triangle, p.at + step);
+      p.triangle = moved.triangle;
+      p.at = moved.at;
+    }
+    // Every particle's, moved this push or not: one that moved earlier
+    // and stopped may still be the farthest from where the pairs were found.
+    largest = std::max(largest, distance(p.at, at_build_[i]));
+  }
+  moved_ = largest;
+  return any;
+}
+
+void PackingRelaxation::push_round(double radius, const std::vector<Vec3>& nudge) {
+  if (!push(radius, nudge)) return;
+  for (int i = 1; i < kPushesPerRound && push(radius); ++i) {
+  }
+}
+
+std::vector<Vec3> PackingRelaxation::positions() const {
+  std::vector<Vec3> at;
+  for (const Particle& p : particles_) at.push_back(p.at);
+  return at;
+}
+
+std::vector<Vec3> PackingRelaxation::normals() const {
+  std::vector<Vec3> normals;
+  for (const Particle& p : particles_) normals.push_back(p.fixed ? Vec3{} : walk_.normal(p.triangle));
+  return normals;
+}
+
+std::vector<std::optional<TrianglePoint>> PackingRelaxation::points() const {
+  std::vector<std::optional<TrianglePoint>> points(particles_.size());
+  for (std::size_t k = 0; k < particles_.size(); ++k) {
+    const Particle& p = particles_[k];
+    if (!p.fixed) points[order_[k]] = TrianglePoint{p.triangle, walk_.walk(p.triangle, p.at).weights};
+  }
+  return points;
+}
+
+std::vector<SurfaceLocation> PackingRelaxation::locations() const {
+  std::vector<SurfaceLocation> locations = start_;
+  for (std::size_t k = 0; k < particles_.size(); ++k) {
+    const Particle& p = particles_[k];
+    if (!p.fixed) locations[order_[k]] = walk_.walk(p.triangle, p.at);
+  }
+  return locations;
+}
+
+// Pairs within `reach`, each once (i < j), in index order.
+void PackingRelaxation::build_neighbours(double reach) {
+  const std::vector<Vec3> at = positions();
+  const PointCloud cloud{at};
+  const PointCloudTree tree(3, cloud);
+  pairs_.clear();
+  std::vector<std::pair<std::uint32_t, double>> near;
+  const nanoflann::SearchParams unsorted(32, 0.0f, false);
+  for (std::uint32_t i = 0; i < at.size(); ++i) {
+    if (particles_[i].fixed) continue;
+    const double query[3] = {at[i].x, at[i].y, at[i].z};
+    tree.radiusSearch(query, reach * reach, near, unsorted);
+    std::sort(near.begin(), near.end());
+    const Vec3 ni = walk_.normal(particles_[i].triangle);
+    for (const auto& [j, squared] : near) {
+      if (j <= i || particles_[j].fixed) continue;
+      if (dot(ni, walk_.normal(particles_[j].triangle)) < kFacingCosine) continue;
+      pairs_.emplace_back(i, j);
+    }
+  }
+  reach_ = reach;
+  moved_ = 0;
+  at_build_ = at;
+}
+
+RadiusGrowth::RadiusGrowth(double spacing, std::size_t round)
+    : target_(spacing), growth_(kGrowth), best_(spacing), last_gain_(round) {}
+
+void RadiusGrowth::record(double radius, double spacing, std::size_t round) {
+  if (spacing > best_ * (1 + kPatienceGain)) {
+    best_ = spacing;
+    last_gain_ = round;
+  }
+  if (spacing < target_) growth_ = std::max(kSmallestGrowth, growth_ / 2);
+  target_ = std::max(target_, std::min(radius, spacing * (1 + growth_)));
+}
+
+bool RadiusGrowth::patient(std::size_t round) const { return round - last_gain_ <= kPatienceRounds; }
+
+}  // namespace meshparticles

@@ -1,0 +1,108 @@
+#pragma once
+// Particles pushed apart on a surface, all at once: every pair closer than a
+// radius moves apart along the surface, with momentum. The rounds of the
+// default run's relaxation (spacing_relaxation) and of the correspondence's
+// packing (correspondence/joint_refinement) both push this way, so that a
+// shape of a population ends as evenly spread as its own run.
+//
+// Distances are straight lines between particles that face the same way
+// (their triangles' normals under 120 degrees apart): at a spacing the
+// surface is nearly flat, a straight line is never longer than the
+// geodesic, and two sides of a thin sheet do not push each other.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "mesh/point_insertion.hpp"
+#include "mesh/surface_mesh.hpp"
+#include "mesh/surface_walk.hpp"
+
+namespace meshparticles {
+
+class PackingRelaxation {
+ public:
+  struct Particle {
+    std::uint32_t triangle = 0;
+    Vec3 at;
+    Vec3 velocity;       // the last move
+    bool fixed = false;  // on a vertex in no triangle: it stays
+  };
+
+  // Pairs whose triangles' normals have a cosine under this do not push
+  // each other (opposite sides of a thin sheet, 120 degrees and more apart).
+  static constexpr double kFacingCosine = -0.5;
+  // A start in no triangle (a vertex in none) stays where it is.
+  static constexpr std::uint32_t kNoTriangle = 0xFFFFFFFF;
+
+  // Particles on the vertices `start`, or at surface points.
+  PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start);
+  PackingRelaxation(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start);
+
+  // The smallest spacing over facing pairs within `reach` (infinite where none).
+  double smallest_spacing(double reach);
+
+  // Pushes apart the pairs closer than `radius`; false where none is. Each
+  // particle's step also takes `nudge` (per particle, in the caller's
+  // order; empty: none), a move the caller wants besides the push.
+  bool push(double radius, const std::vector<Vec3>& nudge = {});
+
+  // A round: pushes for `radius` until none is closer or kPushesPerRound
+  // pushes are done; `nudge` joins the first.
+  void push_round(double radius, const std::vector<Vec3>& nudge = {});
+
+  // In the held order (Morton order of the start), for measures over all particles.
+  std::vector<Vec3> positions() const;
+  std::vector<Vec3> normals() const;  // zero for a fixed particle
+
+  // In the caller's order: none for a fixed particle.
+  std::vector<std::optional<TrianglePoint>> points() const;
+  std::vector<SurfaceLocation> locations() const;  // fixed ones: their start
+
+  const std::vector<Particle>& particles() const { return particles_; }
+  void restore(const std::vector<Particle>& particles) {
+    particles_ = particles;
+    reach_ = 0;
+  }
+
+ private:
+  void hold(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start);
+  void build_neighbours(double reach);
+  // A unit direction in the plane of `triangle` (its first edge).
+  Vec3 tangent(std::uint32_t triangle) const { return walk_.first_edge_direction(triangle); }
+
+  SurfaceWalk walk_;
+  std::vector<std::uint32_t> order_;  // held particle k is the caller's particle order_[k]
+  std::vector<Particle> particles_;
+  std::vector<SurfaceLocation> start_;  // per caller's particle, for fixed ones
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
+  double reach_ = 0;  // of the pairs
+  double moved_ = 0;  // the farthest any particle is from where it was when the pairs were found
+  // (the pairs hold every pair closer than reach_ - 2 moved_)
+  std::vector<Vec3> at_build_;
+};
+
+// The radius of the growing rounds: each round pushes for a radius a little
+// above the target, the smallest spacing the rounds have held; a round that
+// ends below the target halves the step (soft disks whose radius grows, as
+// Lubachevsky and Stillinger grow hard disks into a packing). The rounds
+// stop when the smallest spacing has not grown for a while.
+class RadiusGrowth {
+ public:
+  // From the smallest spacing reached so far, at round `round`.
+  RadiusGrowth(double spacing, std::size_t round);
+  double radius() const { return target_ * (1 + growth_); }
+  double target() const { return target_; }
+  // After a round that pushed for radius() and ended at `spacing`.
+  void record(double radius, double spacing, std::size_t round);
+  // Whether round `round` should still run: a gain came not long before.
+  bool patient(std::size_t round) const;
+  // Patient again from round `round`, as if it had just gained.
+  void renew(std::size_t round) { last_gain_ = round; }
+
+ private:
+  double target_ = 0, growth_ = 0, best_ = 0;
+  std::size_t last_gain_ = 0;
+};
+
+}  // namespace meshparticles
