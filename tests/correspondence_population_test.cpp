@@ -19,6 +19,7 @@
 #include "correspondence/template_deformation.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
+#include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -106,6 +107,8 @@ TEST(TemplateDeformation, LeavesATemplateOnItselfWhereItIs) {
 // measured in their common parameter, as scripts/correspondence_error.py does.
 class SmallPopulation : public ::testing::Test {
  protected:
+  static constexpr std::size_t kParticles = 96;
+
   void SetUp() override {
     directory_ = std::filesystem::temp_directory_path() / ("mp_population_" + std::to_string(::getpid()));
     std::filesystem::create_directories(directory_);
@@ -117,14 +120,23 @@ class SmallPopulation : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
 
-  PopulationCorrespondence correspond(std::size_t iterations, double weight) const {
+  PopulationCorrespondence correspond(std::size_t iterations, double weight, bool pack) const {
     CorrespondRequest request;
     request.meshes = files_;
-    request.run.particles = 96;
+    request.run.particles = kParticles;
     request.quiet = true;
     request.refinement.iterations = iterations;
     request.refinement.correspondence_weight = weight;
+    request.refinement.pack = pack;
     return correspond_population(request);
+  }
+
+  // Shape s's nn_cv when its own run (the default) spreads the particles.
+  double own_nn_cv(std::size_t s) const {
+    RunRequest run;
+    run.particles = kParticles;
+    run.quiet = true;
+    return run_pipeline(shapes_[s].mesh, run).quality.nn_cv.value();
   }
 
   // Mean over particles of the mean angle from their mean direction, in
@@ -164,9 +176,9 @@ class SmallPopulation : public ::testing::Test {
 // what keeps particle i in place while it does: without it (weight 0) the
 // same iterations let the particles drift apart across shapes.
 TEST_F(SmallPopulation, JointRefinementEvensShapesOutWhileTheCorrespondenceHolds) {
-  const PopulationCorrespondence transferred = correspond(0, 0.1);
-  const PopulationCorrespondence refined = correspond(600, 0.1);
-  const PopulationCorrespondence unheld = correspond(600, 0.0);
+  const PopulationCorrespondence transferred = correspond(0, 0.1, false);
+  const PopulationCorrespondence refined = correspond(600, 0.1, false);
+  const PopulationCorrespondence unheld = correspond(600, 0.0, false);
   EXPECT_EQ(refined.refinement.overlap.size(), 600u);
   EXPECT_LT(worst_nn_cv(refined), 0.8 * worst_nn_cv(transferred))
       << "refined " << worst_nn_cv(refined) << ", transferred " << worst_nn_cv(transferred);
@@ -174,6 +186,19 @@ TEST_F(SmallPopulation, JointRefinementEvensShapesOutWhileTheCorrespondenceHolds
   EXPECT_LT(spread(refined), 0.85 * spread(unheld)) << "held " << spread(refined) << ", unheld " << spread(unheld);
   // Row i is one particle: the template's stays near where its run put it.
   EXPECT_LT(spread(transferred), 0.3);
+}
+
+// The packing ends every shape as evenly spread as its own run spreads it
+// (issue 31: nn_cv at most 1.25 times the own run's), and the
+// correspondence still holds.
+TEST_F(SmallPopulation, PackingEvensEachShapeAsItsOwnRunDoes) {
+  const PopulationCorrespondence packed = correspond(200, 0.1, true);
+  EXPECT_GT(packed.refinement.packing_rounds, 0u);
+  for (std::size_t s = 0; s < shapes_.size(); ++s) {
+    const double own = own_nn_cv(s), nn_cv = packed.shapes[s].quality.nn_cv.value();
+    EXPECT_LE(nn_cv, 1.25 * own) << "shape " << s << ": " << nn_cv << " against its own run's " << own;
+  }
+  EXPECT_LT(spread(packed), 0.3);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include "batch/batch_inputs.hpp"
 #include "cli/commands.hpp"
@@ -27,8 +28,16 @@ struct CorrespondOptions {
   std::size_t samples = 1000;
   std::size_t refine_iterations = JointRefinementOptions{}.iterations;
   double correspondence_weight = JointRefinementOptions{}.correspondence_weight;
+  bool no_packing = false;
+  double packing_hold = JointRefinementOptions{}.packing_hold;
   bool quiet = false;
 };
+
+std::string method_name(const JointRefinementOptions& refinement) {
+  if (refinement.iterations == 0) return "template transfer";
+  if (!refinement.pack) return "template transfer, then joint refinement";
+  return "template transfer, then joint refinement and packing";
+}
 
 void run_correspond(const CorrespondOptions& options) {
   std::vector<std::string> notes;
@@ -49,7 +58,10 @@ void run_correspond(const CorrespondOptions& options) {
   request.quiet = options.quiet;
   request.refinement.iterations = options.refine_iterations;
   request.refinement.correspondence_weight = options.correspondence_weight;
+  request.refinement.pack = !options.no_packing;
+  request.refinement.packing_hold = options.packing_hold;
   const PopulationCorrespondence population = correspond_population(request);
+  const JointRefinementRecord& refinement = population.refinement;
 
   std::vector<PointSet> shapes;
   for (const ShapeCorrespondence& shape : population.shapes) shapes.push_back(shape.particles);
@@ -57,7 +69,8 @@ void run_correspond(const CorrespondOptions& options) {
   const nlohmann::json params = {{"particles", options.particles}, {"seed", options.seed},
                                  {"scale", !options.no_scale}, {"samples", options.samples},
                                  {"refine_iterations", options.refine_iterations},
-                                 {"correspondence_weight", options.correspondence_weight}};
+                                 {"correspondence_weight", options.correspondence_weight},
+                                 {"packing", !options.no_packing}, {"packing_hold", options.packing_hold}};
   const ShapeModelOutputs outputs{names, &model, params};
 
   nlohmann::json shape_rows = nlohmann::json::array();
@@ -70,10 +83,13 @@ void run_correspond(const CorrespondOptions& options) {
                           {"quality", quality_json(shape.quality)}});
   }
   const nlohmann::json summary = {{"version", program_version()},
-                                  {"method", options.refine_iterations > 0 ? "template transfer, then joint refinement"
-                                                                           : "template transfer"},
-                                  {"refinement", {{"overlap", population.refinement.overlap},
-                                                  {"correspondence_step", population.refinement.correspondence_step}}},
+                                  {"method", method_name(request.refinement)},
+                                  {"refinement", {{"overlap", refinement.overlap},
+                                                  {"correspondence_step", refinement.correspondence_step},
+                                                  {"packing", {{"rounds", refinement.packing_rounds},
+                                                               {"released", refinement.packing_released},
+                                                               {"smallest_spacing", refinement.packing_spacing},
+                                                               {"correspondence_step", refinement.packing_correspondence_step}}}}},
                                   {"params", params},
                                   {"template", {{"mesh", names.front()}, {"quality", quality_json(population.template_run.quality)}}},
                                   {"shapes", shape_rows},
@@ -114,6 +130,14 @@ void add_correspond_command(CLI::App& app) {
                       "Refinement: the correspondence step's weight against the sampling step's (0: each shape "
                       "evened out on its own)")
       ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
+  command->add_flag("--no-packing", options->no_packing,
+                    "Refinement: end after the iterations, without the packing (each shape's particles pushed apart "
+                    "for a growing radius, as `run` spreads them)");
+  command->add_option("--packing-hold", options->packing_hold,
+                      "Packing: the share of the correspondence weight it keeps (0: the evenest shapes, a looser "
+                      "correspondence)")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "No progress lines");
   command->callback([options] { run_correspond(*options); });

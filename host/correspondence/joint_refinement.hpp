@@ -9,6 +9,14 @@
 // share, and leaves the true modes alone). The transfer's particles are
 // consistent but crowded; the sampling alone would even each shape out on
 // its own and lose the correspondence; together they do both.
+//
+// Soft disks at a fixed radius jam before they pack as evenly as a shape's
+// own run (nn_cv 0.02 against 0.002), so the refinement ends with the
+// packing of the own run's relaxation (particles/packing_relaxation: pairs
+// pushed apart for a radius that grows while it can), the correspondence
+// step beside it, its weight fading to a share held to the end. A shape
+// whose packing the held step keeps from closing a hole is let go to
+// close it on its own.
 #include <cstddef>
 #include <vector>
 
@@ -28,6 +36,12 @@ struct JointRefinementOptions {
   // The correspondence step's weight against the sampling step's (0: each
   // shape evened out on its own, and the correspondence drifts).
   double correspondence_weight = 0.1;
+  // Then the packing, while the correspondence step's weight fades, over
+  // its first 50 rounds, to `packing_hold` of the iterations' (0: each
+  // shape packs on its own, the evenest, and the model is less compact:
+  // docs/CORRESPONDENCE.md).
+  bool pack = true;
+  double packing_hold = 0.2;
 };
 
 struct JointRefinementRecord {
@@ -35,6 +49,12 @@ struct JointRefinementRecord {
   // shape's sampling objective, in its hexagonal spacings) and the mean
   // length of the correspondence step (in the aligned frame's spacings).
   std::vector<double> overlap, correspondence_step;
+  // The packing: per round, the mean over shapes of the radius held (the
+  // smallest spacing, in hexagonal spacings) and the correspondence step's
+  // length; the rounds it took.
+  std::vector<double> packing_spacing, packing_correspondence_step;
+  std::size_t packing_rounds = 0;
+  std::size_t packing_released = 0;  // shapes let go to pack on their own (a hole held open)
 };
 
 // Moves every shape's particles (all shapes hold the same count, row i the
