@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <random>
 #include <set>
 
 #include "correspondence/mesh_alignment.hpp"
@@ -19,7 +20,9 @@
 #include "correspondence/template_deformation.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
+#include "particles/particle_params.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "shape_model/shape_model.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -121,8 +124,12 @@ class SmallPopulation : public ::testing::Test {
   void TearDown() override { std::filesystem::remove_all(directory_); }
 
   PopulationCorrespondence correspond(std::size_t iterations, double weight, bool pack) const {
+    return correspond(files_, iterations, weight, pack);
+  }
+  static PopulationCorrespondence correspond(const std::vector<std::filesystem::path>& files, std::size_t iterations,
+                                             double weight, bool pack) {
     CorrespondRequest request;
-    request.meshes = files_;
+    request.meshes = files;
     request.run.particles = kParticles;
     request.quiet = true;
     request.refinement.iterations = iterations;
@@ -199,6 +206,66 @@ TEST_F(SmallPopulation, PackingEvensEachShapeAsItsOwnRunDoes) {
     EXPECT_LE(nn_cv, 1.25 * own) << "shape " << s << ": " << nn_cv << " against its own run's " << own;
   }
   EXPECT_LT(spread(packed), 0.3);
+}
+
+// Issue 31: the same population moved, turned and scaled gives the same
+// model. Every shape, the template too, is posed anew at random; particle i
+// lands where it landed before, carried by the new pose, and the model
+// holds the same share of the variance. Not to the bit: the template's own
+// run is not (its relaxation holds particles in an order of the bounding
+// box, and a packing amplifies rounding), and in this test it alone puts
+// particles 0.13 spacings (median) from where they were; after the
+// refinement and packing 0.23 (90th percentile 0.39), where a shape placed
+// at random is several spacings off (batch: 5 and more).
+TEST_F(SmallPopulation, TheSamePopulationMovedGivesTheSameModel) {
+  std::mt19937_64 random(31);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(0, 1);
+  struct Pose {
+    Eigen::Matrix3d rotation;
+    double scale;
+    Eigen::RowVector3d offset;
+  };
+  std::vector<Pose> poses;
+  std::vector<std::filesystem::path> moved_files;
+  for (std::size_t s = 0; s < shapes_.size(); ++s) {
+    const Eigen::Quaterniond turn =
+        Eigen::Quaterniond(normal(random), normal(random), normal(random), normal(random)).normalized();
+    poses.push_back({turn.toRotationMatrix(), 0.5 + 1.5 * uniform(random),
+                     Eigen::RowVector3d(10 * uniform(random) - 5, 10 * uniform(random) - 5, 10 * uniform(random) - 5)});
+    std::vector<Vec3> positions;
+    for (const Vec3& p : shapes_[s].mesh.positions()) {
+      const Eigen::RowVector3d moved = poses.back().scale * Eigen::RowVector3d(p.x, p.y, p.z) *
+                                           poses.back().rotation.transpose() + poses.back().offset;
+      positions.push_back({moved(0), moved(1), moved(2)});
+    }
+    moved_files.push_back(directory_ / ("moved_" + std::to_string(s) + ".off"));
+    write_mesh(SurfaceMesh(positions, shapes_[s].mesh.triangles()), moved_files.back());
+  }
+  const PopulationCorrespondence original = correspond(200, 0.1, true);
+  const PopulationCorrespondence moved = correspond(moved_files, 200, 0.1, true);
+
+  std::vector<double> offsets;  // per particle and shape, in the shape's hexagonal spacings
+  std::vector<PointSet> original_sets, moved_sets;
+  for (std::size_t s = 0; s < shapes_.size(); ++s) {
+    const Pose& pose = poses[s];
+    const PointSet back =
+        ((moved.shapes[s].particles.rowwise() - pose.offset) * pose.rotation) / pose.scale;  // the pose undone
+    const double spacing = hexagonal_spacing(shapes_[s].mesh.area(), kParticles);
+    for (Eigen::Index i = 0; i < back.rows(); ++i) {
+      offsets.push_back((back.row(i) - original.shapes[s].particles.row(i)).norm() / spacing);
+    }
+    original_sets.push_back(original.shapes[s].particles);
+    moved_sets.push_back(moved.shapes[s].particles);
+  }
+  std::sort(offsets.begin(), offsets.end());
+  const double median = offsets[offsets.size() / 2], p90 = offsets[offsets.size() * 9 / 10];
+  EXPECT_LT(median, 0.35) << "90th percentile " << p90;
+  EXPECT_LT(p90, 0.6);
+  const ShapeModel a = build_shape_model(original_sets, true, 10, 1, true);
+  const ShapeModel b = build_shape_model(moved_sets, true, 10, 1, true);
+  EXPECT_NEAR(a.quality.compactness[0], b.quality.compactness[0], 0.05);  // 0.94 and 0.97 here
+  EXPECT_NEAR(a.quality.compactness[1], b.quality.compactness[1], 0.05);
 }
 
 }  // namespace
