@@ -158,6 +158,7 @@ struct ShapePacking {
 
 // Runs work(k) for every k < count, shared out among the cores.
 void for_every_shape(std::size_t count, const std::function<void(std::size_t)>& work) {
+  if (count == 0) return;
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex mutex;
