@@ -66,6 +66,8 @@ WORK_GROUP_SIZES=8,16,32,64,128,256
 TILE_SIZES=16,32,64,128,256,512,1024
 CANDIDATE_SLOTS=4,11,25
 BOTH=0,1
+# The device balls' tables (host/geodesics/device_balls.cpp): the smallest, and 2,048 and 4,096 vertices.
+SLOT_BITS=8,11,12
 
 # One line per compile: FILE then its -D options (a define left out takes the
 # file's default). `compiles FILE NAME=V1,V2 ...` adds the full product.
@@ -100,6 +102,7 @@ plan() {
   compiles naive_update.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES CANDIDATE_SLOTS=$CANDIDATE_SLOTS POTENTIAL_GAUSS=$BOTH
   compiles tiled_update.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES TILE_SIZE=$TILE_SIZES
   compiles tiled_update.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES CANDIDATE_SLOTS=$CANDIDATE_SLOTS POTENTIAL_GAUSS=$BOTH
+  compiles fim_balls.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES SLOT_BITS=$SLOT_BITS
 }
 
 WORK="$(mktemp -d)"

@@ -185,7 +185,8 @@ TEST(Geodesics, ResultDoesNotDependOnThreadCount) {
 // vertices accepted in the same order), and +inf beyond it.
 TEST(GeodesicSolver, AStoppedSolveEqualsTheFullOneInsideTheRadius) {
   const SurfaceMesh torus = committed("torus.off");
-  for (const GeodesicMethod method : {GeodesicMethod::fast_marching, GeodesicMethod::dijkstra}) {
+  for (const GeodesicMethod method :
+       {GeodesicMethod::fast_marching, GeodesicMethod::dijkstra, GeodesicMethod::fast_iterative}) {
     SCOPED_TRACE(method_name(method));
     const auto solver = make_geodesic_solver(torus, method);
     SolverScratch scratch;
@@ -214,7 +215,8 @@ TEST(GeodesicSolver, AStoppedSolveEqualsTheFullOneInsideTheRadius) {
 // solves on the same scratch, every answer is as if computed alone.
 TEST(GeodesicSolver, BallsAreTheFullSolveInsideTheRadius) {
   const SurfaceMesh sphere = committed("sphere.off");
-  for (const GeodesicMethod method : {GeodesicMethod::fast_marching, GeodesicMethod::dijkstra}) {
+  for (const GeodesicMethod method :
+       {GeodesicMethod::fast_marching, GeodesicMethod::dijkstra, GeodesicMethod::fast_iterative}) {
     SCOPED_TRACE(method_name(method));
     const auto solver = make_geodesic_solver(sphere, method);
     SolverScratch scratch;
@@ -249,7 +251,8 @@ TEST(GeodesicSolver, BallsAreTheFullSolveInsideTheRadius) {
 TEST(GeodesicSolver, SeveralSourcesGiveTheDistanceToTheNearest) {
   const SurfaceMesh sphere = committed("sphere.off");
   const std::vector<VertexId> sources = {3, 1500, 2900};
-  for (const GeodesicMethod method : {GeodesicMethod::dijkstra, GeodesicMethod::fast_marching}) {
+  for (const GeodesicMethod method :
+       {GeodesicMethod::dijkstra, GeodesicMethod::fast_marching, GeodesicMethod::fast_iterative}) {
     SCOPED_TRACE(method_name(method));
     const auto solver = make_geodesic_solver(sphere, method);
     SolverScratch scratch;
@@ -266,10 +269,40 @@ TEST(GeodesicSolver, SeveralSourcesGiveTheDistanceToTheNearest) {
     if (method == GeodesicMethod::dijkstra) {
       EXPECT_EQ(worst, 0.0);
     } else {
-      std::printf("fast marching from 3 sources: largest difference from the nearest single solve %.2e (%.3f edges)\n",
-                  worst, worst / sphere.mean_edge_length());
+      std::printf("%s from 3 sources: largest difference from the nearest single solve %.2e (%.3f edges)\n",
+                  method_name(method).c_str(), worst, worst / sphere.mean_edge_length());
       EXPECT_LT(worst, 0.1 * sphere.mean_edge_length());
     }
+  }
+}
+
+// The fast iterative method converges to fast marching's distances: the
+// same stencils and update, only their order differs (docs/GEODESICS.md).
+TEST(GeodesicSolver, TheFastIterativeMethodReachesFastMarchingsDistances) {
+  for (const char* name : {"sphere.off", "torus.off", "atrium.off", "patch.off"}) {
+    SCOPED_TRACE(name);
+    const SurfaceMesh mesh = committed(name);
+    const auto fmm = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
+    const auto fim = make_geodesic_solver(mesh, GeodesicMethod::fast_iterative);
+    SolverScratch scratch;
+    std::vector<double> marched(mesh.vertex_count()), iterated(mesh.vertex_count());
+    double sum = 0, worst = 0;
+    std::size_t count = 0;
+    for (VertexId source = 0; source < mesh.vertex_count(); source += VertexId(mesh.vertex_count() / 5 + 1)) {
+      fmm->solve(source, marched, scratch);
+      fim->solve(source, iterated, scratch);
+      for (std::size_t v = 0; v < marched.size(); ++v) {
+        ASSERT_EQ(std::isinf(marched[v]), std::isinf(iterated[v])) << "vertex " << v;
+        if (std::isinf(marched[v]) || marched[v] < 3 * mesh.mean_edge_length()) continue;
+        const double relative = std::abs(iterated[v] - marched[v]) / marched[v];
+        sum += relative;
+        worst = std::max(worst, relative);
+        ++count;
+      }
+    }
+    std::printf("%s: fim against fmm, relative difference %.2e mean, %.2e largest\n", name, sum / double(count), worst);
+    EXPECT_LT(sum / double(count), 1e-4);
+    EXPECT_LT(worst, 0.02);
   }
 }
 

@@ -26,8 +26,8 @@ GeodesicsRequest DistanceTableOptions::request(GeodesicMethod method) const {
 }
 
 void add_geodesic_option(CLI::App& command, std::string& method) {
-  command.add_option("--geodesic", method, "Distance solver: fmm (fast marching) or dijkstra (edge graph)")
-      ->check(CLI::IsMember({"fmm", "dijkstra"}))
+  command.add_option("--geodesic", method, "Distance solver: fmm (fast marching), fim (the fast iterative method) or dijkstra (edge graph)")
+      ->check(CLI::IsMember({"fmm", "fim", "dijkstra"}))
       ->capture_default_str();
 }
 

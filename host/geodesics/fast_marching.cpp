@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "geodesics/point_source_update.hpp"
 #include "geodesics/shortest_first_queue.hpp"
 
 namespace meshparticles {
@@ -13,27 +14,6 @@ namespace {
 constexpr std::uint32_t kBatch = 16;
 constexpr std::size_t kCacheLine = 64;
 constexpr std::size_t kStencilLinesFetched = 4;  // 8 triangles
-
-// The point-source update of C from X (at the origin, distance dx) and Y (at
-// (s.length_xy, 0), distance dy); +inf when the source's straight line to C
-// does not pass through edge XY, leaving C to other stencils and edges.
-double point_source_update(const PlanarFrame& s, double dx, double dy) {
-  const double base = s.length_xy;
-  const double source_x = (dx * dx - dy * dy + base * base) / (2 * base);
-  const double height_squared = dx * dx - source_x * source_x;
-  // Computed whether or not the update applies, and chosen at the end: about
-  // half the updates miss the edge, too unpredictable for a branch.
-  const double source_y = std::sqrt(std::max(height_squared, 0.0));
-  // Where the segment source -> C crosses the x-axis (C has c_y < 0).
-  const double t = source_y / (source_y - s.c_y);
-  const double crossing = source_x + t * (s.c_x - source_x);
-  const double ex = s.c_x - source_x, ey = s.c_y - source_y;
-  const double distance = std::sqrt(ex * ex + ey * ey);  // not std::hypot: its overflow care costs a third of the solve
-  // Negative height: dx, dy, base violate the triangle inequality. The
-  // crossing test also catches 0/0 on degenerate triangles.
-  const bool applies = (height_squared >= 0) & (crossing >= 0) & (crossing <= base);
-  return applies ? distance : INFINITY;
-}
 
 }  // namespace
 

@@ -8,18 +8,25 @@
 
 #include "common/user_error.hpp"
 #include "geodesics/dijkstra.hpp"
+#include "geodesics/fast_iterative.hpp"
 #include "geodesics/fast_marching.hpp"
 
 namespace meshparticles {
 
 std::string method_name(GeodesicMethod method) {
-  return method == GeodesicMethod::fast_marching ? "fmm" : "dijkstra";
+  switch (method) {
+    case GeodesicMethod::fast_marching: return "fmm";
+    case GeodesicMethod::dijkstra: return "dijkstra";
+    case GeodesicMethod::fast_iterative: return "fim";
+  }
+  return "fmm";
 }
 
 GeodesicMethod parse_method(const std::string& name) {
   if (name == "fmm") return GeodesicMethod::fast_marching;
   if (name == "dijkstra") return GeodesicMethod::dijkstra;
-  throw UserError("unknown geodesic method '" + name + "' (use fmm or dijkstra)");
+  if (name == "fim") return GeodesicMethod::fast_iterative;
+  throw UserError("unknown geodesic method '" + name + "' (use fmm, fim or dijkstra)");
 }
 
 std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh) {
@@ -156,7 +163,12 @@ void GeodesicSolver::lower_nearest_from(std::span<const VertexId> rim, std::span
 
 std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {
   if (method == GeodesicMethod::dijkstra) return std::make_unique<EdgeDijkstra>(mesh);
+  if (method == GeodesicMethod::fast_iterative) return std::make_unique<FastIterativeMethod>(mesh);
   return std::make_unique<FastMarching>(mesh);
+}
+
+GeodesicMethod host_march_method(GeodesicMethod method) {
+  return method == GeodesicMethod::fast_iterative ? GeodesicMethod::fast_marching : method;
 }
 
 }  // namespace meshparticles

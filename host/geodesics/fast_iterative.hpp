@@ -1,0 +1,48 @@
+#pragma once
+// The fast iterative method (Jeong & Whitaker 2008; on triangle meshes Fu,
+// Jeong, Pan, Kirby & Whitaker 2011): the geodesics the paper's own GPU
+// used. Every vertex whose distance dropped is active; each round, every
+// active vertex pushes the updates it takes part in (its edges, its
+// triangles with the other corner reached, its unfolded virtual triangles;
+// the same stencils and point-source update as fast marching) and the
+// vertices they lower become active for the next. Nothing waits for a
+// shortest-first order, so many vertices (and, on a device, many balls)
+// advance at once; it stops when no distance drops.
+//
+// The result is the greatest fixed point of the updates: where fast
+// marching's acceptance order is causal (acute meshes) the two agree, and
+// elsewhere they differ by what an update's order can change, a small
+// fraction of a percent (docs/GEODESICS.md). This host solver is the
+// oracle of the device's (device_balls.hpp), which runs the same rounds.
+#include "geodesics/geodesic_solver.hpp"
+#include "geodesics/triangle_stencils.hpp"
+
+namespace meshparticles {
+
+// How far beyond a stopping distance a solve must keep distances so that
+// every one within it is what an unlimited solve gives: an update of C from
+// X and Y reads d(Y) up to |XY| above d(C) (the crossing lies on XY), so the
+// longest base of any stencil, edges included.
+double fim_margin(const SurfaceMesh& mesh, const TriangleStencils& stencils);
+
+class FastIterativeMethod : public GeodesicSolver {
+ public:
+  explicit FastIterativeMethod(const SurfaceMesh& mesh);
+
+  const TriangleStencils& stencils() const { return stencils_; }
+  const std::vector<float>& edge_lengths() const { return edge_lengths_; }
+  double margin() const { return margin_; }
+
+ protected:
+  void march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
+             double max_distance, std::span<const float> bound,
+             std::span<const std::uint32_t> origins = {}) const override;
+
+ private:
+  const SurfaceMesh& mesh_;
+  std::vector<float> edge_lengths_;  // parallel to mesh.ring_neighbors()
+  TriangleStencils stencils_;
+  double margin_;
+};
+
+}  // namespace meshparticles

@@ -1,0 +1,116 @@
+// Geodesic balls by the fast iterative method on the device (the
+// fim_balls kernel) against the host's solver of the same method, and that
+// method against fast marching: the same vertices in every ball and the
+// same distances within float rounding, on the committed meshes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geodesics/device_balls.hpp"
+#include "geodesics/fast_iterative.hpp"
+#include "mesh/mesh_generator.hpp"
+#include "particle_test_support.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+SurfaceMesh committed(const std::string& name) {
+  std::vector<std::string> warnings;
+  return read_mesh(std::string(MESHES_DIR) + "/" + name, warnings);
+}
+
+// Every `stride`-th vertex.
+std::vector<VertexId> every(const SurfaceMesh& mesh, std::size_t stride) {
+  std::vector<VertexId> sources;
+  for (VertexId v = 0; v < mesh.vertex_count(); v += VertexId(stride)) sources.push_back(v);
+  return sources;
+}
+
+constexpr VertexId kPastTheEnd = std::numeric_limits<VertexId>::max();
+
+// The device's ball against the host's: a vertex may be in one and not
+// the other only where its distance is within rounding of the radius; the
+// shared vertices' distances agree to float rounding.
+struct BallAgreement {
+  std::size_t shared = 0, only_one = 0;
+  double sum_relative = 0, worst_relative = 0;
+};
+
+BallAgreement compare(const Ball& device, const Ball& host, double radius) {
+  constexpr double kRounding = 1e-4;  // float against double, over some hundred rounds
+  BallAgreement agreement;
+  std::size_t i = 0, j = 0;
+  while (i < device.vertices.size() || j < host.vertices.size()) {
+    const VertexId dv = i < device.vertices.size() ? device.vertices[i] : kPastTheEnd;
+    const VertexId hv = j < host.vertices.size() ? host.vertices[j] : kPastTheEnd;
+    if (dv == hv) {
+      const double d = device.distances[i++], h = host.distances[j++];
+      const double relative = std::abs(d - h) / std::max(h, 1e-3 * radius);
+      agreement.sum_relative += relative;
+      agreement.worst_relative = std::max(agreement.worst_relative, relative);
+      ++agreement.shared;
+      continue;
+    }
+    const double d = dv < hv ? device.distances[i++] : host.distances[j++];
+    EXPECT_GT(d, radius * (1 - kRounding)) << "a vertex well inside one ball only";
+    ++agreement.only_one;
+  }
+  return agreement;
+}
+
+class DeviceBalls : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(DeviceBalls, AreTheHostMethodsBalls) {
+  const SurfaceMesh mesh = committed(GetParam());
+  const double radius = cutoff_radius(mesh, 1024);
+  const FastIterativeMethod host(mesh);
+  DeviceBallSolver device(mesh, host, select_device(""));
+  const std::vector<VertexId> sources = every(mesh, std::max<std::size_t>(7, mesh.vertex_count() / 300));
+  const std::vector<Ball> balls = device.solve_balls(sources, radius);
+  ASSERT_EQ(balls.size(), sources.size());
+  SolverScratch scratch;
+  std::size_t shared = 0, only_one = 0;
+  double sum = 0, worst = 0;
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    ASSERT_TRUE(std::is_sorted(balls[k].vertices.begin(), balls[k].vertices.end()));
+    const BallAgreement agreement = compare(balls[k], host.solve_ball(sources[k], radius, scratch), radius);
+    shared += agreement.shared;
+    only_one += agreement.only_one;
+    sum += agreement.sum_relative;
+    worst = std::max(worst, agreement.worst_relative);
+  }
+  std::printf("%s: %zu balls of %.0f vertices on average, %zu on the host; %zu vertices in one ball only; "
+              "relative difference %.2e mean, %.2e largest\n",
+              GetParam().c_str(), sources.size(), double(shared) / double(sources.size()),
+              device.statistics().solved_on_host, only_one, sum / double(shared), worst);
+  EXPECT_LT(sum / double(shared), 1e-5);
+  EXPECT_LT(worst, 1e-2);
+  EXPECT_LE(only_one, shared / 1000 + 1);
+  EXPECT_EQ(device.statistics().solved_on_host, 0u) << "balls of 1,024 particles' cutoff fit the table";
+}
+
+INSTANTIATE_TEST_SUITE_P(CommittedMeshes, DeviceBalls,
+                         ::testing::Values("sphere.off", "torus.off", "atrium.off", "two_pieces.off", "patch.off"),
+                         [](const ::testing::TestParamInfo<std::string>& param) { return mesh_stem(param.param); });
+
+TEST(DeviceBalls, ABallPastTheTableIsSolvedOnTheHost) {
+  const SurfaceMesh mesh = generate_mesh_at("sphere", 10000);
+  const FastIterativeMethod host(mesh);
+  DeviceBallSolver device(mesh, host, select_device(""));
+  ASSERT_LT(device.slots(), mesh.vertex_count());
+  const std::vector<VertexId> sources{0, 17, 1234};
+  const double radius = 10;  // the whole sphere
+  const std::vector<Ball> balls = device.solve_balls(sources, radius);
+  EXPECT_EQ(device.statistics().solved_on_host, sources.size());
+  SolverScratch scratch;
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    const Ball expected = host.solve_ball(sources[k], radius, scratch);
+    EXPECT_EQ(balls[k].vertices, expected.vertices);
+    EXPECT_EQ(balls[k].distances, expected.distances);
+  }
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
