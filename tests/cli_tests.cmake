@@ -5,7 +5,7 @@ set(DATA ${CMAKE_CURRENT_SOURCE_DIR}/data)
 # the end-to-end scripts below are `slow`.
 function(expect_exit_of name code pattern)
   add_test(NAME cli.${name} COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.sh ${code} ${pattern} ${ARGN})
-  if(ARGN MATCHES "(^|;)(run|batch|sweep|bench|devices)(;|$)")
+  if(ARGN MATCHES "(^|;)(run|batch|sweep|bench|devices|--balls)(;|$)")
     set_tests_properties(cli.${name} PROPERTIES LABELS "fast;device")
   else()
     set_tests_properties(cli.${name} PROPERTIES LABELS fast)
@@ -51,6 +51,19 @@ expect_exit_of(no_opencl_runtime 3 "no OpenCL platform found: install an OpenCL 
 expect_exit(geodesics_bad_source 2 "--source 99 is not a vertex of the surface" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --source 99)
 expect_exit(geodesics_unwritable_out 2 "cannot write" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --source 0 --out /nonexistent-dir/d.txt)
 expect_exit(geodesics_unknown_solver 2 "--geodesic" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --geodesic heat)
+# Balls by the fast iterative method, on the device and on the host: what
+# `geodesics --balls` prints (stdout), and what --balls needs.
+foreach(where device host)
+  set(flag "")
+  if(where STREQUAL host)
+    set(flag --host)
+  endif()
+  add_test(NAME cli.geodesics_balls_fim_${where}
+           COMMAND bash -c "$<TARGET_FILE:meshparticles> geodesics ${PROJECT_SOURCE_DIR}/meshes/torus.off --balls 200 --ball-radius 0.5 --geodesic fim ${flag} -q | tee /dev/stderr | grep -Ezq 'count +200 balls of radius 0.5, [0-9]+ vertices on average.*against fmm 0.00[0-9]+% mean'")
+  set_tests_properties(cli.geodesics_balls_fim_${where} PROPERTIES LABELS "fast;device")
+endforeach()
+expect_exit(geodesics_balls_need_radius 2 "--balls requires --ball-radius" geodesics ${PROJECT_SOURCE_DIR}/meshes/torus.off --balls 20)
+expect_exit(run_local_fim 0 "converged" run ${PROJECT_SOURCE_DIR}/meshes/torus.off -n 100 --method paper --distances local --geodesic fim --no-cache --out ${CMAKE_CURRENT_BINARY_DIR}/run_local_fim)
 expect_exit(geodesics_table 0 "geodesics \\(fmm, [0-9]+ threads?\\): 4 done" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --no-cache)
 expect_exit(geodesics_dropped_vertex 2 "--source 0 is not a vertex of the surface" geodesics ${DATA}/unreferenced_vertices.off --source 0 -q)
 # meshparticles run: bad arguments exit 2 with one clear line.

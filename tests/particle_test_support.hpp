@@ -37,7 +37,7 @@ struct MeshWithDistances {
 // A quiet local store with balls of `radius`, on `threads` threads (0: all cores).
 inline LocalDistances local_store(const SurfaceMesh& mesh, double radius,
                                   std::uint64_t budget = std::uint64_t{1} << 30, unsigned threads = 0) {
-  return LocalDistances(mesh, {radius, GeodesicMethod::fast_marching, budget, threads, true});
+  return LocalDistances(mesh, {radius, GeodesicMethod::fast_marching, budget, threads, true, std::nullopt});
 }
 
 // The ball radius a run of `particles` takes at `cutoff` hexagonal spacings.

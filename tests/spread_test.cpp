@@ -183,7 +183,7 @@ struct Evenness {
 
 Evenness measure(const SurfaceMesh& mesh, const std::vector<VertexId>& positions) {
   const double radius = 3 * hexagonal_spacing(mesh.area(), positions.size());
-  const LocalDistances balls(mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, 0, true});
+  const LocalDistances balls(mesh, {radius, GeodesicMethod::fast_marching, std::uint64_t{1} << 30, 0, true, std::nullopt});
   const EnergyParams energy{Potential::exp, default_sigma(Potential::exp, mesh.area(), positions.size())};
   const auto quality = measure_quality(mesh, balls, positions, energy,
                                        distance_to_nearest_particle(mesh, GeodesicMethod::fast_marching, positions),

@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -9,7 +11,9 @@
 #include "pipeline/mesh_input.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
+#include "geodesics/device_balls.hpp"
 #include "geodesics/distance_cache.hpp"
+#include "geodesics/local_distances.hpp"
 
 namespace meshparticles {
 
@@ -22,6 +26,10 @@ struct GeodesicsOptions {
   std::string out;
   std::string method = "fmm";
   DistanceTableOptions table;
+  std::optional<std::size_t> balls;  // solve this many balls instead of the table
+  std::optional<double> ball_radius;
+  bool on_host = false;
+  std::string device;
 };
 
 // One value per line, one line per vertex of the input file (input ids);
@@ -36,6 +44,80 @@ void write_single_source(const SurfaceMesh& mesh, const std::vector<double>& dis
   }
 }
 
+// Every vertex id from 0 in steps of V / count: `count` sources spread over the mesh.
+std::vector<VertexId> spread_sources(const SurfaceMesh& mesh, std::size_t count) {
+  std::vector<VertexId> sources(count);
+  for (std::size_t k = 0; k < count; ++k) sources[k] = VertexId(k * mesh.vertex_count() / count);
+  return sources;
+}
+
+// The relative error of `balls` against fast marching's balls of the same
+// sources, over the vertices both hold farther than three mean edges from
+// the source (nearer ones are dominated by discretisation), on a sample.
+void print_error_against_fast_marching(const SurfaceMesh& mesh, std::span<const VertexId> sources,
+                                       const std::vector<Ball>& balls, double radius) {
+  constexpr std::size_t kSample = 64;
+  const auto fast_marching = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
+  SolverScratch scratch;
+  double sum = 0, worst = 0;
+  std::size_t count = 0;
+  const std::size_t step = std::max<std::size_t>(1, sources.size() / kSample);
+  for (std::size_t k = 0; k < sources.size(); k += step) {
+    const Ball reference = fast_marching->solve_ball(sources[k], radius, scratch);
+    for (std::size_t i = 0; i < reference.vertices.size(); ++i) {
+      const std::optional<float> d = distance_in_ball(balls[k], reference.vertices[i]);
+      const double truth = reference.distances[i];
+      if (!d || truth <= 3 * mesh.mean_edge_length()) continue;
+      const double error = std::abs(double(*d) - truth) / truth;
+      sum += error;
+      worst = std::max(worst, error);
+      ++count;
+    }
+  }
+  std::printf("against fmm %.4f%% mean, %.4f%% largest relative difference (%zu distances of %zu balls)\n",
+              count ? 100 * sum / double(count) : 0.0, 100 * worst, count, (sources.size() + step - 1) / step);
+}
+
+// --balls: `count` balls of one radius, timed, on the device (fim) or on all cores.
+void run_balls(const SurfaceMesh& mesh, const GeodesicsOptions& options, GeodesicMethod method) {
+  const double radius = *options.ball_radius;
+  const std::vector<VertexId> sources = spread_sources(mesh, *options.balls);
+  std::vector<Ball> balls(sources.size());
+  const auto started = std::chrono::steady_clock::now();
+  if (method == GeodesicMethod::fast_iterative && !options.on_host) {
+    const DeviceDescription device = select_device(options.device);
+    const FastIterativeMethod host(mesh);
+    DeviceBallSolver solver(mesh, host, device);
+    const double set_up = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    balls = solver.solve_balls(sources, radius);
+    const auto& statistics = solver.statistics();
+    std::printf("device     %s (table of %zu vertices, work-group %zu)\n", device.name.c_str(), solver.slots(),
+                solver.work_group_size());
+    std::printf("set-up     %.3f s (stencils, program, uploads)\n", set_up);
+    std::printf("balls      %.3f s, kernels %.3f s, %zu launches, %zu solved on the host\n", statistics.seconds,
+                statistics.kernel_seconds, statistics.launches, statistics.solved_on_host);
+  } else {
+    LocalDistances::Settings settings;
+    settings.radius = radius;
+    settings.method = method;
+    settings.cache_bytes = std::numeric_limits<std::uint64_t>::max();
+    settings.threads = options.table.threads;
+    settings.quiet = options.table.quiet;
+    const LocalDistances store(mesh, settings);
+    const auto solving = std::chrono::steady_clock::now();
+    store.prefetch(sources);
+    std::printf("host       %u threads\n", store.threads());
+    std::printf("balls      %.3f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - solving).count());
+    for (std::size_t k = 0; k < sources.size(); ++k) balls[k] = *store.ball(sources[k]);
+  }
+  std::uint64_t entries = 0;
+  for (const Ball& ball : balls) entries += ball.vertices.size();
+  std::printf("solver     %s\n", options.method.c_str());
+  std::printf("count      %zu balls of radius %g, %.0f vertices on average\n", balls.size(), radius,
+              double(entries) / double(std::max<std::size_t>(balls.size(), 1)));
+  if (method != GeodesicMethod::fast_marching) print_error_against_fast_marching(mesh, sources, balls, radius);
+}
+
 void run_geodesics(const GeodesicsOptions& options) {
   const SurfaceMesh mesh = load_mesh(options.mesh, options.table.quiet, options.read);
   const GeodesicMethod method = parse_method(options.method);
@@ -44,6 +126,10 @@ void run_geodesics(const GeodesicsOptions& options) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   };
 
+  if (options.balls) {
+    run_balls(mesh, options, method);
+    return;
+  }
   if (options.source) {
     const VertexId source = surface_vertex_for_option(mesh, *options.source, "--source");
     std::vector<double> distances(mesh.vertex_count());
@@ -78,6 +164,15 @@ void add_geodesics_command(CLI::App& app) {
                                          "Write this vertex's distances (input vertex id)");
   geodesics->add_option("--out", options->out, "File for --source's distances (default: stdout)")->needs(source);
   add_geodesic_option(*geodesics, options->method);
+  auto* balls = add_whole_number_option(*geodesics, "--balls", options->balls, kVertexIdRange,
+                                        "Solve this many balls (sources spread over the mesh) and time them, "
+                                        "with fim on the device");
+  add_positive_number_option(*geodesics, "--ball-radius", options->ball_radius, "The balls' radius (mesh units)")
+      ->needs(balls);
+  balls->needs("--ball-radius");
+  geodesics->add_flag("--host", options->on_host, "--balls with fim: on the host's cores, not the device")
+      ->needs(balls);
+  add_device_option(*geodesics, options->device);
   add_strict_option(*geodesics, options->read);
   add_distance_table_options(*geodesics, options->table);
   geodesics->callback([options] { run_geodesics(*options); });

@@ -16,6 +16,7 @@ RunRequest RunOptions::resolved_request() const {
   if (!weights.empty()) resolved.backend.weights = parse_weight_format(weights);
   resolved.backend.tuning_file = tuning_file_or_default(tuning_file);
   resolved.distances = store.request(table.request(parse_method(geodesic)));
+  resolved.distances.geodesics.device = request.backend.device;
   resolved.quiet = table.quiet;
   return resolved;
 }

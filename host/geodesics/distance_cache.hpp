@@ -55,6 +55,7 @@ struct GeodesicsRequest {
   std::optional<std::filesystem::path> cache_directory;  // nothing: no cache
   unsigned threads = 0;
   bool quiet = false;
+  std::string device;  // --device: where fim solves local balls
 };
 
 // Whether the cache holds what looks like this mesh's table (header and size

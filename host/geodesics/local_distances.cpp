@@ -79,6 +79,10 @@ LocalDistances::LocalDistances(const SurfaceMesh& mesh, const Settings& settings
     : vertex_count_(mesh.vertex_count()),
       settings_(settings),
       solver_(make_geodesic_solver(mesh, settings.method)),
+      device_balls_(settings.device && settings.method == GeodesicMethod::fast_iterative
+                        ? std::make_unique<DeviceBallSolver>(
+                              mesh, static_cast<const FastIterativeMethod&>(*solver_), *settings.device)
+                        : nullptr),
       balls_(mesh.vertex_count()),
       last_used_(mesh.vertex_count(), 0),
       queued_(mesh.vertex_count(), Queued::no) {}
@@ -242,8 +246,16 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
   if (missing.empty()) return;
   const auto started = std::chrono::steady_clock::now();
-  const unsigned threads = missing.size() < kParallelBatch ? 1 : this->threads();
   ProgressLine progress("distance balls", missing.size(), settings_.quiet || missing.size() < kProgressBatch);
+  if (device_balls_ && missing.size() >= kParallelBatch) {
+    solve_on_device(missing, progress);
+    progress.finish();
+    const std::lock_guard lock(mutex_);
+    statistics_.seconds += seconds_since(started);
+    evict_to_budget();
+    return;
+  }
+  const unsigned threads = missing.size() < kParallelBatch ? 1 : this->threads();
   std::atomic<std::size_t> next{0}, done{0};
   std::exception_ptr failure;
   const auto work = [&] {
@@ -283,6 +295,23 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   const std::lock_guard lock(mutex_);
   statistics_.seconds += seconds_since(started);
   evict_to_budget();
+}
+
+void LocalDistances::solve_on_device(std::span<const VertexId> missing, ProgressLine& progress) const {
+  constexpr std::size_t kPiece = std::size_t{1} << 16;  // balls between progress updates
+  const std::lock_guard device_lock(device_mutex_);
+  for (std::size_t first = 0; first < missing.size(); first += kPiece) {
+    const auto piece = missing.subspan(first, std::min(kPiece, missing.size() - first));
+    const std::size_t on_host_before = device_balls_->statistics().solved_on_host;
+    std::vector<Ball> solved = device_balls_->solve_balls(piece, settings_.radius);
+    const std::size_t on_host = device_balls_->statistics().solved_on_host - on_host_before;
+    const std::lock_guard lock(mutex_);
+    for (std::size_t k = 0; k < piece.size(); ++k) {
+      insert(piece[k], std::make_shared<const Ball>(std::move(solved[k])));
+    }
+    statistics_.balls_on_device += piece.size() - on_host;
+    progress.update(first + piece.size());
+  }
 }
 
 void LocalDistances::insert(VertexId u, std::shared_ptr<const Ball> ball) const {

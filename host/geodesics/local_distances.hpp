@@ -20,6 +20,8 @@
 #include <thread>
 #include <vector>
 
+#include "common/progress.hpp"
+#include "geodesics/device_balls.hpp"
 #include "geodesics/distance_store.hpp"
 #include "geodesics/geodesic_solver.hpp"
 
@@ -33,6 +35,10 @@ class LocalDistances final : public DistanceStore {
     std::uint64_t cache_bytes = 0;  // balls kept at most; the least recently used go first
     unsigned threads = 0;           // 0: all cores
     bool quiet = false;             // no progress line
+    // With the fast iterative method: the device that solves the balls of
+    // prefetch() (device_balls.hpp), many at once; single balls and those
+    // too big for it are solved on the host by the same method.
+    std::optional<DeviceDescription> device;
   };
 
   struct Statistics {
@@ -42,6 +48,7 @@ class LocalDistances final : public DistanceStore {
     double background_seconds = 0;       // spent by the helpers of request(), beside the caller
     std::size_t balls_evicted = 0;
     std::uint64_t peak_bytes = 0;  // of the cache
+    std::size_t balls_on_device = 0;  // of balls_computed
   };
 
   LocalDistances(const SurfaceMesh& mesh, const Settings& settings);
@@ -96,11 +103,16 @@ class LocalDistances final : public DistanceStore {
   std::shared_ptr<const Ball> solve_taken(VertexId v, std::unique_lock<std::mutex>& lock, SolverScratch& scratch,
                                           std::mutex* scratch_guard) const;
 
+  // prefetch()'s balls on the device, inserted as they come, with `done` counting them.
+  void solve_on_device(std::span<const VertexId> missing, ProgressLine& progress) const;
+
   enum class Queued : std::uint8_t { no, waiting, solving };
 
   std::size_t vertex_count_;
   Settings settings_;
   std::unique_ptr<GeodesicSolver> solver_;
+  mutable std::mutex device_mutex_;
+  std::unique_ptr<DeviceBallSolver> device_balls_;  // under device_mutex_
 
   mutable std::mutex mutex_;
   mutable std::vector<std::shared_ptr<const Ball>> balls_;  // per vertex; null when not held

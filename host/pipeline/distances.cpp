@@ -2,11 +2,13 @@
 
 #include <chrono>
 #include <cmath>
+#include <iostream>
 #include <numbers>
 
 #include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/memory_guard.hpp"
+#include "opencl/device_discovery.hpp"
 #include "particles/particle_params.hpp"
 
 namespace meshparticles {
@@ -71,14 +73,34 @@ DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& re
   return plan;
 }
 
+namespace {
+
+// Where --geodesic fim solves balls: the run's device, or none (the host's
+// cores, by the same method) when no OpenCL runtime is usable and none was
+// asked for.
+std::optional<DeviceDescription> ball_device(const GeodesicsRequest& geodesics) {
+  try {
+    return select_device(geodesics.device);
+  } catch (const UserError& problem) {
+    if (!device_request(geodesics.device).text.empty()) throw;
+    if (!geodesics.quiet) {
+      std::cerr << "meshparticles: warning: " << problem.what() << "; fim solves the balls on the host\n";
+    }
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
 ObtainedDistances obtain_distances(const SurfaceMesh& mesh, const GeodesicsRequest& geodesics,
                                    const DistancesPlan& plan) {
   if (plan.kind == StoreKind::dense) return obtain_distances(mesh, geodesics);
   ObtainedDistances obtained;
   obtained.kind = StoreKind::local;
-  obtained.store = std::make_unique<LocalDistances>(
-      mesh, LocalDistances::Settings{plan.radius, geodesics.method, plan.ball_budget_bytes, geodesics.threads,
-                                     geodesics.quiet});
+  LocalDistances::Settings settings{plan.radius, geodesics.method, plan.ball_budget_bytes, geodesics.threads,
+                                   geodesics.quiet, std::nullopt};
+  if (geodesics.method == GeodesicMethod::fast_iterative) settings.device = ball_device(geodesics);
+  obtained.store = std::make_unique<LocalDistances>(mesh, settings);
   return obtained;
 }
 

@@ -29,7 +29,7 @@ PointSetsMeasurement measure_point_sets(const SurfaceMesh& input, const PointSet
   for (const auto& set : request.points) fewest = std::min(fewest, set.size());
   const ObtainedDistances obtained = obtain_distances(
       mesh, request.geodesics, plan_distances(mesh, request.distances, std::min(fewest, mesh.vertex_count()), false));
-  const GeodesicMethod method = request.geodesics.method;
+  const GeodesicMethod method = host_march_method(request.geodesics.method);
   for (std::size_t k = 0; k < request.points.size(); ++k) {
     out.sets.push_back(measure_particle_file(mesh, *obtained.store, method, request.names[k], std::move(placed[k]),
                                              request.potential, request.sigma, request.geodesics.quiet));

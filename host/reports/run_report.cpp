@@ -69,6 +69,7 @@ nlohmann::json distances_json(const RunResult& result) {
   distances["cutoff"] = result.plan.request.distances.cutoff;
   distances["radius"] = result.plan.distances.radius;
   distances["balls_computed"] = balls.balls_computed;
+  distances["balls_on_device"] = balls.balls_on_device;  // --geodesic fim on a device
   distances["mean_ball_size"] =
       balls.balls_computed ? double(balls.entries_computed) / double(balls.balls_computed) : 0.0;
   distances["ball_seconds"] = balls.seconds;
