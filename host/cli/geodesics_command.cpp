@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "cli/commands.hpp"

@@ -96,8 +96,8 @@ struct DeviceBallSolver::Launch {
 };
 
 void DeviceBallSolver::enqueue(std::span<const VertexId> sources, Launch& launch) {
-  const cl_uint none = 0;
-  queue_.enqueueWriteBuffer(entries_used_, CL_FALSE, 0, sizeof none, &none);
+  static const cl_uint kNone = 0;  // static: the write below may happen after this returns
+  queue_.enqueueWriteBuffer(entries_used_, CL_FALSE, 0, sizeof kNone, &kNone);
   queue_.enqueueWriteBuffer(sources_, CL_FALSE, 0, launch.count * sizeof(cl_uint), sources.data() + launch.first);
   kernel_.setArg(1, cl_uint(launch.count));
   queue_.enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(launch.count * work_group_size_),
