@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/user_error.hpp"
 #include "geodesics/device_balls.hpp"
 #include "geodesics/fast_iterative.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -109,6 +110,21 @@ TEST(DeviceBalls, ABallPastTheTableIsSolvedOnTheHost) {
     const Ball expected = host.solve_ball(sources[k], radius, scratch);
     EXPECT_EQ(balls[k].vertices, expected.vertices);
     EXPECT_EQ(balls[k].distances, expected.distances);
+  }
+}
+
+// A device without the memory for the mesh's buffers is refused before
+// anything is built or uploaded, saying what it needs and what it has.
+TEST(DeviceBalls, ADeviceWithoutTheMemoryIsRefusedFirst) {
+  const SurfaceMesh mesh = committed("sphere.off");
+  const FastIterativeMethod host(mesh);
+  DeviceDescription small = select_device("");
+  small.global_memory_bytes = std::uint64_t{1} << 20;
+  try {
+    DeviceBallSolver device(mesh, host, small);
+    FAIL() << "a 1 MiB device was accepted";
+  } catch (const UserError& refusal) {
+    EXPECT_NE(std::string(refusal.what()).find("it has 1 MiB"), std::string::npos) << refusal.what();
   }
 }
 

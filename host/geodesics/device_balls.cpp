@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "common/user_error.hpp"
 #include "opencl/program_cache.hpp"
 
 namespace meshparticles {
@@ -45,6 +46,29 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+void DeviceBallSolver::check_memory(const SurfaceMesh& mesh) const {
+  const TriangleStencils& stencils = host_.stencils();
+  const std::uint64_t vertices = mesh.vertex_count() + 1, ring = mesh.ring_neighbors().size();
+  const std::uint64_t output = std::uint64_t(balls_per_launch_) * slots() * sizeof(cl_uint);
+  const std::uint64_t buffers[] = {
+      vertices * sizeof(cl_uint) * 3,                                      // the three offset arrays
+      ring * (sizeof(cl_uint) + sizeof(cl_float)),                         // one-rings, edge lengths
+      stencils.triangles.size() * sizeof(TriangleAtVertex),                // the largest, about 200 B a vertex
+      stencils.virtual_updates.size() * sizeof(VirtualUpdate),
+      2 * output,                                                          // ball vertices and distances
+      std::uint64_t(balls_per_launch_) * 3 * sizeof(cl_uint)};            // sources, sizes, starts
+  std::uint64_t total = 0;
+  for (const std::uint64_t bytes : buffers) total += bytes;
+  const std::uint64_t largest = stencils.triangles.size() * sizeof(TriangleAtVertex);
+  const auto mib = [](std::uint64_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; };
+  if (total > device_.global_memory_bytes || largest > device_.max_allocation_bytes) {
+    throw UserError("the fast iterative method's balls on " + device_.name + " need " + mib(total) +
+                    " of device memory, " + mib(largest) + " in one buffer; it has " +
+                    mib(device_.global_memory_bytes) + ", at most " + mib(device_.max_allocation_bytes) +
+                    " in one buffer: use --geodesic fmm");
+  }
+}
+
 DeviceBallSolver::DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeMethod& host,
                                    const DeviceDescription& device)
     : host_(host), device_(device), slot_bits_(slot_bits_for(device)) {
@@ -52,6 +76,7 @@ DeviceBallSolver::DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeM
   const std::uint64_t per_ball = (std::uint64_t{1} << slot_bits_) * (sizeof(cl_uint) + sizeof(cl_float));
   const std::uint64_t allowed = std::min<std::uint64_t>(kLaunchOutputBytes, device.max_allocation_bytes / 2);
   balls_per_launch_ = std::size_t(std::max<std::uint64_t>(1, allowed / per_ball));
+  check_memory(mesh);
   context_ = device_context(device.device);
   queue_ = cl::CommandQueue(context_, device.device, CL_QUEUE_PROFILING_ENABLE);
   const cl::Program program = cached_program(

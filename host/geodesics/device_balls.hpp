@@ -26,6 +26,7 @@ class DeviceBallSolver {
 
   // `host` solves the balls the device cannot hold; it is read, not kept
   // beyond this solver's life, and lends its stencils to the device.
+  // Throws UserError when the mesh's buffers would not fit the device.
   DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeMethod& host, const DeviceDescription& device);
 
   // The ball of radius `radius` around each of `sources`, in their order.
@@ -38,6 +39,8 @@ class DeviceBallSolver {
 
  private:
   struct Launch;
+  // Throws UserError when the buffers would not fit the device, before any is made.
+  void check_memory(const SurfaceMesh& mesh) const;
   // Queues the kernel for launch.count sources from launch.first.
   void enqueue(std::span<const VertexId> sources, Launch& launch);
   // Waits for the launch and reads its balls.
