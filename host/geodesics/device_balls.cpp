@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "common/elapsed.hpp"
 #include "common/user_error.hpp"
 #include "opencl/program_cache.hpp"
 
@@ -30,18 +31,9 @@ unsigned slot_bits_for(const DeviceDescription& device) {
 template <typename T>
 cl::Buffer read_only(const cl::Context& context, const std::vector<T>& values) {
   // A buffer may not be empty: a mesh without virtual updates gets one unread entry.
-  const std::size_t bytes = std::max<std::size_t>(values.size(), 1) * sizeof(T);
-  std::vector<T> padded;
-  const T* data = values.data();
-  if (values.empty()) {
-    padded.resize(1);
-    data = padded.data();
-  }
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes, const_cast<T*>(data));
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (values.empty()) return cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(T));
+  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, values.size() * sizeof(T),
+                    const_cast<T*>(values.data()));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <limits>
 #include <thread>
 
+#include "common/elapsed.hpp"
 #include "common/progress.hpp"
 #include "common/worker_threads.hpp"
 
@@ -21,10 +22,6 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr std::size_t kParallelBatch = 64;
 // Batches this large show a progress line.
 constexpr std::size_t kProgressBatch = 2000;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 
 #include "backends/backend_table.hpp"
 #include "backends/local_device_field_backend.hpp"
+#include "common/elapsed.hpp"
 #include "common/memory_limits.hpp"
 #include "common/user_error.hpp"
 #include "mesh/point_insertion.hpp"
@@ -35,10 +36,6 @@ SelectedDevice selected_device_if_any(const std::string& option) {
     if (error.exit_code() == kNoRuntimeExitCode && device_request(option).text.empty()) return {{}, error.what()};
     throw;
   }
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // The first option given that only the paper's method takes; none if none.
