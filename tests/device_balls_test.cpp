@@ -11,6 +11,7 @@
 #include "common/user_error.hpp"
 #include "geodesics/device_balls.hpp"
 #include "geodesics/fast_iterative.hpp"
+#include "geodesics/local_distances.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "particle_test_support.hpp"
 
@@ -111,6 +112,35 @@ TEST(DeviceBalls, ABallPastTheTableIsSolvedOnTheHost) {
     EXPECT_EQ(balls[k].vertices, expected.vertices);
     EXPECT_EQ(balls[k].distances, expected.distances);
   }
+}
+
+// The local store with a device solves there every ball it is asked for:
+// many at once (prefetch), a few, one alone (ball), and those its helpers
+// take from request()'s queue; each is the host method's ball.
+TEST(DeviceBalls, TheLocalStoreSolvesEveryBallOnTheDevice) {
+  const SurfaceMesh mesh = committed("atrium.off");
+  const double radius = cutoff_radius(mesh, 1024);
+  LocalDistances::Settings settings{radius, GeodesicMethod::fast_iterative, std::uint64_t{1} << 30, 2, true,
+                                    select_device("")};
+  const LocalDistances store(mesh, settings);
+  const std::vector<VertexId> many = every(mesh, 20), few{3, 5, 8}, queued{101, 202, 303, 404, 505, 606};
+  store.prefetch(many);
+  store.prefetch(few);
+  store.request(queued);
+  std::vector<VertexId> asked = many;
+  asked.insert(asked.end(), few.begin(), few.end());
+  asked.insert(asked.end(), queued.begin(), queued.end());
+  asked.push_back(1);  // alone
+  const FastIterativeMethod host(mesh);
+  SolverScratch scratch;
+  for (const VertexId v : asked) {
+    const BallAgreement agreement = compare(*store.ball(v), host.solve_ball(v, radius, scratch), radius);
+    EXPECT_LT(agreement.sum_relative / double(agreement.shared), 1e-5) << "vertex " << v;
+    EXPECT_LE(agreement.only_one, agreement.shared / 100) << "vertex " << v;
+  }
+  const LocalDistances::Statistics statistics = store.statistics();
+  EXPECT_GE(statistics.balls_computed, many.size() + few.size() + queued.size() + 1);
+  EXPECT_EQ(statistics.balls_on_device, statistics.balls_computed);
 }
 
 // A device without the memory for the mesh's buffers is refused before

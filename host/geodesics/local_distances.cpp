@@ -22,6 +22,9 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr std::size_t kParallelBatch = 64;
 // Batches this large show a progress line.
 constexpr std::size_t kProgressBatch = 2000;
+// The most queued balls a helper takes to the device at once: enough to
+// fill it, few enough that a caller waiting for one of them is not kept long.
+constexpr std::size_t kDeviceBatch = 256;
 
 }  // namespace
 
@@ -140,7 +143,8 @@ std::shared_ptr<const Ball> LocalDistances::ball(VertexId u) const {
   // A helper is solving u: rather than wait idle, solve what is queued after it.
   while (queued_[u] == Queued::solving) {
     if (const auto other = take_waiting()) {
-      solve_taken(*other, lock, scratch_, &scratch_mutex_);
+      const VertexId taken[] = {*other};
+      solve_taken(taken, lock, scratch_, &scratch_mutex_);
     } else {
       ball_ready_.wait(lock);
     }
@@ -148,7 +152,8 @@ std::shared_ptr<const Ball> LocalDistances::ball(VertexId u) const {
   std::shared_ptr<const Ball> found = balls_[u];
   if (!found) {
     queued_[u] = Queued::solving;  // a waiting u is ours now: the helpers pass it by
-    found = solve_taken(u, lock, scratch_, &scratch_mutex_);
+    const VertexId taken[] = {u};
+    found = solve_taken(taken, lock, scratch_, &scratch_mutex_).front();
   }
   statistics_.seconds += seconds_since(started);
   return found;
@@ -169,26 +174,46 @@ std::optional<VertexId> LocalDistances::take_waiting() const {
   return std::nullopt;
 }
 
-std::shared_ptr<const Ball> LocalDistances::solve_taken(VertexId v, std::unique_lock<std::mutex>& lock,
-                                                        SolverScratch& scratch, std::mutex* scratch_guard) const {
+std::vector<std::shared_ptr<const Ball>> LocalDistances::solve_taken(std::span<const VertexId> taken,
+                                                                     std::unique_lock<std::mutex>& lock,
+                                                                     SolverScratch& scratch,
+                                                                     std::mutex* scratch_guard) const {
   lock.unlock();
-  std::shared_ptr<const Ball> computed;
+  Solved solved;
   try {
     std::unique_lock<std::mutex> guard;  // never held together with mutex_
     if (scratch_guard) guard = std::unique_lock(*scratch_guard);
-    computed = std::make_shared<const Ball>(solver_->solve_ball(v, settings_.radius, scratch));
-  } catch (...) {  // out of memory: nobody may wait for v forever
+    solved = solve_now(taken, scratch);
+  } catch (...) {  // out of memory: nobody may wait for them forever
     lock.lock();
-    queued_[v] = Queued::no;
+    for (const VertexId v : taken) queued_[v] = Queued::no;
     ball_ready_.notify_all();
     throw;
   }
   lock.lock();
-  queued_[v] = Queued::no;
-  insert(v, computed);
+  std::vector<std::shared_ptr<const Ball>> computed;
+  for (std::size_t k = 0; k < taken.size(); ++k) {
+    queued_[taken[k]] = Queued::no;
+    computed.push_back(std::make_shared<const Ball>(std::move(solved.balls[k])));
+    insert(taken[k], computed.back());
+  }
+  statistics_.balls_on_device += solved.on_device;
   evict_to_budget();
   ball_ready_.notify_all();
   return computed;
+}
+
+LocalDistances::Solved LocalDistances::solve_now(std::span<const VertexId> vertices, SolverScratch& scratch) const {
+  Solved solved;
+  if (device_balls_) {
+    const std::lock_guard device_lock(device_mutex_);
+    const std::size_t on_host_before = device_balls_->statistics().solved_on_host;
+    solved.balls = device_balls_->solve_balls(vertices, settings_.radius);
+    solved.on_device = vertices.size() - (device_balls_->statistics().solved_on_host - on_host_before);
+    return solved;
+  }
+  for (const VertexId v : vertices) solved.balls.push_back(solver_->solve_ball(v, settings_.radius, scratch));
+  return solved;
 }
 
 unsigned LocalDistances::threads() const {
@@ -205,7 +230,9 @@ void LocalDistances::request(std::span<const VertexId> vertices) const {
       waiting_.push_back(v);
     }
     try {
-      while (helpers_.size() + 1 < threads()) helpers_.emplace_back([this] { help(); });
+      // With a device one helper keeps it busy, a batch at a time; more would queue for it.
+      const std::size_t helpers = device_balls_ ? 1 : threads() - 1;
+      while (helpers_.size() < helpers) helpers_.emplace_back([this] { help(); });
     } catch (const std::system_error&) {
       // No room for another thread (ulimit -v): ball() solves what no helper takes.
     }
@@ -219,11 +246,17 @@ void LocalDistances::help() const {
   for (;;) {
     work_ready_.wait(lock, [&] { return stopping_ || !waiting_.empty(); });
     if (stopping_) return;
-    const auto v = take_waiting();
-    if (!v) continue;
+    // The device solves many balls in the time of one: a helper takes a batch to it.
+    std::vector<VertexId> taken;
+    while (taken.size() < (device_balls_ ? kDeviceBatch : 1)) {
+      const auto v = take_waiting();
+      if (!v) break;
+      taken.push_back(*v);
+    }
+    if (taken.empty()) continue;
     const auto started = std::chrono::steady_clock::now();
     try {
-      solve_taken(*v, lock, scratch, nullptr);
+      solve_taken(taken, lock, scratch, nullptr);
     } catch (...) {  // out of memory: left to ball(), which meets it again on the caller's thread
     }
     statistics_.background_seconds += seconds_since(started);
@@ -244,7 +277,7 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   if (missing.empty()) return;
   const auto started = std::chrono::steady_clock::now();
   ProgressLine progress("distance balls", missing.size(), settings_.quiet || missing.size() < kProgressBatch);
-  if (device_balls_ && missing.size() >= kParallelBatch) {
+  if (device_balls_) {
     solve_on_device(missing, progress);
     progress.finish();
     const std::lock_guard lock(mutex_);
@@ -296,17 +329,15 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
 
 void LocalDistances::solve_on_device(std::span<const VertexId> missing, ProgressLine& progress) const {
   constexpr std::size_t kPiece = std::size_t{1} << 16;  // balls between progress updates
-  const std::lock_guard device_lock(device_mutex_);
+  SolverScratch unused;  // the device's solver keeps its own
   for (std::size_t first = 0; first < missing.size(); first += kPiece) {
     const auto piece = missing.subspan(first, std::min(kPiece, missing.size() - first));
-    const std::size_t on_host_before = device_balls_->statistics().solved_on_host;
-    std::vector<Ball> solved = device_balls_->solve_balls(piece, settings_.radius);
-    const std::size_t on_host = device_balls_->statistics().solved_on_host - on_host_before;
+    Solved solved = solve_now(piece, unused);
     const std::lock_guard lock(mutex_);
     for (std::size_t k = 0; k < piece.size(); ++k) {
-      insert(piece[k], std::make_shared<const Ball>(std::move(solved[k])));
+      insert(piece[k], std::make_shared<const Ball>(std::move(solved.balls[k])));
     }
-    statistics_.balls_on_device += piece.size() - on_host;
+    statistics_.balls_on_device += solved.on_device;
     progress.update(first + piece.size());
   }
 }

@@ -36,8 +36,9 @@ class LocalDistances final : public DistanceStore {
     unsigned threads = 0;           // 0: all cores
     bool quiet = false;             // no progress line
     // With the fast iterative method: the device that solves the balls of
-    // prefetch() (device_balls.hpp), many at once; single balls and those
-    // too big for it are solved on the host by the same method.
+    // prefetch() and of request()'s helpers (device_balls.hpp), many at
+    // once, and single balls too; those too big for it are solved on the
+    // host by the same method.
     std::optional<DeviceDescription> device;
   };
 
@@ -71,7 +72,8 @@ class LocalDistances final : public DistanceStore {
   void prefetch(std::span<const VertexId> vertices) const;
 
   // Queues the balls of `vertices` the cache does not hold for helper
-  // threads (one fewer than the store's threads) and returns at once: the
+  // threads (one fewer than the store's threads; one, taking batches to
+  // the device, when the store has one) and returns at once: the
   // caller goes on with other work while they are solved. ball() of a
   // queued vertex solves it at once if no helper has begun it; if one has,
   // it solves the balls queued after it until that one is done.
@@ -97,11 +99,19 @@ class LocalDistances final : public DistanceStore {
   // With mutex_ held: the next queued vertex nobody has begun, now marked
   // as being solved by the caller.
   std::optional<VertexId> take_waiting() const;
-  // Solves v (marked as being solved) with `lock` on mutex_ released
-  // meanwhile, under `scratch_guard` if given, and keeps it; `lock` is held
-  // again on return, also when the solve throws.
-  std::shared_ptr<const Ball> solve_taken(VertexId v, std::unique_lock<std::mutex>& lock, SolverScratch& scratch,
-                                          std::mutex* scratch_guard) const;
+  // Solves `taken` (marked as being solved) with `lock` on mutex_ released
+  // meanwhile, under `scratch_guard` if given, and keeps them; `lock` is
+  // held again on return, also when the solve throws.
+  std::vector<std::shared_ptr<const Ball>> solve_taken(std::span<const VertexId> taken,
+                                                       std::unique_lock<std::mutex>& lock, SolverScratch& scratch,
+                                                       std::mutex* scratch_guard) const;
+  struct Solved {
+    std::vector<Ball> balls;
+    std::size_t on_device = 0;
+  };
+  // The balls of `vertices`, in their order, without mutex_: on the device
+  // when the store has one (all in one call), else one by one on this thread.
+  Solved solve_now(std::span<const VertexId> vertices, SolverScratch& scratch) const;
 
   // prefetch()'s balls on the device, inserted as they come, with `done` counting them.
   void solve_on_device(std::span<const VertexId> missing, ProgressLine& progress) const;
