@@ -40,7 +40,7 @@ void add_distance_store_options(CLI::App& command, DistanceStoreOptions& options
 
 // --geodesic fmm|dijkstra and --potential exp|gauss, the same wherever a
 // command takes them.
-void add_geodesic_option(CLI::App& command, std::string& method);
+CLI::Option* add_geodesic_option(CLI::App& command, std::string& method);
 void add_potential_option(CLI::App& command, std::string& potential);
 
 void add_info_command(CLI::App& app);

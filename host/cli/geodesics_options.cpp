@@ -25,8 +25,10 @@ GeodesicsRequest DistanceTableOptions::request(GeodesicMethod method) const {
   return request;
 }
 
-void add_geodesic_option(CLI::App& command, std::string& method) {
-  command.add_option("--geodesic", method, "Distance solver: fmm (fast marching), fim (the fast iterative method) or dijkstra (edge graph)")
+CLI::Option* add_geodesic_option(CLI::App& command, std::string& method) {
+  return command
+      .add_option("--geodesic", method,
+                  "Distance solver: fmm (fast marching), fim (the fast iterative method) or dijkstra (edge graph)")
       ->check(CLI::IsMember({"fmm", "fim", "dijkstra"}))
       ->capture_default_str();
 }

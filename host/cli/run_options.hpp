@@ -17,7 +17,7 @@ struct RunOptions {
   std::string scheme;  // default: the backend's
   std::string init = "farthest";
   std::string potential = "exp";
-  std::string geodesic = "fmm";
+  std::string geodesic;  // default: fmm, or fim where the paper method's default gives a GPU the balls
   std::string weights;
   DistanceStoreOptions store;
   std::string tuning_file;

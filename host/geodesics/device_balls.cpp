@@ -38,6 +38,8 @@ cl::Buffer read_only(const cl::Context& context, const std::vector<T>& values) {
 
 }  // namespace
 
+std::size_t device_ball_slots(const DeviceDescription& device) { return std::size_t{1} << slot_bits_for(device); }
+
 void DeviceBallSolver::check_memory(const SurfaceMesh& mesh) const {
   const TriangleStencils& stencils = host_.stencils();
   const std::uint64_t vertices = mesh.vertex_count() + 1, ring = mesh.ring_neighbors().size();

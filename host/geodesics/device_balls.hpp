@@ -14,6 +14,10 @@
 
 namespace meshparticles {
 
+// The most vertices (a ball and its margin) one work-group of `device`
+// holds: its table, as big as the device's local memory allows.
+std::size_t device_ball_slots(const DeviceDescription& device);
+
 class DeviceBallSolver {
  public:
   struct Statistics {

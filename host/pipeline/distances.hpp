@@ -45,6 +45,9 @@ struct DistancesPlan {
   std::uint64_t ball_budget_bytes = 0;
 };
 
+// The vertices of one ball of `radius`, estimated from the mesh's area.
+double expected_ball_vertices(const SurfaceMesh& mesh, double radius);
+
 // The bytes of the balls a run on local distances holds at once, estimated
 // from the mesh's area before any is computed.
 std::uint64_t estimated_ball_bytes(const SurfaceMesh& mesh, double radius, std::size_t particles);

@@ -118,12 +118,21 @@ RunPlan plan_run_unnamed(const SurfaceMesh& mesh, const RunRequest& request) {
   BackendRequest backend = request.backend;
   std::optional<Scheme> default_scheme;
   if (default_backend) {
-    const bool dense = plan.distances.kind == StoreKind::dense;  // on local distances no device is asked
-    const SelectedDevice selected = dense ? selected_device_if_any(request.backend.device) : SelectedDevice{};
+    const bool dense = plan.distances.kind == StoreKind::dense;
+    LocalBalls balls;
+    if (!dense) {
+      balls = {mesh.vertex_count(), expected_ball_vertices(mesh, plan.distances.radius),
+               request.geodesic_given ? std::optional(request.distances.geodesics.method) : std::nullopt};
+    }
+    // On local distances a device is looked for only where it could pay.
+    const SelectedDevice selected = dense || local_default_may_use_device(balls)
+                                        ? selected_device_if_any(request.backend.device)
+                                        : SelectedDevice{};
     const DefaultBackend chosen = default_paper_backend(plan.distances.kind, request.particles,
-                                                        selected.device ? &*selected.device : nullptr);
+                                                        selected.device ? &*selected.device : nullptr, balls);
     backend.name = chosen.name;
     default_scheme = chosen.scheme;
+    if (chosen.geodesic) plan.request.distances.geodesics.method = *chosen.geodesic;
     plan.backend_from = chosen.reason + (selected.why_none.empty() ? "" : " (" + selected.why_none + ")");
   } else {
     plan.backend_from = "--backend";

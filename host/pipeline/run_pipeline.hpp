@@ -76,6 +76,9 @@ struct RunRequest {
   Potential potential = Potential::exp;
   std::optional<double> sigma;  // default: the rule of default_sigma
   DistancesRequest distances;   // the store (dense, local, auto), solver, cache, threads
+  // --geodesic given (distances.geodesics.method): else the paper method's
+  // default may choose fim, where a GPU takes the balls.
+  bool geodesic_given = true;
   bool quiet = false;           // no progress lines or warnings on stderr
 };
 
