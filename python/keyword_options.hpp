@@ -16,6 +16,9 @@ class KeywordOptions {
  public:
   explicit KeywordOptions(const pybind11::kwargs& given) : left_(pybind11::dict(given)) {}
 
+  // Whether `name` is given, and not None, among those not yet taken.
+  bool given(const char* name) const { return left_.contains(name) && !left_[name].is_none(); }
+
   // The value of `name` as T, or nothing when absent or None. Throws
   // TypeError naming the keyword when it is not a T.
   template <typename T>

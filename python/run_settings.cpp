@@ -62,6 +62,7 @@ RunRequest take_run_request(KeywordOptions& options) {
   if (const auto weights = options.take<std::string>("weights")) request.backend.weights = parse_weight_format(*weights);
   request.backend.rebuild_every = options.take_whole("rebuild_every", kRebuildRange);
   request.backend.tuning_file = tuning_file_or_default(options.take<std::string>("tuning_file").value_or(""));
+  request.geodesic_given = options.given("geodesic");  // else the default may give a GPU the balls, as `run`'s
   const GeodesicsRequest geodesics = take_geodesics_request(options);
   request.distances = take_distances_request(options, geodesics);
   request.quiet = geodesics.quiet;
