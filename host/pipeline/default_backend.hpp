@@ -21,9 +21,10 @@ inline constexpr std::size_t kGpuPaysFromParticlesDense = 3000;
 // the balls solved on it by the fast iterative method (--geodesic fim),
 // where a ball fits a work-group's table. Measured on an H200 against its
 // 16 cores' serial-field with fast marching (whole runs, n = V/10, the
-// default cutoff): at par at 100,000 vertices (the atrium), 1.13x at
-// 149,000, 1.65x at 199,000, 1.84x at 1,000,000 (docs/PERFORMANCE.md).
-inline constexpr std::size_t kGpuPaysFromVerticesLocal = 150000;
+// default cutoff): at par at 100,000 vertices (0.87 - 1.05x, the atrium),
+// 1.13 - 1.39x at 149,000, 1.52 - 1.68x at 199,000, 1.84x at 1,000,000
+// (docs/PERFORMANCE.md).
+inline constexpr std::size_t kGpuPaysFromVerticesLocal = 125000;
 
 // What the default on local balls looks at besides the device.
 struct LocalBalls {
