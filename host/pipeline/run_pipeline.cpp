@@ -98,8 +98,8 @@ RunPlan plan_run_unnamed(const SurfaceMesh& mesh, const RunRequest& request) {
   if (request.start_vertex && request.init == Init::random) {
     throw UserError("--start-vertex applies to --init v0 and farthest, not random");
   }
-  plan.placement = {request.init, request.particles, request.seed, std::nullopt,
-                    host_march_method(request.distances.geodesics.method)};
+  plan.march_method = host_march_method(request.distances.geodesics.method);
+  plan.placement = {request.init, request.particles, request.seed, std::nullopt, plan.march_method};
   if (request.start_vertex) {
     plan.placement.start_vertex = surface_vertex_for_option(mesh, *request.start_vertex, "--start-vertex");
   }
@@ -184,8 +184,7 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   naming_memory_failures(label, "measuring the result", [&] {
     result.distance_to_nearest =
         to_nearest.empty()
-            ? distance_to_nearest_particle(measured, host_march_method(request.distances.geodesics.method),
-                                           result.outcome.positions)
+            ? distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions)
             : std::move(to_nearest);
     result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
                                      result.distance_to_nearest, request.quiet);
@@ -244,7 +243,7 @@ void sweep_finer(const SurfaceMesh& mesh, RunResult& result, double cover_limit)
       same_places(result.working->mesh, finer_mesh->mesh, result.outcome.positions);
   if (!from) return;
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
-  const GeodesicMethod method = host_march_method(request.distances.geodesics.method);
+  const GeodesicMethod method = result.plan.march_method;
   const auto solver = make_geodesic_solver(finer_mesh->mesh, method);
   SpreadOutcome spread = naming_memory_failures(label, "spreading the particles further", [&] {
     return optimize_farthest_points(finer_mesh->mesh, *solver, *from, request.max_iterations, kSpreadMinGain * d_hex,
@@ -285,7 +284,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   });
   const std::shared_ptr<RefinedMesh> swept = working;  // the solver's mesh, kept while it lives
   const SurfaceMesh& surface = swept->mesh;
-  const auto solver = make_geodesic_solver(surface, host_march_method(request.distances.geodesics.method));
+  const auto solver = make_geodesic_solver(surface, plan.march_method);
   // The input's vertices keep their ids on the working mesh.
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   SpreadOutcome spread = naming_memory_failures(label, "spreading the particles", [&] {
@@ -307,7 +306,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   // each inserted into the working mesh and its cover measured, the first
   // that passes kept (else the sweeps' vertices).
   const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);
-  const GeodesicMethod method = host_march_method(request.distances.geodesics.method);
+  const GeodesicMethod method = result.plan.march_method;
   const double cover_limit =
       relax_rounds == 0 ? 0.0
                         : kSpreadCoverShare * largest_finite(distance_to_nearest_particle(*solver, surface, result.start));
@@ -382,7 +381,7 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
   const auto quality_started = std::chrono::steady_clock::now();
   naming_memory_failures(label, "measuring the result", [&] {
     result.distance_to_nearest =
-        distance_to_nearest_particle(mesh, host_march_method(plan.request.distances.geodesics.method),
+        distance_to_nearest_particle(mesh, plan.march_method,
                                      result.outcome.positions);
     result.quality = measure_quality(mesh, distances, result.outcome.positions, plan.energy,
                                      result.distance_to_nearest, plan.request.quiet);

@@ -97,6 +97,10 @@ struct RunPlan {
   DistancesPlan distances;     // paper: the store decided, and its radius when local; spread: decided
                                // for the working mesh when it is built (it reads distances for quality only)
   PlacementRequest placement;  // start_vertex as a surface vertex
+  // The host's own marches (the start, the distance to the nearest
+  // particle, spread's covers): fast marching where the request's solver is
+  // fim, which pays only for many balls at once (host_march_method).
+  GeodesicMethod march_method = GeodesicMethod::fast_marching;
 };
 
 struct RunTimes {
