@@ -25,10 +25,11 @@ GeodesicsRequest DistanceTableOptions::request(GeodesicMethod method) const {
   return request;
 }
 
-CLI::Option* add_geodesic_option(CLI::App& command, std::string& method) {
-  return command
+void add_geodesic_option(CLI::App& command, std::string& method, const std::string& default_note) {
+  command
       .add_option("--geodesic", method,
-                  "Distance solver: fmm (fast marching), fim (the fast iterative method) or dijkstra (edge graph)")
+                  "Distance solver: fmm (fast marching), fim (the fast iterative method) or dijkstra (edge graph)" +
+                      (default_note.empty() ? "" : "; " + default_note))
       ->check(CLI::IsMember({"fmm", "fim", "dijkstra"}))
       ->capture_default_str();
 }

@@ -66,10 +66,9 @@ void add_run_options(CLI::App& command, RunOptions& options) {
   add_positive_number_option(command, "--sigma", request.sigma,
                              "Sigma in mesh units (default from the particle spacing, see docs)");
   add_potential_option(command, options.potential);
-  add_geodesic_option(command, options.geodesic)
-      ->description("Distance solver: fmm (fast marching), fim (the fast iterative method) or dijkstra (edge graph); "
-                    "default fmm, or fim where the paper method's default backend gives a GPU the balls of local "
-                    "distances");
+  add_geodesic_option(command, options.geodesic,
+                      "default fmm, or fim where the paper method's default backend gives a GPU the balls of local "
+                      "distances");
   add_distance_store_options(command, options.store);
   add_device_option(command, request.backend.device);
   add_whole_number_option(command, "--wg", request.backend.work_group_size, kWorkGroupRange,

@@ -12,7 +12,8 @@ DefaultBackend choose(std::string name, std::string reason, Scheme scheme = Sche
 }
 
 DefaultBackend default_on_local_balls(const DeviceDescription* device, const LocalBalls& balls) {
-  // The twin's sequential loop, its balls by fast marching on every core.
+  // The twin's sequential loop, its balls by the request's solver (fast
+  // marching unless --geodesic says otherwise) on every core.
   const auto twin = [](const std::string& why) {
     return choose("serial-field", "default: serial-field on local distances, " + why, Scheme::sequential);
   };

@@ -13,14 +13,14 @@
 
 namespace meshparticles {
 
-// A ball of radius r holds about pi r^2 / (A / V) vertices; a run holds the
-// balls of the particles' vertices and one-rings (at most 7 per particle, at
-// most every vertex), each entry a vertex id and a float.
+// A ball of radius r holds about pi r^2 / (A / V) vertices.
 double expected_ball_vertices(const SurfaceMesh& mesh, double radius) {
   return std::min(double(mesh.vertex_count()),
                   std::numbers::pi * radius * radius * double(mesh.vertex_count()) / mesh.area());
 }
 
+// A run holds the balls of the particles' vertices and one-rings (at most 7
+// per particle, at most every vertex), each entry a vertex id and a float.
 std::uint64_t estimated_ball_bytes(const SurfaceMesh& mesh, double radius, std::size_t particles) {
   const double per_ball = expected_ball_vertices(mesh, radius);
   const double balls = std::min(double(mesh.vertex_count()), 7.0 * double(particles));

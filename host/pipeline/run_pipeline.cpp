@@ -381,8 +381,7 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan, const Distan
   const auto quality_started = std::chrono::steady_clock::now();
   naming_memory_failures(label, "measuring the result", [&] {
     result.distance_to_nearest =
-        distance_to_nearest_particle(mesh, plan.march_method,
-                                     result.outcome.positions);
+        distance_to_nearest_particle(mesh, plan.march_method, result.outcome.positions);
     result.quality = measure_quality(mesh, distances, result.outcome.positions, plan.energy,
                                      result.distance_to_nearest, plan.request.quiet);
   });
