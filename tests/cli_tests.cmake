@@ -368,3 +368,17 @@ add_test(NAME cli.correspond_population COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/corr
                                                 $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/scripts
                                                 ${CMAKE_CURRENT_BINARY_DIR}/correspond_population)
 set_tests_properties(cli.correspond_population PROPERTIES LABELS fast TIMEOUT 300)
+# correspond killed at each stage and run again, and (with MPI) shared among
+# ranks: the outputs of one uninterrupted process, byte for byte.
+function(correspond_share_test mode)
+  add_test(NAME cli.correspond_${mode}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_share.sh ${mode} $<TARGET_FILE:meshparticles>
+                   ${CMAKE_CURRENT_BINARY_DIR}/correspond_${mode} ${ARGN})
+  set_tests_properties(cli.correspond_${mode} PROPERTIES LABELS slow PROCESSORS 2 TIMEOUT 600)
+endfunction()
+correspond_share_test(resume)
+if(MPI_CXX_FOUND)
+  correspond_share_test(mpi ${MPIEXEC_EXECUTABLE})
+else()
+  message(STATUS "MPI not found: cli.correspond_mpi is not registered")
+endif()

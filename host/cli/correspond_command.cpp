@@ -3,15 +3,19 @@
 // each shape's evenness, and the shape model of the result
 // (docs/CORRESPONDENCE.md).
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
 
 #include "batch/batch_inputs.hpp"
+#include "batch/failure.hpp"
+#include "batch/launch_environment.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
 #include "common/user_error.hpp"
 #include "common/version.hpp"
+#include "correspondence/correspondence_checkpoint.hpp"
 #include "correspondence/correspondence_outputs.hpp"
 #include "reports/quality_report.hpp"
 
@@ -39,11 +43,53 @@ std::string method_name(const JointRefinementOptions& refinement) {
   return "template transfer, then joint refinement and packing";
 }
 
+// What the result depends on, for the checkpoint: a run of other inputs
+// (their paths, sizes, times) or parameters does not resume this one's.
+nlohmann::json fingerprint(const CorrespondOptions& options, const std::vector<std::string>& names) {
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const std::string& name : names) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(name, error);
+    const auto time = std::filesystem::last_write_time(name, error).time_since_epoch().count();
+    inputs.push_back({name, error ? 0 : size, error ? 0 : time});
+  }
+  return {{"version", program_version()},
+          {"inputs", inputs},
+          {"particles", options.particles},
+          {"seed", options.seed},
+          {"refine_iterations", options.refine_iterations},
+          {"correspondence_weight", options.correspondence_weight},
+          {"packing", !options.no_packing},
+          {"packing_hold", options.packing_hold}};
+}
+
+void write_results(const CorrespondOptions& options, const std::vector<std::string>& names,
+                   const CorrespondRequest& request, const PopulationCorrespondence& population);
+
+// The population's particles, on every process of `share`; the leader writes the outputs.
+void correspond_shared(const CorrespondOptions& options, const std::vector<std::string>& names,
+                       CorrespondRequest request, ShapeShare& share) {
+  if (share.leads()) prepare_correspondence_directory(options.out, names);  // before the work
+  request.run.particles = options.particles;
+  request.run.seed = options.seed;
+  request.quiet = options.quiet || !share.leads();
+  request.refinement.iterations = options.refine_iterations;
+  request.refinement.correspondence_weight = options.correspondence_weight;
+  request.refinement.pack = !options.no_packing;
+  request.refinement.packing_hold = options.packing_hold;
+  const CorrespondCheckpoint checkpoint(options.out, fingerprint(options, names), share.leads(), request.quiet);
+  const PopulationCorrespondence population = correspond_population(request, share, &checkpoint);
+  if (!share.leads()) return;
+  write_results(options, names, request, population);
+  checkpoint.remove();
+}
+
 void run_correspond(const CorrespondOptions& options) {
   std::vector<std::string> notes;
   const std::vector<MeshInput> inputs = expand_batch_inputs(options.inputs, notes);
   if (inputs.size() < 2) throw UserError("correspond needs at least 2 meshes, got " + std::to_string(inputs.size()));
-  if (!options.quiet) {
+  const MpiLaunch launch = mpi_launch_from_environment();
+  if (!options.quiet && launch.world_rank == 0) {
     for (const std::string& note : notes) std::cerr << "meshparticles: " << note << "\n";
   }
   std::vector<std::string> names;
@@ -52,15 +98,35 @@ void run_correspond(const CorrespondOptions& options) {
     names.push_back(input.path.string());
     request.meshes.push_back(input.path);
   }
-  prepare_correspondence_directory(options.out, names);  // before the work
-  request.run.particles = options.particles;
-  request.run.seed = options.seed;
-  request.quiet = options.quiet;
-  request.refinement.iterations = options.refine_iterations;
-  request.refinement.correspondence_weight = options.correspondence_weight;
-  request.refinement.pack = !options.no_packing;
-  request.refinement.packing_hold = options.packing_hold;
-  const PopulationCorrespondence population = correspond_population(request);
+  if (!launch.launched) {
+    ShapeShare share(inputs.size());
+    correspond_shared(options, names, request, share);
+    return;
+  }
+#ifdef MESHPARTICLES_WITH_MPI
+  const std::unique_ptr<ShapeShare> share = share_shapes_across_ranks(inputs.size());
+  try {
+    correspond_shared(options, names, request, *share);
+  } catch (...) {
+    // Another rank may be waiting for this one in a gather: all of them end.
+    const Failure failure = describe_failure(std::current_exception());
+    std::cerr << "meshparticles: " << (failure.internal ? "internal error: " : "error: ") << failure.message << "\n";
+    share->abort(failure.exit_code);
+  }
+#else
+  // Every rank would do the whole population: rank 0 does it alone, the others leave.
+  if (launch.world_rank != 0) return;
+  if (!options.quiet) {
+    std::cerr << "meshparticles: warning: this meshparticles is built without MPI: rank 0 runs the whole population "
+                 "alone and the other ranks exit (rebuild with OpenMPI installed to share the shapes out)\n";
+  }
+  ShapeShare share(inputs.size());
+  correspond_shared(options, names, request, share);
+#endif
+}
+
+void write_results(const CorrespondOptions& options, const std::vector<std::string>& names,
+                   const CorrespondRequest& request, const PopulationCorrespondence& population) {
   const JointRefinementRecord& refinement = population.refinement;
 
   std::vector<PointSet> shapes;
@@ -91,7 +157,7 @@ void run_correspond(const CorrespondOptions& options) {
                                                                {"smallest_spacing", refinement.packing_spacing},
                                                                {"correspondence_step", refinement.packing_correspondence_step}}}}},
                                   {"params", params},
-                                  {"template", {{"mesh", names.front()}, {"quality", quality_json(population.template_run.quality)}}},
+                                  {"template", {{"mesh", names.front()}, {"quality", quality_json(population.template_quality)}}},
                                   {"shapes", shape_rows},
                                   {"model", shape_model_summary(outputs)}};
   write_correspondence(options.out, population, outputs, summary);

@@ -6,6 +6,7 @@
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"
+#include "correspondence/correspondence_checkpoint.hpp"
 
 namespace meshparticles {
 
@@ -27,7 +28,7 @@ void prepare_correspondence_directory(const std::filesystem::path& directory, co
   if (std::filesystem::exists(directory, error)) {
     for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
       const std::string name = entry.path().filename().string();
-      if (name != "shapes" && name != "model" && name != "summary.json") {
+      if (name != "shapes" && name != "model" && name != "summary.json" && name != CorrespondCheckpoint::kFolder) {
         throw UserError("output directory " + directory.string() + " holds " + name +
                         ", which is not an output of correspond: give a directory of its own");
       }

@@ -1,16 +1,13 @@
 #include "correspondence/joint_refinement.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <exception>
-#include <functional>
-#include <mutex>
-#include <thread>
+#include <initializer_list>
+#include <optional>
 
+#include "common/parallel_for.hpp"
 #include "common/progress.hpp"
-#include "common/worker_threads.hpp"
 #include "correspondence/point_tree.hpp"
 #include "particles/packing_relaxation.hpp"
 #include "particles/particle_params.hpp"
@@ -55,12 +52,41 @@ constexpr std::size_t kPackingRounds = 1000;
 // it open).
 constexpr double kHeldOpenCover = 0.9;
 
-PointSet positions(const ShapeParticles& shape) {
-  PointSet points(Eigen::Index(shape.at.size()), 3);
-  for (std::size_t i = 0; i < shape.at.size(); ++i) {
-    points.row(Eigen::Index(i)) << shape.at[i].at.x, shape.at[i].at.y, shape.at[i].at.z;
+PointSet positions(const std::vector<SurfaceLocation>& at) {
+  PointSet points(Eigen::Index(at.size()), 3);
+  for (std::size_t i = 0; i < at.size(); ++i) points.row(Eigen::Index(i)) << at[i].at.x, at[i].at.y, at[i].at.z;
+  return points;
+}
+
+// What a process tells the others of each of its shapes: its particles'
+// places (row-major), then a few numbers of the step.
+std::vector<double> shape_message(const PointSet& points, std::initializer_list<double> numbers) {
+  std::vector<double> message;
+  message.reserve(std::size_t(points.size()) + numbers.size());
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    for (Eigen::Index c = 0; c < 3; ++c) message.push_back(points(i, c));
+  }
+  message.insert(message.end(), numbers);
+  return message;
+}
+
+PointSet message_points(const std::vector<double>& message, std::size_t particles) {
+  PointSet points(Eigen::Index(particles), 3);
+  for (std::size_t i = 0; i < particles; ++i) {
+    for (std::size_t c = 0; c < 3; ++c) points(Eigen::Index(i), Eigen::Index(c)) = message[3 * i + c];
   }
   return points;
+}
+
+// Every shape's hexagonal spacing, on every process.
+std::vector<double> population_spacings(const std::vector<ShapeParticles>& shapes, std::size_t particles,
+                                        ShapeShare& share) {
+  std::vector<std::vector<double>> spacing(shapes.size());
+  for (const std::size_t k : share.owned()) spacing[k] = {hexagonal_spacing(shapes[k].mesh->area(), particles)};
+  share.gather(spacing);
+  std::vector<double> spacings;
+  for (const std::vector<double>& value : spacing) spacings.push_back(value.front());
+  return spacings;
 }
 
 // Soft disks of diameter `spacing`: each pair closer than that is pushed
@@ -121,34 +147,44 @@ std::vector<PointSet> correspondence_steps(const std::vector<PointSet>& shapes, 
   return steps;
 }
 
-// Every shape's particles, each step: the sampling step's push plus the
-// weighted correspondence step, along the surface, at most kLargestStep.
-void evening_iteration(std::vector<ShapeParticles>& shapes, const std::vector<SurfaceWalk>& walks,
-                       const std::vector<double>& spacings, double weight, JointRefinementRecord& record) {
-  std::vector<PointSet> points;
-  for (const ShapeParticles& shape : shapes) points.push_back(positions(shape));
-  double mean_step = 0, overlap = 0;
-  const std::size_t particles = shapes.front().at.size();
+// Every owned shape's particles, each step: the sampling step's push plus
+// the weighted correspondence step, along the surface, at most
+// kLargestStep. `points`: every shape's places before the step, replaced
+// by those after it; the mean overlap and correspondence step go into `record`.
+void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet>& points,
+                       const std::vector<SurfaceWalk*>& walks, const std::vector<double>& spacings, double weight,
+                       ShapeShare& share, JointRefinementRecord& record) {
+  double mean_step = 0;
+  const std::size_t particles = std::size_t(points.front().rows());
   const std::vector<PointSet> pulls = weight > 0 ? correspondence_steps(points, spacings, mean_step)
                                                  : std::vector<PointSet>(shapes.size(), PointSet::Zero(Eigen::Index(particles), 3));
-  for (std::size_t k = 0; k < shapes.size(); ++k) {
+  std::vector<std::vector<double>> messages(shapes.size());
+  for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
+    double overlap = 0;
     const PointSet push = sampling_step(points[k], spacings[k], overlap);
     for (std::size_t i = 0; i < particles; ++i) {
       SurfaceLocation& at = shapes[k].at[i];
       const Eigen::RowVector3d total = push.row(Eigen::Index(i)) + weight * pulls[k].row(Eigen::Index(i));
       Vec3 move{total(0), total(1), total(2)};
-      const Vec3 normal = walks[k].normal(at.triangle);
+      const Vec3 normal = walks[k]->normal(at.triangle);
       move = move + (-dot(move, normal)) * normal;  // along the surface
       const double length = norm(move), largest = kLargestStep * spacings[k];
       if (length > largest) move = (largest / length) * move;
-      if (length > 0) at = walks[k].walk(at.triangle, at.at + move);
+      if (length > 0) at = walks[k]->walk(at.triangle, at.at + move);
     }
+    messages[k] = shape_message(positions(shapes[k].at), {overlap});
+  });
+  share.gather(messages);
+  double overlap = 0;
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    points[k] = message_points(messages[k], particles);
+    overlap += messages[k].back();
   }
   record.overlap.push_back(overlap / double(shapes.size()));
   record.correspondence_step.push_back(mean_step);
 }
 
-// One shape's packing: its particles, and the radius they grow to.
+// One owned shape's packing: its particles, and the radius they grow to.
 struct ShapePacking {
   PackingRelaxation relaxation;
   RadiusGrowth growth;
@@ -156,48 +192,53 @@ struct ShapePacking {
   bool active = true;     // packs in this phase
 };
 
-// Runs work(k) for every k < count, shared out among the cores.
-void for_every_shape(std::size_t count, const std::function<void(std::size_t)>& work) {
-  if (count == 0) return;
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex mutex;
-  const auto share = [&] {
-    try {
-      for (std::size_t k = next++; k < count; k = next++) work(k);
-    } catch (...) {  // out of memory: rethrown on the calling thread, the others stop
-      const std::lock_guard lock(mutex);
-      if (!failure) failure = std::current_exception();
-      next = count;
-    }
-  };
-  const unsigned threads = unsigned(std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, count));
-  {
-    WorkerThreads workers(threads - 1, [&](unsigned) { share(); });
-    share();
+// What every process knows of every shape's packing after a round.
+struct PackingStatus {
+  PointSet points;         // its particles' places
+  double target = 0;       // the smallest spacing held
+  bool growing = false;    // it runs the next round
+  bool released = false;
+};
+
+// Every shape's status before round `round`, gathered from the owners.
+std::vector<PackingStatus> packing_status(const std::vector<std::optional<ShapePacking>>& packings,
+                                          std::size_t particles, std::size_t round, ShapeShare& share) {
+  std::vector<std::vector<double>> messages(packings.size());
+  for (const std::size_t k : share.owned()) {
+    const ShapePacking& packing = *packings[k];
+    const bool growing = packing.active && packing.growth.patient(round);
+    messages[k] = shape_message(positions(packing.relaxation.locations()),
+                                {packing.growth.target(), growing ? 1.0 : 0.0, packing.released ? 1.0 : 0.0});
   }
-  if (failure) std::rethrow_exception(failure);
+  share.gather(messages);
+  std::vector<PackingStatus> status;
+  for (const std::vector<double>& message : messages) {
+    const std::size_t numbers = 3 * particles;
+    status.push_back({message_points(message, particles), message[numbers], message[numbers + 1] != 0,
+                      message[numbers + 2] != 0});
+  }
+  return status;
 }
 
-// A packing round of every shape still growing, each particle of a shape
-// not released nudged by `weight` times its correspondence step. Each
-// shape's round is its own work: the result is the same whatever the
-// number of threads.
-void packing_round(std::vector<ShapePacking>& packings, std::size_t round, const std::vector<double>& spacings,
-                   double weight, JointRefinementRecord& record) {
-  const auto nudged = [&](const ShapePacking& p) { return p.active && !p.released && p.growth.patient(round); };
+// A packing round of every owned shape still growing, each particle of a
+// shape not released nudged by `weight` times its correspondence step.
+// Each shape's round is its own work: the result is the same whatever the
+// number of threads and processes. Returns the status after the round.
+std::vector<PackingStatus> packing_round(std::vector<std::optional<ShapePacking>>& packings,
+                                         const std::vector<PackingStatus>& status, std::size_t round,
+                                         const std::vector<double>& spacings, double weight, ShapeShare& share,
+                                         JointRefinementRecord& record) {
+  const auto nudged = [](const PackingStatus& shape) { return shape.growing && !shape.released; };
   double mean_step = 0;
   std::vector<PointSet> pulls;
-  if (weight > 0 && std::any_of(packings.begin(), packings.end(), nudged)) {
+  if (weight > 0 && std::any_of(status.begin(), status.end(), nudged)) {
     std::vector<PointSet> points;
-    for (const ShapePacking& packing : packings) {
-      points.push_back(positions(ShapeParticles{nullptr, packing.relaxation.locations()}));
-    }
+    for (const PackingStatus& shape : status) points.push_back(shape.points);
     pulls = correspondence_steps(points, spacings, mean_step);
   }
-  for_every_shape(packings.size(), [&](std::size_t k) {
-    ShapePacking& packing = packings[k];
-    if (!packing.active || !packing.growth.patient(round)) return;
+  for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
+    ShapePacking& packing = *packings[k];
+    if (!status[k].growing) return;
     std::vector<Vec3> nudge;
     if (!pulls.empty() && !packing.released) {
       for (Eigen::Index i = 0; i < pulls[k].rows(); ++i) {
@@ -209,83 +250,92 @@ void packing_round(std::vector<ShapePacking>& packings, std::size_t round, const
     const double spacing = packing.relaxation.smallest_spacing(packing.growth.target());
     if (std::isfinite(spacing)) packing.growth.record(radius, spacing, round);
   });
+  std::vector<PackingStatus> after = packing_status(packings, std::size_t(status.front().points.rows()), round + 1, share);
   double spacing_sum = 0;
-  for (std::size_t k = 0; k < packings.size(); ++k) spacing_sum += packings[k].growth.target() / spacings[k];
-  record.packing_spacing.push_back(spacing_sum / double(packings.size()));
+  for (std::size_t k = 0; k < after.size(); ++k) spacing_sum += after[k].target / spacings[k];
+  record.packing_spacing.push_back(spacing_sum / double(after.size()));
   record.packing_correspondence_step.push_back(mean_step);
+  return after;
 }
 
-// Releases the shapes whose packing the correspondence step held open: a
-// hole wider than kHeldOpenCover of the shape's spacing. They alone pack
-// on, on their own, from round `round`. The number released.
-std::size_t release_held_open(std::vector<ShapePacking>& packings, const std::vector<ShapeParticles>& shapes,
-                              const std::vector<double>& spacings, std::size_t round) {
-  for_every_shape(packings.size(), [&](std::size_t k) {
-    packings[k].released = straight_cover(*shapes[k].mesh, packings[k].relaxation) > kHeldOpenCover * spacings[k];
-  });
-  std::size_t released = 0;
-  for (ShapePacking& packing : packings) {
+// Releases the owned shapes whose packing the correspondence step held
+// open: a hole wider than kHeldOpenCover of the shape's spacing. They alone
+// pack on, on their own, from round `round`.
+void release_held_open(std::vector<std::optional<ShapePacking>>& packings, const std::vector<ShapeParticles>& shapes,
+                       const std::vector<double>& spacings, std::size_t round, ShapeShare& share) {
+  for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
+    ShapePacking& packing = *packings[k];
+    packing.released = straight_cover(*shapes[k].mesh, packing.relaxation) > kHeldOpenCover * spacings[k];
     packing.active = packing.released;
     if (packing.released) packing.growth.renew(round);
-    released += packing.released ? 1 : 0;
-  }
-  return released;
+  });
 }
 
 }  // namespace
 
-JointRefinementRecord refine_jointly(std::vector<ShapeParticles>& shapes, const JointRefinementOptions& options,
-                                     bool quiet) {
-  JointRefinementRecord record;
-  if (shapes.size() < 2 || options.iterations == 0) return record;
-  const std::size_t particles = shapes.front().at.size();
-  std::vector<SurfaceWalk> walks;
-  std::vector<double> spacings;
-  for (const ShapeParticles& shape : shapes) {
-    walks.emplace_back(*shape.mesh);
-    spacings.push_back(hexagonal_spacing(shape.mesh->area(), particles));
+void iterate_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, const JointRefinementOptions& options,
+                     ShapeShare& share, JointRefinementRecord& record, bool quiet) {
+  if (shapes.size() < 2 || options.iterations == 0) return;
+  const std::vector<double> spacings = population_spacings(shapes, particles, share);
+  std::vector<std::optional<SurfaceWalk>> own_walks(shapes.size());
+  std::vector<SurfaceWalk*> walks(shapes.size(), nullptr);
+  std::vector<std::vector<double>> messages(shapes.size());
+  for (const std::size_t k : share.owned()) {
+    walks[k] = &own_walks[k].emplace(*shapes[k].mesh);
+    messages[k] = shape_message(positions(shapes[k].at), {});
   }
+  share.gather(messages);
+  std::vector<PointSet> points;
+  for (const std::vector<double>& message : messages) points.push_back(message_points(message, particles));
   ProgressLine progress("refine", options.iterations, quiet);
   for (std::size_t iteration = 0; iteration < options.iterations; ++iteration) {
-    evening_iteration(shapes, walks, spacings, options.correspondence_weight, record);
+    evening_iteration(shapes, points, walks, spacings, options.correspondence_weight, share, record);
     char detail[80];
     std::snprintf(detail, sizeof detail, "overlap %.4f, correspondence step %.4f", record.overlap.back(),
                   record.correspondence_step.back());
     progress.update(iteration + 1, detail);
   }
   progress.finish();
-  if (!options.pack) return record;
+}
 
-  std::vector<ShapePacking> packings;
-  for (std::size_t k = 0; k < shapes.size(); ++k) {
+void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, const JointRefinementOptions& options,
+                  ShapeShare& share, JointRefinementRecord& record, bool quiet) {
+  if (shapes.size() < 2 || options.iterations == 0 || !options.pack) return;
+  const std::vector<double> spacings = population_spacings(shapes, particles, share);
+  std::vector<std::optional<ShapePacking>> packings(shapes.size());
+  for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
     PackingRelaxation relaxation(*shapes[k].mesh, shapes[k].at);
     const double start = relaxation.smallest_spacing(2 * spacings[k]);
-    packings.push_back({std::move(relaxation), RadiusGrowth(std::isfinite(start) ? start : spacings[k], 0)});
-  }
-  ProgressLine packing("pack", 2 * kPackingRounds, quiet);
+    packings[k].emplace(std::move(relaxation), RadiusGrowth(std::isfinite(start) ? start : spacings[k], 0));
+  });
+  ProgressLine progress("pack", 2 * kPackingRounds, quiet);
   std::size_t round = 1;
-  // Rounds while an active shape grows, until round `last`; the round after.
+  std::vector<PackingStatus> status = packing_status(packings, particles, round, share);
+  const auto growing = [](const PackingStatus& shape) { return shape.growing; };
+  // Rounds while a shape grows, until round `last`; `round` ends as the round after.
   const auto pack = [&](std::size_t last) {
-    const auto growing = [&](const ShapePacking& p) { return p.active && p.growth.patient(round); };
-    for (; round <= last && std::any_of(packings.begin(), packings.end(), growing); ++round) {
+    for (; round <= last && std::any_of(status.begin(), status.end(), growing); ++round) {
       const double fading = std::max(0.0, 1 - double(round - 1) / double(kFadingRounds));
       const double weight = options.correspondence_weight * std::max(options.packing_hold, fading);
-      packing_round(packings, round, spacings, weight, record);
+      status = packing_round(packings, status, round, spacings, weight, share, record);
       char detail[80];
       std::snprintf(detail, sizeof detail, "smallest spacing %.4f d_hex, %zu shapes growing",
-                    record.packing_spacing.back(), std::size_t(std::count_if(packings.begin(), packings.end(), growing)));
-      packing.update(round, detail);
+                    record.packing_spacing.back(), std::size_t(std::count_if(status.begin(), status.end(), growing)));
+      progress.update(round, detail);
     }
   };
   pack(kPackingRounds);
   if (options.correspondence_weight > 0 && options.packing_hold > 0) {
-    record.packing_released = release_held_open(packings, shapes, spacings, round);
+    release_held_open(packings, shapes, spacings, round, share);
+    status = packing_status(packings, particles, round, share);
+    record.packing_released = std::size_t(std::count_if(status.begin(), status.end(), [](const PackingStatus& shape) {
+      return shape.released;
+    }));
     pack(round + kPackingRounds - 1);
   }
-  packing.finish();
+  progress.finish();
   record.packing_rounds = round - 1;
-  for (std::size_t k = 0; k < shapes.size(); ++k) shapes[k].at = packings[k].relaxation.locations();
-  return record;
+  for (const std::size_t k : share.owned()) shapes[k].at = packings[k]->relaxation.locations();
 }
 
 }  // namespace meshparticles

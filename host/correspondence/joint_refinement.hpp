@@ -20,12 +20,14 @@
 #include <cstddef>
 #include <vector>
 
+#include "correspondence/shape_share.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/surface_walk.hpp"
 
 namespace meshparticles {
 
-// One shape's particles while they move: where each lies on its mesh.
+// One shape's particles while they move: where each lies on its mesh (on
+// the process that owns the shape; another's has no mesh and no particles).
 struct ShapeParticles {
   const SurfaceMesh* mesh = nullptr;
   std::vector<SurfaceLocation> at;
@@ -57,9 +59,14 @@ struct JointRefinementRecord {
   std::size_t packing_released = 0;  // shapes let go to pack on their own (a hole held open)
 };
 
-// Moves every shape's particles (all shapes hold the same count, row i the
-// same particle). Deterministic. Unless `quiet`, a progress line.
-JointRefinementRecord refine_jointly(std::vector<ShapeParticles>& shapes, const JointRefinementOptions& options,
-                                     bool quiet);
+// The iterations, then the packing (each a stage a resume starts from):
+// they move every owned shape's particles, all shapes holding `particles`
+// particles, row i the same particle; what the population's step needs of
+// the others comes through `share`. Deterministic, and the same for any
+// number of processes and threads. Unless `quiet`, a progress line.
+void iterate_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, const JointRefinementOptions& options,
+                     ShapeShare& share, JointRefinementRecord& record, bool quiet);
+void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, const JointRefinementOptions& options,
+                  ShapeShare& share, JointRefinementRecord& record, bool quiet);
 
 }  // namespace meshparticles

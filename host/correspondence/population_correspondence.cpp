@@ -1,13 +1,22 @@
 #include "correspondence/population_correspondence.hpp"
 
+#include <algorithm>
+#include <functional>
+#include <mutex>
+#include <optional>
+
+#include "common/parallel_for.hpp"
 #include "common/progress.hpp"
+#include "common/user_error.hpp"
 #include "correspondence/closest_surface_point.hpp"
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/point_tree.hpp"
+#include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
 #include "reports/particle_locations.hpp"
+#include "reports/quality_report.hpp"
 
 namespace meshparticles {
 
@@ -16,14 +25,15 @@ namespace {
 // The particles measured as `quality` measures a file, on the shape's own
 // surface (refined until they lie on vertices), while its mesh is loaded.
 DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMesh& mesh, const PointSet& particles,
-                             bool quiet) {
+                             unsigned threads) {
   PointSetsRequest request;
   request.names = {file.string()};
   request.points.emplace_back();
   for (Eigen::Index i = 0; i < particles.rows(); ++i) {
     request.points.back().push_back({particles(i, 0), particles(i, 1), particles(i, 2)});
   }
-  request.geodesics.quiet = quiet;
+  request.geodesics.quiet = true;  // the stage's progress line counts the shapes
+  request.geodesics.threads = threads;
   request.geodesics.cache_directory.reset();
   return measure_point_sets(mesh, request).sets.front().quality;
 }
@@ -67,7 +77,7 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
 
 // Where the particles ended: their triangles, weights and positions in the
 // file's terms, and how evenly they cover the shape.
-void settle(ShapeCorrespondence& shape, const SurfaceMesh& mesh, const ShapeParticles& particles, bool quiet) {
+void settle(ShapeCorrespondence& shape, const SurfaceMesh& mesh, const ShapeParticles& particles, unsigned threads) {
   shape.particles.resize(Eigen::Index(particles.at.size()), 3);
   for (std::size_t i = 0; i < particles.at.size(); ++i) {
     const SurfaceLocation& at = particles.at[i];
@@ -83,51 +93,181 @@ void settle(ShapeCorrespondence& shape, const SurfaceMesh& mesh, const ShapePart
     shape.locations.push_back(location);
     shape.particles.row(Eigen::Index(i)) << at.at.x, at.at.y, at.at.z;
   }
-  shape.quality = evenness(shape.mesh, mesh, shape.particles, quiet);
+  shape.quality = evenness(shape.mesh, mesh, shape.particles, threads);
 }
 
-}  // namespace
+// The template's particles as doubles (corners, then weights), for the other processes.
+std::vector<double> template_message(const std::vector<TemplateParticle>& particles) {
+  std::vector<double> message;
+  for (const TemplateParticle& particle : particles) {
+    for (const VertexId corner : particle.corners) message.push_back(double(corner));
+    message.insert(message.end(), particle.weights.begin(), particle.weights.end());
+  }
+  return message;
+}
 
-PopulationCorrespondence correspond_population(const CorrespondRequest& request) {
-  PopulationCorrespondence population;
-  const std::filesystem::path& template_file = request.meshes.front();
+std::vector<TemplateParticle> template_from_message(const std::vector<double>& message) {
+  std::vector<TemplateParticle> particles(message.size() / 6);
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      particles[i].corners[k] = VertexId(message[6 * i + k]);
+      particles[i].weights[k] = message[6 * i + 3 + k];
+    }
+  }
+  return particles;
+}
+
+// The template's run (or the checkpoint's), on the leader: its particles as
+// the template's vertices' weights, and its quality.
+std::vector<TemplateParticle> sample_template(const SurfaceMesh& template_mesh, const CorrespondRequest& request,
+                                              const CorrespondCheckpoint* checkpoint, DistributionQuality& quality) {
+  if (checkpoint) {
+    if (const std::optional<nlohmann::json> kept = checkpoint->read("template")) {
+      const std::vector<double> message = kept->at("particles").get<std::vector<double>>();
+      quality = quality_from_json(kept->at("quality"), message.size() / 6);
+      return template_from_message(message);
+    }
+  }
   RunRequest run = request.run;
-  run.mesh_label = template_file.string();
+  run.mesh_label = request.meshes.front().string();
   run.quiet = request.quiet;
-  std::vector<SurfaceMesh> meshes;
-  meshes.reserve(request.meshes.size());  // the particles hold pointers to them
-  meshes.push_back(load_mesh(template_file, request.quiet, {}));
-  const SurfaceMesh& template_mesh = meshes.front();
-  population.template_run = run_pipeline(template_mesh, run);
-
-  // The template's frame is the common one: its canonical frame.
-  const Similarity template_frame = canonical_frame(template_mesh);
-  const PointSet template_points = template_frame.apply(vertex_points(template_mesh));
-  const std::vector<ParticleLocation> locations = particle_locations(template_mesh, population.template_run);
-  std::vector<TemplateParticle> template_particles;
-  for (const ParticleLocation& location : locations) {
+  const RunResult result = run_pipeline(template_mesh, run);
+  quality = result.quality;
+  std::vector<TemplateParticle> particles;
+  for (const ParticleLocation& location : particle_locations(template_mesh, result)) {
     TemplateParticle particle;
     for (std::size_t k = 0; k < 3; ++k) {
       particle.corners[k] = *template_mesh.vertex_of_input_id(location.corners[k]);
       particle.weights[k] = location.weights[k];
     }
-    template_particles.push_back(particle);
+    particles.push_back(particle);
   }
+  if (checkpoint) checkpoint->write("template", {{"particles", template_message(particles)}, {"quality", quality_json(quality)}});
+  return particles;
+}
 
-  // Every mesh stays loaded: the joint refinement moves all shapes' particles together.
-  std::vector<ShapeParticles> particles(request.meshes.size());
-  ProgressLine progress("correspond", request.meshes.size(), request.quiet);
-  for (std::size_t s = 0; s < request.meshes.size(); ++s) {
-    if (s > 0) meshes.push_back(load_mesh(request.meshes[s], request.quiet, {}));
-    population.shapes.push_back(transfer(request.meshes[s], meshes[s], template_mesh, template_points, template_frame,
-                                         template_particles, particles[s]));
-    progress.update(s + 1);
+// A progress line that the threads of a stage advance together.
+class SharedProgress {
+ public:
+  SharedProgress(const char* label, std::size_t total, bool quiet) : line_(label, total, quiet) {}
+  void advance() {
+    const std::lock_guard lock(mutex_);
+    line_.update(++done_);
   }
-  progress.finish();
-  population.refinement = refine_jointly(particles, request.refinement, request.quiet);
-  for (std::size_t s = 0; s < request.meshes.size(); ++s) {
-    settle(population.shapes[s], meshes[s], particles[s], request.quiet);
+  void finish() { line_.finish(); }
+
+ private:
+  std::mutex mutex_;
+  ProgressLine line_;
+  std::size_t done_ = 0;
+};
+
+// A refinement stage ("iterated", "packed"): taken from the checkpoint where
+// an earlier run finished it, else run and kept. Every process takes the same branch.
+void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& particles, ShapeShare& share,
+                      const CorrespondCheckpoint* checkpoint, JointRefinementRecord& record,
+                      const std::function<void()>& run) {
+  std::optional<nlohmann::json> kept = checkpoint ? checkpoint->read(stage) : std::nullopt;
+  if (kept) {
+    for (const std::size_t k : share.owned()) {
+      const std::optional<nlohmann::json> shape = checkpoint->read(shape_entry(stage, k));
+      if (!shape) throw UserError("checkpoint stage " + stage + " lacks shape " + std::to_string(k) + ": remove " + CorrespondCheckpoint::kFolder + "/ and run again");
+      particles[k].at = locations_from_json(*shape);
+    }
+    record = refinement_from_json(*kept);
+    return;
   }
+  run();
+  if (!checkpoint) return;
+  for (const std::size_t k : share.owned()) checkpoint->write(shape_entry(stage, k), locations_json(particles[k].at));
+  std::vector<std::vector<double>> written(share.shapes());
+  share.gather(written);  // every shape's file is written before the stage's record
+  if (share.leads()) checkpoint->write(stage, refinement_json(record));
+}
+
+}  // namespace
+
+PopulationCorrespondence correspond_population(const CorrespondRequest& request) {
+  ShapeShare share(request.meshes.size());
+  return correspond_population(request, share, nullptr);
+}
+
+PopulationCorrespondence correspond_population(const CorrespondRequest& request, ShapeShare& share,
+                                               const CorrespondCheckpoint* checkpoint) {
+  PopulationCorrespondence population;
+  const std::size_t count = request.meshes.size();
+  // Every process holds the template; the others, their owners. The
+  // particles hold pointers into `meshes`, which is never resized.
+  std::vector<std::optional<SurfaceMesh>> meshes(count);
+  meshes.front().emplace(load_mesh(request.meshes.front(), request.quiet, {}));
+  const SurfaceMesh& template_mesh = *meshes.front();
+
+  // The leader samples the template and tells the others.
+  std::vector<TemplateParticle> template_particles;
+  if (share.leads()) {
+    template_particles = sample_template(template_mesh, request, checkpoint, population.template_quality);
+  }
+  std::vector<double> message = template_message(template_particles);
+  share.broadcast(message);
+  template_particles = template_from_message(message);
+  const std::size_t particle_count = template_particles.size();
+
+  // The template's frame is the common one: its canonical frame.
+  const Similarity template_frame = canonical_frame(template_mesh);
+  const PointSet template_points = template_frame.apply(vertex_points(template_mesh));
+
+  // Each process's shapes, each on a thread: loaded, aligned, the template carried onto them.
+  const std::vector<std::size_t> owned = share.owned();
+  population.shapes.resize(count);
+  std::vector<ShapeParticles> particles(count);
+  SharedProgress transferring("correspond", owned.size(), request.quiet);
+  for_each_index(owned, share.threads(), [&](std::size_t k) {
+    if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], true, {}));
+    const std::optional<nlohmann::json> kept = checkpoint ? checkpoint->read(shape_entry("transfer", k)) : std::nullopt;
+    if (kept) {
+      ShapeCorrespondence& shape = population.shapes[k];
+      shape.mesh = request.meshes[k];
+      shape.vertices = meshes[k]->vertex_count();
+      shape.alignment = alignment_from_json(kept->at("alignment"));
+      particles[k] = {&*meshes[k], locations_from_json(kept->at("locations"))};
+    } else {
+      population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, template_frame,
+                                      template_particles, particles[k]);
+      if (checkpoint) {
+        checkpoint->write(shape_entry("transfer", k), {{"alignment", alignment_json(population.shapes[k].alignment)},
+                                                       {"locations", locations_json(particles[k].at)}});
+      }
+    }
+    transferring.advance();
+  });
+  transferring.finish();
+
+  refinement_stage("iterated", particles, share, checkpoint, population.refinement, [&] {
+    iterate_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
+  });
+  refinement_stage("packed", particles, share, checkpoint, population.refinement, [&] {
+    pack_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
+  });
+
+  // Each shape measured on its own surface; then every process holds every shape's result.
+  SharedProgress measuring("measure", owned.size(), request.quiet);
+  const unsigned measure_threads = std::max(1u, share.threads() / unsigned(std::max<std::size_t>(owned.size(), 1)));
+  std::vector<std::string> results(count);
+  for_each_index(owned, share.threads(), [&](std::size_t k) {
+    const std::optional<nlohmann::json> kept = checkpoint ? checkpoint->read(shape_entry("settled", k)) : std::nullopt;
+    if (kept) {
+      results[k] = kept->dump();
+    } else {
+      settle(population.shapes[k], *meshes[k], particles[k], measure_threads);
+      const nlohmann::json result = shape_json(population.shapes[k]);
+      if (checkpoint) checkpoint->write(shape_entry("settled", k), result);
+      results[k] = result.dump();
+    }
+    measuring.advance();
+  });
+  measuring.finish();
+  share.gather(results);
+  for (std::size_t k = 0; k < count; ++k) population.shapes[k] = shape_from_json(nlohmann::json::parse(results[k]));
   return population;
 }
 

@@ -13,8 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "correspondence/correspondence_checkpoint.hpp"
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/mesh_alignment.hpp"
+#include "correspondence/shape_share.hpp"
 #include "quality/distribution_quality.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -45,13 +47,20 @@ struct ShapeCorrespondence {
 };
 
 struct PopulationCorrespondence {
-  RunResult template_run;
+  DistributionQuality template_quality;  // its own run's (on the leader)
   std::vector<ShapeCorrespondence> shapes;
   JointRefinementRecord refinement;
 };
 
+// Every shape's result, on every process of `share` (each process loads,
+// fits and moves its own shapes). With a `checkpoint`, each stage finished
+// is kept there, and a stage kept by an earlier run of the same request is
+// taken from it instead of done again: the result is the same to the bit.
 // Throws UserError for a mesh that cannot be read (naming it), and for -n
 // above the template's vertices.
+PopulationCorrespondence correspond_population(const CorrespondRequest& request, ShapeShare& share,
+                                               const CorrespondCheckpoint* checkpoint);
+// One process, all cores, no checkpoint.
 PopulationCorrespondence correspond_population(const CorrespondRequest& request);
 
 }  // namespace meshparticles

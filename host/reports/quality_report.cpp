@@ -28,6 +28,25 @@ nlohmann::json quality_json(const DistributionQuality& quality) {
           {"d_hex", quality.d_hex}};
 }
 
+DistributionQuality quality_from_json(const nlohmann::json& json, std::size_t particles) {
+  const auto optional = [&](const char* key) {
+    return json.at(key).is_null() ? std::nullopt : std::optional<double>(json.at(key).get<double>());
+  };
+  DistributionQuality quality;
+  quality.particles = particles;
+  quality.nn_min = optional("nn_min");
+  quality.nn_mean = optional("nn_mean");
+  quality.nn_std = optional("nn_std");
+  quality.nn_cv = optional("nn_cv");
+  quality.rho = optional("rho");
+  quality.cover = optional("cover");
+  quality.energy = json.at("energy").get<double>();
+  quality.stacked = json.at("stacked").get<std::size_t>();
+  quality.alone = json.at("alone").get<std::size_t>();
+  quality.d_hex = json.at("d_hex").get<double>();
+  return quality;
+}
+
 std::string quality_line(const DistributionQuality& quality) {
   auto text = [](const std::optional<double>& value, const char* pattern) {
     return value ? format_number(pattern, *value) : std::string("-");

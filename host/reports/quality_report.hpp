@@ -14,6 +14,9 @@ namespace meshparticles {
 // Keys nn_min, nn_mean, nn_std, nn_cv, rho, cover, energy, stacked (null
 // where a value is absent), plus d_hex.
 nlohmann::json quality_json(const DistributionQuality& quality);
+// quality_json's object read back (with `particles` for the count it lacks);
+// every double as it was written.
+DistributionQuality quality_from_json(const nlohmann::json& json, std::size_t particles);
 
 // "nn min 0.0723 mean 0.0981 cv 0.071, rho 0.74, cover 0.93, energy 632.1, 0 stacked".
 std::string quality_line(const DistributionQuality& quality);

@@ -1,0 +1,107 @@
+#include "correspondence/shape_records.hpp"
+
+#include "reports/quality_report.hpp"
+
+namespace meshparticles {
+
+nlohmann::json locations_json(const std::vector<SurfaceLocation>& locations) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const SurfaceLocation& at : locations) {
+    rows.push_back({at.triangle, at.weights[0], at.weights[1], at.weights[2], at.at.x, at.at.y, at.at.z});
+  }
+  return rows;
+}
+
+std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json) {
+  std::vector<SurfaceLocation> locations;
+  for (const nlohmann::json& row : json) {
+    SurfaceLocation at;
+    at.triangle = row.at(0).get<std::uint32_t>();
+    for (std::size_t k = 0; k < 3; ++k) at.weights[k] = row.at(1 + k).get<double>();
+    at.at = {row.at(4).get<double>(), row.at(5).get<double>(), row.at(6).get<double>()};
+    locations.push_back(at);
+  }
+  return locations;
+}
+
+nlohmann::json alignment_json(const MeshAlignment& alignment) {
+  const Similarity& to_common = alignment.to_common;
+  nlohmann::json rotation = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < 9; ++i) rotation.push_back(to_common.rotation(i / 3, i % 3));
+  return {{"scale", to_common.scale},
+          {"rotation", rotation},
+          {"translation", {to_common.translation(0), to_common.translation(1), to_common.translation(2)}},
+          {"rms", alignment.rms},
+          {"iterations", alignment.iterations},
+          {"from_principal_axes", alignment.from_principal_axes}};
+}
+
+MeshAlignment alignment_from_json(const nlohmann::json& json) {
+  MeshAlignment alignment;
+  alignment.to_common.scale = json.at("scale").get<double>();
+  for (Eigen::Index i = 0; i < 9; ++i) alignment.to_common.rotation(i / 3, i % 3) = json.at("rotation").at(std::size_t(i)).get<double>();
+  for (Eigen::Index i = 0; i < 3; ++i) alignment.to_common.translation(i) = json.at("translation").at(std::size_t(i)).get<double>();
+  alignment.rms = json.at("rms").get<double>();
+  alignment.iterations = json.at("iterations").get<std::size_t>();
+  alignment.from_principal_axes = json.at("from_principal_axes").get<bool>();
+  return alignment;
+}
+
+nlohmann::json shape_json(const ShapeCorrespondence& shape) {
+  nlohmann::json locations = nlohmann::json::array();
+  for (std::size_t i = 0; i < shape.locations.size(); ++i) {
+    const ShapeLocation& at = shape.locations[i];
+    const Eigen::Index row = Eigen::Index(i);
+    locations.push_back({at.corners[0], at.corners[1], at.corners[2], at.weights[0], at.weights[1], at.weights[2],
+                         at.vertex, shape.particles(row, 0), shape.particles(row, 1), shape.particles(row, 2)});
+  }
+  return {{"mesh", shape.mesh.string()},
+          {"vertices", shape.vertices},
+          {"alignment", alignment_json(shape.alignment)},
+          {"locations", locations},
+          {"quality", quality_json(shape.quality)}};
+}
+
+ShapeCorrespondence shape_from_json(const nlohmann::json& json) {
+  ShapeCorrespondence shape;
+  shape.mesh = json.at("mesh").get<std::string>();
+  shape.vertices = json.at("vertices").get<std::size_t>();
+  shape.alignment = alignment_from_json(json.at("alignment"));
+  const nlohmann::json& rows = json.at("locations");
+  shape.particles.resize(Eigen::Index(rows.size()), 3);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const nlohmann::json& row = rows[i];
+    ShapeLocation at;
+    for (std::size_t k = 0; k < 3; ++k) {
+      at.corners[k] = row.at(k).get<VertexId>();
+      at.weights[k] = row.at(3 + k).get<double>();
+      shape.particles(Eigen::Index(i), Eigen::Index(k)) = row.at(7 + k).get<double>();
+    }
+    at.vertex = row.at(6).get<VertexId>();
+    shape.locations.push_back(at);
+  }
+  shape.quality = quality_from_json(json.at("quality"), rows.size());
+  return shape;
+}
+
+nlohmann::json refinement_json(const JointRefinementRecord& record) {
+  return {{"overlap", record.overlap},
+          {"correspondence_step", record.correspondence_step},
+          {"packing_spacing", record.packing_spacing},
+          {"packing_correspondence_step", record.packing_correspondence_step},
+          {"packing_rounds", record.packing_rounds},
+          {"packing_released", record.packing_released}};
+}
+
+JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
+  JointRefinementRecord record;
+  json.at("overlap").get_to(record.overlap);
+  json.at("correspondence_step").get_to(record.correspondence_step);
+  json.at("packing_spacing").get_to(record.packing_spacing);
+  json.at("packing_correspondence_step").get_to(record.packing_correspondence_step);
+  record.packing_rounds = json.at("packing_rounds").get<std::size_t>();
+  record.packing_released = json.at("packing_released").get<std::size_t>();
+  return record;
+}
+
+}  // namespace meshparticles

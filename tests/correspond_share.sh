@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# correspond_share.sh MODE MESHPARTICLES WORKDIR [MPIEXEC]: `correspond` on
+# a small population with a known map (generate --population --family
+# ellipsoid), its outputs compared byte for byte with one run of one
+# process that nothing interrupted:
+#   resume  killed with SIGKILL once each stage's checkpoint is written
+#           (template, a transfer, the iterations, the packing, a measured
+#           shape), then run again: the same outputs, the stages kept not
+#           run again, and no checkpoint left; a leftover checkpoint of other
+#           parameters is not taken
+#   mpi     mpirun -n 2 and -n 3 (more ranks than cores): the same outputs;
+#           then mpirun -n 2 killed after the packing, resumed by one process
+set -euo pipefail
+mode=$1 bin=$2 work=$3 mpiexec=${4:-}
+fail() { echo "FAIL: $*"; exit 1; }
+rm -rf "$work" && mkdir -p "$work"
+work=$(cd "$work" && pwd)
+"$bin" generate --population 5 --family ellipsoid --vertices 900 --seed 3 --out-dir "$work/shapes" 2> /dev/null
+options=("$work/shapes" -n 48 --samples 10 --refine-iterations 60)
+"$bin" correspond "${options[@]}" --out "$work/reference" > /dev/null 2> "$work/reference.log"
+[ -d "$work/reference/checkpoint" ] && fail "a finished run left its checkpoint"
+same() {  # same OUT WHAT: OUT's outputs are the reference's
+  diff -r "$work/reference" "$1" > "$work/diff.txt" || { head -5 "$work/diff.txt"; fail "$2: outputs differ from one uninterrupted process"; }
+  [ -d "$1/checkpoint" ] && fail "$2: the checkpoint was left"
+  echo "ok: $2"
+}
+# kill_when FILE COMMAND...: starts COMMAND, kills it (and its children)
+# with SIGKILL as soon as FILE exists, or lets it finish.
+kill_when() {
+  local file=$1
+  shift
+  setsid "$@" > /dev/null 2>&1 &
+  local pid=$!
+  while kill -0 "$pid" 2> /dev/null && [ ! -e "$file" ]; do sleep 0.005; done
+  kill -9 -- -"$pid" 2> /dev/null || true
+  wait "$pid" 2> /dev/null || true
+  # MPI ranks may sit outside the launcher's process group: none may go on writing.
+  pkill -9 -f -- "--out $out\$" 2> /dev/null || true
+  while pgrep -f -- "--out $out\$" > /dev/null; do sleep 0.01; done
+}
+mpi_root=()
+[ "$(id -u)" -eq 0 ] && mpi_root=(--allow-run-as-root)
+
+case "$mode" in
+resume)
+  for stage in template transfer/002 iterated packed settled/001; do
+    out="$work/killed_${stage//\//_}"
+    kill_when "$out/checkpoint/$stage.json" "$bin" correspond "${options[@]}" --out "$out"
+    [ -e "$out/summary.json" ] && fail "killed after $stage, yet it finished: the kill came too late to test anything"
+    [ -e "$out/checkpoint/$stage.json" ] || fail "no checkpoint $stage was written"
+    "$bin" correspond "${options[@]}" --out "$out" > /dev/null 2> "$out.log"
+    grep -q "resuming from" "$out.log" || fail "after $stage: the run again did not resume"
+    same "$out" "killed after $stage, run again"
+  done
+  # The packing kept: neither the iterations nor the packing run again.
+  if grep -E "^(refine|pack):" "$work/killed_packed.log"; then fail "the resumed run refined again"; fi
+  # A checkpoint of another -n is not taken: the run starts anew.
+  out="$work/other_parameters"
+  kill_when "$out/checkpoint/packed.json" "$bin" correspond "$work/shapes" -n 40 --samples 10 --refine-iterations 60 --out "$out"
+  "$bin" correspond "${options[@]}" --out "$out" > /dev/null 2> "$out.log"
+  grep -q "starting anew" "$out.log" || fail "a checkpoint of other parameters was not cleared"
+  same "$out" "a checkpoint of other parameters, run anew"
+  ;;
+mpi)
+  for ranks in 2 3; do
+    out="$work/ranks_$ranks"
+    "$mpiexec" "${mpi_root[@]}" -n "$ranks" --oversubscribe "$bin" correspond "${options[@]}" --out "$out" \
+      > /dev/null 2> "$out.log" || { cat "$out.log"; fail "mpirun -n $ranks correspond failed"; }
+    same "$out" "mpirun -n $ranks"
+  done
+  out="$work/ranks_killed"
+  kill_when "$out/checkpoint/packed.json" "$mpiexec" "${mpi_root[@]}" -n 2 --oversubscribe "$bin" correspond \
+    "${options[@]}" --out "$out"
+  [ -e "$out/summary.json" ] && fail "mpirun finished before it could be killed"
+  "$bin" correspond "${options[@]}" --out "$out" > /dev/null 2> "$out.log"
+  grep -q "resuming from" "$out.log" || fail "one process did not resume what two ranks left"
+  same "$out" "mpirun -n 2 killed after the packing, resumed by one process"
+  ;;
+*) fail "unknown mode $mode" ;;
+esac
