@@ -34,6 +34,7 @@ struct CorrespondOptions {
   double correspondence_weight = JointRefinementOptions{}.correspondence_weight;
   bool no_packing = false;
   double packing_hold = JointRefinementOptions{}.packing_hold;
+  unsigned threads = 0;
   bool quiet = false;
 };
 
@@ -99,12 +100,12 @@ void run_correspond(const CorrespondOptions& options) {
     request.meshes.push_back(input.path);
   }
   if (!launch.launched) {
-    ShapeShare share(inputs.size());
+    ShapeShare share(inputs.size(), options.threads);
     correspond_shared(options, names, request, share);
     return;
   }
 #ifdef MESHPARTICLES_WITH_MPI
-  const std::unique_ptr<ShapeShare> share = share_shapes_across_ranks(inputs.size());
+  const std::unique_ptr<ShapeShare> share = share_shapes_across_ranks(inputs.size(), options.threads);
   try {
     correspond_shared(options, names, request, *share);
   } catch (...) {
@@ -120,7 +121,7 @@ void run_correspond(const CorrespondOptions& options) {
     std::cerr << "meshparticles: warning: this meshparticles is built without MPI: rank 0 runs the whole population "
                  "alone and the other ranks exit (rebuild with OpenMPI installed to share the shapes out)\n";
   }
-  ShapeShare share(inputs.size());
+  ShapeShare share(inputs.size(), options.threads);
   correspond_shared(options, names, request, share);
 #endif
 }
@@ -205,6 +206,9 @@ void add_correspond_command(CLI::App& app) {
                       "correspondence)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
+  add_whole_number_option(*command, "--threads", options->threads, kThreadRange,
+                          "Threads per process for its shapes (0: the cores, shared among the ranks of a node); the "
+                          "result is the same for any number");
   command->add_flag("-q,--quiet", options->quiet, "No progress lines");
   command->callback([options] { run_correspond(*options); });
 }

@@ -104,8 +104,10 @@ class MpiShapeShare : public ShapeShare {
 
 }  // namespace
 
-std::unique_ptr<ShapeShare> share_shapes_across_ranks(std::size_t shapes) {
-  return std::make_unique<MpiShapeShare>(shapes, start_mpi());
+std::unique_ptr<ShapeShare> share_shapes_across_ranks(std::size_t shapes, unsigned threads) {
+  Launch launch = start_mpi();
+  if (threads) launch.threads = threads;
+  return std::make_unique<MpiShapeShare>(shapes, launch);
 }
 
 }  // namespace meshparticles

@@ -53,7 +53,8 @@ class ShapeShare {
 };
 
 // The share of the rank this process is under mpirun (it initializes MPI,
-// and finalizes it when destroyed). Only in a build with MPI.
-std::unique_ptr<ShapeShare> share_shapes_across_ranks(std::size_t shapes);
+// and finalizes it when destroyed), on `threads` threads (0: the node's
+// cores divided among its ranks). Only in a build with MPI.
+std::unique_ptr<ShapeShare> share_shapes_across_ranks(std::size_t shapes, unsigned threads);
 
 }  // namespace meshparticles
