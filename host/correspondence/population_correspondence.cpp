@@ -222,7 +222,7 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   std::vector<ShapeParticles> particles(count);
   SharedProgress transferring("correspond", owned.size(), request.quiet);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
-    if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], true, {}));
+    if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], request.quiet, {}));
     const std::optional<nlohmann::json> kept = checkpoint ? checkpoint->read(shape_entry("transfer", k)) : std::nullopt;
     if (kept) {
       ShapeCorrespondence& shape = population.shapes[k];
