@@ -184,7 +184,11 @@ void add_correspond_command(CLI::App& app) {
       "correspond", "Particles at the same places on every shape of a population, and their shape model");
   command->add_option("inputs", options->inputs, "Mesh files, folders of meshes, .txt files listing meshes; the first is the template")
       ->required();
-  command->add_option("--out", options->out, "Output directory: shapes/, model/, summary.json")->required();
+  command
+      ->add_option("--out", options->out,
+                   "Output directory: shapes/, model/, summary.json (and checkpoint/ while it runs: the same "
+                   "command run again after a kill goes on from there)")
+      ->required();
   add_whole_number_option(*command, "-n,--particles", options->particles, kParticleRange,
                           "Particles on every shape");
   add_whole_number_option(*command, "--seed", options->seed, kSeedRange, "Seed of the template's start and the model's draws");
