@@ -142,7 +142,9 @@ std::vector<TemplateParticle> sample_template(const SurfaceMesh& template_mesh, 
     }
     particles.push_back(particle);
   }
-  if (checkpoint) checkpoint->write("template", {{"particles", template_message(particles)}, {"quality", quality_json(quality)}});
+  if (checkpoint) {
+    checkpoint->write("template", {{"particles", template_message(particles)}, {"quality", quality_json(quality)}});
+  }
   return particles;
 }
 
@@ -171,7 +173,10 @@ void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& par
   if (kept) {
     for (const std::size_t k : share.owned()) {
       const std::optional<nlohmann::json> shape = checkpoint->read(shape_entry(stage, k));
-      if (!shape) throw UserError("checkpoint stage " + stage + " lacks shape " + std::to_string(k) + ": remove " + CorrespondCheckpoint::kFolder + "/ and run again");
+      if (!shape) {
+        throw UserError("checkpoint stage " + stage + " lacks shape " + std::to_string(k) + ": remove " +
+                        CorrespondCheckpoint::kFolder + "/ and run again");
+      }
       particles[k].at = locations_from_json(*shape);
     }
     record = refinement_from_json(*kept);

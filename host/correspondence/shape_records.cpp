@@ -39,8 +39,10 @@ nlohmann::json alignment_json(const MeshAlignment& alignment) {
 MeshAlignment alignment_from_json(const nlohmann::json& json) {
   MeshAlignment alignment;
   alignment.to_common.scale = json.at("scale").get<double>();
-  for (Eigen::Index i = 0; i < 9; ++i) alignment.to_common.rotation(i / 3, i % 3) = json.at("rotation").at(std::size_t(i)).get<double>();
-  for (Eigen::Index i = 0; i < 3; ++i) alignment.to_common.translation(i) = json.at("translation").at(std::size_t(i)).get<double>();
+  const nlohmann::json& rotation = json.at("rotation");
+  const nlohmann::json& translation = json.at("translation");
+  for (Eigen::Index i = 0; i < 9; ++i) alignment.to_common.rotation(i / 3, i % 3) = rotation.at(std::size_t(i)).get<double>();
+  for (Eigen::Index i = 0; i < 3; ++i) alignment.to_common.translation(i) = translation.at(std::size_t(i)).get<double>();
   alignment.rms = json.at("rms").get<double>();
   alignment.iterations = json.at("iterations").get<std::size_t>();
   alignment.from_principal_axes = json.at("from_principal_axes").get<bool>();
