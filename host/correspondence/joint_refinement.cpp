@@ -12,6 +12,7 @@
 #include "particles/packing_relaxation.hpp"
 #include "particles/particle_params.hpp"
 #include "particles/spacing_relaxation.hpp"
+#include "shape_model/point_sets.hpp"
 #include "shape_model/procrustes.hpp"
 
 namespace meshparticles {
@@ -61,21 +62,14 @@ PointSet positions(const std::vector<SurfaceLocation>& at) {
 // What a process tells the others of each of its shapes: its particles'
 // places (row-major), then a few numbers of the step.
 std::vector<double> shape_message(const PointSet& points, std::initializer_list<double> numbers) {
-  std::vector<double> message;
-  message.reserve(std::size_t(points.size()) + numbers.size());
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    for (Eigen::Index c = 0; c < 3; ++c) message.push_back(points(i, c));
-  }
+  const Eigen::VectorXd flat = flattened(points);
+  std::vector<double> message(flat.begin(), flat.end());
   message.insert(message.end(), numbers);
   return message;
 }
 
 PointSet message_points(const std::vector<double>& message, std::size_t particles) {
-  PointSet points(Eigen::Index(particles), 3);
-  for (std::size_t i = 0; i < particles; ++i) {
-    for (std::size_t c = 0; c < 3; ++c) points(Eigen::Index(i), Eigen::Index(c)) = message[3 * i + c];
-  }
-  return points;
+  return unflattened(Eigen::Map<const Eigen::VectorXd>(message.data(), Eigen::Index(3 * particles)));
 }
 
 // Every shape's hexagonal spacing, on every process.
