@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <utility>
@@ -116,6 +117,25 @@ Ball GeodesicSolver::solve_ball(VertexId source, double radius, SolverScratch& s
     std::memcpy(&ball.distances[k], &bits, sizeof bits);
   }
   return ball;
+}
+
+void GeodesicSolver::solve_ball_from(std::span<const VertexId> corners, std::span<const double> starts, double radius,
+                                     SolverScratch& scratch, std::vector<std::pair<VertexId, float>>& within) const {
+  scratch.fit(vertex_count_);
+  std::vector<std::uint32_t> one_point(corners.size(), 0);
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    if (!std::isinf(scratch.distances[corners[k]])) continue;  // a corner given twice: its first start
+    scratch.distances[corners[k]] = starts[k];
+    scratch.touched.push_back(corners[k]);
+  }
+  march(corners, scratch.distances, scratch, radius, {}, one_point);
+  within.clear();
+  for (const VertexId v : scratch.touched) {
+    if (scratch.accepted[v]) within.emplace_back(v, float(scratch.distances[v]));
+    scratch.distances[v] = std::numeric_limits<double>::infinity();
+    scratch.accepted[v] = 0;
+  }
+  scratch.touched.clear();
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/surface_mesh.hpp"
@@ -70,6 +71,13 @@ class GeodesicSolver {
   // The vertices within `radius` of `source` and their distances, exactly
   // the values a full solve gives them, at a cost in proportion to the ball.
   Ball solve_ball(VertexId source, double radius, SolverScratch& scratch) const;
+
+  // The vertices within `radius` of a point between vertices, with their
+  // distances (unsorted): the march starts from `corners` (a triangle's,
+  // say), each at its own distance from the point in `starts`, all measuring
+  // from that one point. `within` is cleared and filled.
+  void solve_ball_from(std::span<const VertexId> corners, std::span<const double> starts, double radius,
+                       SolverScratch& scratch, std::vector<std::pair<VertexId, float>>& within) const;
 
   // Lowers nearest[v] to the distance from `source` wherever that is
   // smaller, marching only where it is: a vertex no nearer to `source` than
