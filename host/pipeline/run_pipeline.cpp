@@ -11,6 +11,7 @@
 #include "common/memory_limits.hpp"
 #include "common/user_error.hpp"
 #include "mesh/point_insertion.hpp"
+#include "mesh/surface_walk.hpp"
 #include "particles/particle_file.hpp"
 #include "pipeline/default_backend.hpp"
 #include "pipeline/distances.hpp"
@@ -173,26 +174,40 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   const RunRequest& request = result.plan.request;
   result.working = working;
   const SurfaceMesh& measured = working->mesh;
-  const auto geodesics_started = std::chrono::steady_clock::now();
-  const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
-    return obtain_distances(measured, request.distances.geodesics, result.plan.distances);
-  });
-  result.distances.kind = distances.kind;
-  result.distances.table_source = distances.source;
-  result.seconds.geodesics += seconds_since(geodesics_started);
-  const auto quality_started = std::chrono::steady_clock::now();
-  naming_memory_failures(label, "measuring the result", [&] {
-    result.distance_to_nearest =
-        to_nearest.empty()
-            ? distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions)
-            : std::move(to_nearest);
-    result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
-                                     result.distance_to_nearest, request.quiet);
-  });
-  result.seconds.quality += seconds_since(quality_started);
-  if (const LocalDistances* balls = distances.store->local_balls()) {
-    result.distances.balls = balls->statistics();
-    // The balls are solved inside the quality step: count them there, not twice.
+  const auto measure_through = [&](const DistancesPlan& store) {
+    const auto geodesics_started = std::chrono::steady_clock::now();
+    const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
+      return obtain_distances(measured, request.distances.geodesics, store);
+    });
+    result.distances.kind = distances.kind;
+    result.distances.table_source = distances.source;
+    result.seconds.geodesics += seconds_since(geodesics_started);
+    const auto quality_started = std::chrono::steady_clock::now();
+    naming_memory_failures(label, "measuring the result", [&] {
+      if (result.distance_to_nearest.empty() || !to_nearest.empty()) {
+        result.distance_to_nearest =
+            to_nearest.empty()
+                ? distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions)
+                : std::move(to_nearest);
+      }
+      result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
+                                       result.distance_to_nearest, request.quiet);
+    });
+    result.seconds.quality += seconds_since(quality_started);
+    if (const LocalDistances* balls = distances.store->local_balls()) {
+      result.distances.balls = balls->statistics();
+      // The balls are solved inside the quality step: count them there, not twice.
+    }
+  };
+  result.distance_to_nearest.clear();
+  measure_through(result.plan.distances);
+  // A particle with no other within the default balls (a few particles on
+  // a small or open surface): the balls of kSpreadWideQualityCutoff.
+  if (result.quality.alone > 0 && result.plan.distances.kind == StoreKind::local &&
+      request.distances.cutoff == kSpreadQualityCutoff) {
+    DistancesRequest wider = request.distances;
+    wider.cutoff = kSpreadWideQualityCutoff;
+    measure_through(plan_distances(measured, wider, request.particles, false));
   }
 }
 
@@ -204,70 +219,36 @@ double largest_finite(const std::vector<float>& values) {
   return largest;
 }
 
-// The vertices of `finer` at the places of `positions` on `coarse` (a
-// finer midpoint refinement of the input holds the coarser's vertices);
-// none where one has no vertex there, or two would share one.
-std::optional<std::vector<VertexId>> same_places(const SurfaceMesh& coarse, const SurfaceMesh& finer,
-                                                 const std::vector<VertexId>& positions) {
-  std::vector<Vec3> places;
-  for (const VertexId v : positions) places.push_back(coarse.positions()[v]);
-  const SnappedParticles snapped = snap_to_vertices(finer, places);
-  if (snapped.largest_snap > kOnVertexExactly * coarse.mean_edge_length()) return std::nullopt;
-  std::vector<VertexId> sorted = snapped.positions;
-  std::sort(sorted.begin(), sorted.end());
-  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return std::nullopt;
-  return snapped.positions;
-}
-
-// Where the relaxation was not kept (the surface folds or comes within a
-// spacing of itself, and straight lines misjudge it), the sweeps go on from
-// where they stopped on the working mesh cut kFinerSweepsRounds rounds
-// finer (plan_finer_working_mesh): farthest-point optimization on vertices
-// is held back by how coarse they are. Their result is kept where its
-// geodesic cover is within `cover_limit` and its smallest spacing measures
-// wider than the set `result` holds now (the sweeps' own smallest spacings
-// are each mover's when it moved, not the final set's).
-void sweep_finer(const SurfaceMesh& mesh, RunResult& result, double cover_limit) {
+// spread's evening step (particles/local_farthest_points) from the
+// particles on the vertices `positions` of `working`: each moves off the
+// vertices to the centre of the largest empty circle of its neighbours on
+// the surface where that widens its own gap, measured along the surface,
+// and keeps the covering radius within `cover_limit`. The points it ends
+// on are inserted into the working mesh as vertices.
+void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<RefinedMesh>& working,
+                  const GeodesicSolver& solver, double cover_limit) {
   const RunRequest& request = result.plan.request;
-  const std::string& label = request.mesh_label;
-  const std::optional<WorkingMeshPlan> finer_plan = plan_finer_working_mesh(mesh, result.plan.working_mesh);
-  if (result.sweeps.empty() || !finer_plan) return;
-  const auto started = std::chrono::steady_clock::now();
-  FinerSweeps& finer = result.finer_sweeps;
-  finer.tried = true;
-  const auto finer_mesh = naming_memory_failures(label, "refining the working mesh further", [&] {
-    return std::make_shared<RefinedMesh>(build_working_mesh(mesh, *finer_plan));
-  });
-  finer.vertices = finer_mesh->mesh.vertex_count();
-  const std::optional<std::vector<VertexId>> from =
-      same_places(result.working->mesh, finer_mesh->mesh, result.outcome.positions);
-  if (!from) return;
-  const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
-  const GeodesicMethod method = result.plan.march_method;
-  const auto solver = make_geodesic_solver(finer_mesh->mesh, method);
-  SpreadOutcome spread = naming_memory_failures(label, "spreading the particles further", [&] {
-    return optimize_farthest_points(finer_mesh->mesh, *solver, *from, request.max_iterations, kSpreadMinGain * d_hex,
-                                    kSpreadStallGain * d_hex, request.quiet);
-  });
-  finer.sweeps = spread.sweeps;
-  std::vector<float> to_nearest = distance_to_nearest_particle(*solver, finer_mesh->mesh, spread.positions);
-  finer.cover = largest_finite(to_nearest);
-  result.seconds.particles += seconds_since(started);
-  if (finer.cover > cover_limit) return;
-  RunResult before = result;
-  result.outcome.positions = std::move(spread.positions);
-  measure_spread(result, finer_mesh, label, std::move(to_nearest));
-  if (result.quality.nn_min && before.quality.nn_min && *result.quality.nn_min > *before.quality.nn_min) {
-    result.finer_sweeps.kept = true;
-    return;
+  const SurfaceMesh& surface = working->mesh;
+  const SurfaceWalk walk(surface);
+  std::vector<SurfaceLocation> from;
+  for (const VertexId v : result.outcome.positions) {
+    SurfaceLocation location;
+    if (!walk.first_triangle(v, location.triangle)) return;  // a particle in no triangle: none moves
+    from.push_back(walk.walk(location.triangle, surface.positions()[v]));
   }
-  // Measured less spread (the sweeps' own spacings are fast marching's
-  // from each mover, the measurement's between every pair): the set before.
-  const FinerSweeps tried = result.finer_sweeps;
-  const RunTimes seconds = result.seconds;
-  result = std::move(before);
-  result.finer_sweeps = tried;
-  result.seconds = seconds;
+  const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
+  const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadMinGain * d_hex, kSpreadStallGain * d_hex,
+                             cover_limit};
+  result.evening = naming_memory_failures(request.mesh_label, "evening the spacing", [&] {
+    return even_out(surface, solver, std::move(from), limits, request.quiet);
+  });
+  std::vector<TrianglePoint> points;
+  for (const SurfaceLocation& location : result.evening->points) {
+    points.push_back({location.triangle, location.weights});
+  }
+  InsertedPoints inserted = insert_points(*working, mesh, points);
+  result.outcome.positions = std::move(inserted.vertices);
+  working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
 }
 
 // spread: the start and farthest-point optimization on the working mesh,
@@ -277,7 +258,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   result.plan = plan;
   result.device = "serial";
   const RunRequest& request = plan.request;
-  const auto particles_started = std::chrono::steady_clock::now();
+  auto particles_started = std::chrono::steady_clock::now();
   const std::string& label = request.mesh_label;
   auto working = naming_memory_failures(label, "refining the working mesh", [&] {
     return std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.working_mesh));
@@ -342,19 +323,32 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
     result.outcome.positions = std::move(positions);
     working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
   }
-  result.seconds.particles = seconds_since(particles_started);
-  measure_spread(result, working, label, std::move(kept_to_nearest));
   // Straight lines misjudged the surface (pairs on two sides of a thin part
   // that do not push each other, but are close around its tip): the
   // relaxed set is less spread than the sweeps left it, so the sweeps' set.
-  if (relaxation.kept < relaxation.candidates.size() && !result.sweeps.empty() && result.quality.nn_min &&
-      *result.quality.nn_min < (1 - kSpreadMinGain) * result.sweeps.back().min_spacing) {
-    relaxation.kept = relaxation.candidates.size();
-    relaxation.undone_for_spacing = true;
-    result.outcome.positions = swept_positions;
-    measure_spread(result, swept, label);
+  bool measured = false;
+  if (relaxation.kept < relaxation.candidates.size() && !result.sweeps.empty()) {
+    result.seconds.particles += seconds_since(particles_started);
+    measure_spread(result, working, label, std::move(kept_to_nearest));
+    particles_started = std::chrono::steady_clock::now();
+    measured = true;
+    if (result.quality.nn_min && *result.quality.nn_min < (1 - kSpreadMinGain) * result.sweeps.back().min_spacing) {
+      relaxation.kept = relaxation.candidates.size();
+      relaxation.undone_for_spacing = true;
+      result.outcome.positions = swept_positions;
+      working = swept;
+      measured = false;
+    }
+    kept_to_nearest.clear();
   }
-  if (relax_rounds > 0 && relaxation.kept == relaxation.candidates.size()) sweep_finer(mesh, result, cover_limit);
+  // Where the relaxation was not kept, the evening step goes on from the
+  // sweeps' vertices, particle by particle.
+  if (relax_rounds > 0 && relaxation.kept == relaxation.candidates.size()) {
+    even_spacing(mesh, result, working, *solver, cover_limit);
+    measured = false;
+  }
+  result.seconds.particles += seconds_since(particles_started);
+  if (!measured) measure_spread(result, working, label, std::move(kept_to_nearest));
   result.seconds.total = result.seconds.particles + result.seconds.geodesics + result.seconds.quality;
   return result;
 }

@@ -108,6 +108,21 @@ nlohmann::json sweeps_json(const std::vector<SweepRecord>& sweeps, double d_hex)
   return records;
 }
 
+// spread's evening step: its sweeps, in hexagonal spacings.
+nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
+  nlohmann::json sweeps = nlohmann::json::array();
+  std::size_t moved = 0;
+  for (const EveningSweep& sweep : evening.sweeps) {
+    moved += sweep.moved;
+    sweeps.push_back({{"moved", sweep.moved},
+                      {"smallest_spacing", sweep.smallest / d_hex},
+                      {"mean_spacing", sweep.mean / d_hex},
+                      {"cover_before", sweep.cover / d_hex},
+                      {"ms", sweep.ms}});
+  }
+  return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"sweeps", sweeps}};
+}
+
 // spread: the sweeps of farthest-point optimization in place of the
 // energy trace, and the working mesh.
 nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
@@ -146,12 +161,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
                           {"passed_over_for_cover", relaxation.passed_over_for_cover},
                           {"undone_for_spacing", relaxation.undone_for_spacing},
                           {"spacing_per_round", round_spacings}};
-  const FinerSweeps& finer = result.finer_sweeps;
-  report["finer_sweeps"] = {{"tried", finer.tried},
-                            {"kept", finer.kept},
-                            {"vertices", finer.vertices},
-                            {"cover", finer.cover / d_hex},
-                            {"sweeps", sweeps_json(finer.sweeps, d_hex)}};
+  if (result.evening) report["evening"] = evening_json(*result.evening, d_hex);
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
   return report;

@@ -1,0 +1,58 @@
+#pragma once
+// Farthest-point optimization off the vertices, among surface neighbours:
+// the evening step after the sweeps on vertices (docs/ALGORITHM.md,
+// "Evening"). A sweep visits every particle in index order and moves it to
+// the centre of the largest empty circle of its neighbours on the surface
+// (the regions of the geodesic Voronoi diagram that touch its own, found
+// anew each sweep), if that widens its own gap: the move is kept only when
+// the particle ends farther from every neighbour than it was from its
+// nearest. So no particle is ever kept or dropped because of another pair,
+// the smallest spacing of the set never shrinks, and two parts facing each
+// other through the air never push (their regions do not touch).
+//
+// Vertices cap farthest-point optimization: a particle can only stand where
+// a vertex is, up to an edge from the true centre, which costs about a
+// tenth of a spacing at 24 vertices per particle. Off the vertices that
+// cap is gone, at no finer mesh.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "geodesics/geodesic_solver.hpp"
+#include "mesh/surface_mesh.hpp"
+#include "mesh/surface_walk.hpp"
+
+namespace meshparticles {
+
+struct EveningSweep {
+  std::size_t moved = 0;
+  double smallest = 0, mean = 0;  // each particle's spacing to its nearest surface neighbour, after the sweep
+  double cover = 0;               // the geodesic covering radius before the sweep (mesh units)
+  double ms = 0;
+};
+
+struct EveningOutcome {
+  std::vector<SurfaceLocation> points;  // in the caller's order
+  std::vector<EveningSweep> sweeps;
+  double cover = 0;                     // the final points' geodesic covering radius (mesh units)
+};
+
+struct EveningLimits {
+  std::size_t max_sweeps = 0;
+  double d_hex = 0;       // the hexagonal spacing, mesh units
+  double min_gain = 0;    // a move must widen its particle's gap by more (mesh units)
+  double stall_gain = 0;  // sweeps stop when one raises the mean spacing by less (mesh units)
+  double cover = 0;       // no move takes the covering radius over this (mesh units)
+};
+
+// From `start` (points of `mesh`'s triangles; `solver` is built for
+// `mesh`), sweeps until one moves nothing, raises the mean spacing by less
+// than `limits.stall_gain`, or `limits.max_sweeps` have run. A move must
+// gain more than `limits.min_gain`, and must leave the region it came from
+// within `limits.cover` of it (a region already wider may not widen).
+// Deterministic: the same inputs give the same bits. Unless `quiet`, a
+// progress line.
+EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> start,
+                        const EveningLimits& limits, bool quiet);
+
+}  // namespace meshparticles

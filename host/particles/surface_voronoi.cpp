@@ -1,0 +1,65 @@
+#include "particles/surface_voronoi.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshparticles {
+
+double SurfaceVoronoi::cover() const {
+  double largest = 0;
+  for (const float d : distance) {
+    if (std::isfinite(d)) largest = std::max(largest, double(d));
+  }
+  return largest;
+}
+
+std::vector<SurfacePath> SurfaceVoronoi::neighbour_paths(const SurfaceMesh& mesh) const {
+  std::vector<SurfacePath> paths;
+  const auto& positions = mesh.positions();
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    const std::uint32_t p = owner[v];
+    if (p == kNoPoint) continue;
+    for (const VertexId w : mesh.one_ring(v)) {
+      const std::uint32_t q = owner[w];
+      if (q == kNoPoint || q <= p) continue;
+      const double edge = meshparticles::distance(positions[v], positions[w]);
+      paths.push_back({p, q, double(distance[v]) + edge + double(distance[w])});
+    }
+  }
+  std::sort(paths.begin(), paths.end(), [](const SurfacePath& x, const SurfacePath& y) {
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.length < y.length;
+  });
+  paths.erase(std::unique(paths.begin(), paths.end(),
+                          [](const SurfacePath& x, const SurfacePath& y) { return x.a == y.a && x.b == y.b; }),
+              paths.end());
+  return paths;
+}
+
+SurfaceVoronoi surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                               std::span<const SurfaceLocation> points, SolverScratch& scratch) {
+  SurfaceVoronoi voronoi;
+  voronoi.distance.assign(mesh.vertex_count(), std::numeric_limits<float>::infinity());
+  voronoi.owner.assign(mesh.vertex_count(), SurfaceVoronoi::kNoPoint);
+  std::vector<VertexId> seeds;
+  for (std::uint32_t i = 0; i < points.size(); ++i) {
+    for (const VertexId c : mesh.triangles()[points[i].triangle]) {
+      const float d = float(distance(points[i].at, mesh.positions()[c]));
+      if (voronoi.owner[c] == SurfaceVoronoi::kNoPoint) seeds.push_back(c);
+      if (d < voronoi.distance[c] || voronoi.owner[c] == SurfaceVoronoi::kNoPoint) {
+        voronoi.distance[c] = d;
+        voronoi.owner[c] = i;
+      }
+    }
+  }
+  std::vector<std::uint32_t> seed_owners;
+  for (const VertexId c : seeds) seed_owners.push_back(voronoi.owner[c]);
+  std::vector<VertexId> lowered;
+  std::vector<std::uint32_t> lowered_owners;
+  if (!seeds.empty()) {
+    solver.lower_nearest_from(seeds, seed_owners, voronoi.distance, scratch, lowered, lowered_owners);
+  }
+  for (std::size_t k = 0; k < lowered.size(); ++k) voronoi.owner[lowered[k]] = lowered_owners[k];
+  return voronoi;
+}
+
+}  // namespace meshparticles
