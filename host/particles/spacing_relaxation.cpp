@@ -27,6 +27,12 @@ constexpr double kFoamRadius = 1.2;
 // of a 100k-vertex run at n = 4,096 when it was every 5 rounds; the kept
 // round was the last in every case measured).
 constexpr std::size_t kCheckEvery = 25;
+// The rounds after which a relaxation that has passed no state more spread
+// than its start gives up. Where it is kept (the committed meshes, smooth
+// CGAL shapes) a first such state comes by round 75; where it is not (most
+// real models: parts facing each other through the air), the rounds after
+// this were a third of its time, spent for nothing.
+constexpr std::size_t kHopelessAfter = 100;
 
 // Per vertex, the sum of its triangles' area-weighted normals.
 std::vector<Vec3> vertex_normals(const SurfaceMesh& mesh) {
@@ -120,6 +126,10 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
         growth.emplace(relaxation.smallest_spacing(reach), round);
       }
       if (!evening && !growth->patient(round)) break;
+      if (round > kHopelessAfter && std::all_of(outcome.candidates.begin(), outcome.candidates.end(),
+                                                [](const RelaxationCandidate& c) { return c.round == 0; })) {
+        break;  // no state yet more spread than the start: it will not be kept
+      }
       const double radius = evening ? kFoamRadius * d_hex : growth->radius();
       relaxation.push_round(radius);
       const double spacing = relaxation.smallest_spacing(evening ? radius : growth->target());
