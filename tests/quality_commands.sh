@@ -20,8 +20,8 @@ for key in nn_min nn_mean nn_cv rho cover energy stacked; do
   [ "$(json "$work/start/report.json" "'$key' in d['quality']")" = True ] || fail "report.json quality lacks $key"
 done
 
-# A spread run measures through balls of 3 d_hex (docs/ALGORITHM.md).
-"$bin" quality "$mesh" "$work/start/particles.particles" --distances local --cutoff 3 --json -q > "$work/quality.json"
+# A spread run measures through balls of 1.5 d_hex (docs/ALGORITHM.md).
+"$bin" quality "$mesh" "$work/start/particles.particles" --distances local --cutoff 1.5 --json -q > "$work/quality.json"
 same=$(/usr/bin/python3 -c "
 import json, sys
 report = json.load(open(sys.argv[1]))['quality']; measured = json.load(open(sys.argv[2]))
