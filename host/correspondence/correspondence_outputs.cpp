@@ -5,6 +5,7 @@
 
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
+#include "common/temporary_names.hpp"
 #include "common/user_error.hpp"
 #include "correspondence/correspondence_checkpoint.hpp"
 
@@ -25,6 +26,10 @@ std::set<std::string> shape_files(const std::vector<std::string>& shapes) {
 
 void prepare_correspondence_directory(const std::filesystem::path& directory, const std::vector<std::string>& shapes) {
   std::error_code error;
+  // What a killed run left while writing its outputs (.shapes.tmp-…,
+  // .summary.tmp-….json) goes first: the checkpoint beside it lets the
+  // same command go on, as the README promises.
+  remove_stale_temporaries(directory);
   if (std::filesystem::exists(directory, error)) {
     for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
       const std::string name = entry.path().filename().string();
