@@ -57,4 +57,25 @@ set -e
 grep -q "short.particles: 119 points, but .*shape_0.particles has 120: a shape model needs the same points on every shape" \
   <<<"$errors" || fail "$errors"
 [ ! -e "$work/refused" ] || fail "a refused model left a folder"
+# A coordinate whose square would overflow (it crashed the model): one line
+# naming the file, exit 2.
+{ echo "1e154 1e154 1e154"; tail -n +2 "$work/shape_1.particles"; } >"$work/huge.particles"
+set +e
+errors=$("$bin" model "$work/shape_0.particles" "$work/shape_2.particles" "$work/huge.particles" --out "$work/huge" \
+         2>&1 >/dev/null)
+code=$?
+set -e
+[ "$code" -eq 2 ] && [ "$(grep -c '' <<<"$errors")" -eq 1 ] || fail "huge coordinate: exit $code: $errors"
+grep -q "huge.particles: line 1 has a coordinate beyond 1e150" <<<"$errors" || fail "$errors"
+# Three copies of one shape, moved: no variance above rounding, so no mode
+# (it reported one mode holding 100%, and with none it crashed).
+for k in 1 2 3; do
+  awk -v k="$k" '{ printf "%.17g %.17g %.17g\n", $1 + 1000.1 * k, $2 - 0.3 * k, $3 + 7 * k }' "$work/shape_0.particles" \
+    >"$work/same_$k.particles"
+done
+"$bin" model "$work/same_1.particles" "$work/same_2.particles" "$work/same_3.particles" --out "$work/same" \
+  >"$work/same.out" || fail "three copies: exit $?"
+grep -q "^modes       0$" "$work/same.out" || fail "three copies: $(cat "$work/same.out")"
+/usr/bin/python3 -c "import json, sys; m = json.load(open(sys.argv[1])); assert m['compactness'] == [], m" \
+  "$work/same/model.json" || fail "three copies: modes in model.json"
 echo "ok"

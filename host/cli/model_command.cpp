@@ -57,12 +57,15 @@ void run_model(const ModelOptions& options) {
   std::printf("shapes      %zu, %lld points each\n", shapes.size(), static_cast<long long>(shapes.front().rows()));
   std::printf("alignment   Procrustes%s, %zu rounds%s\n", options.no_scale ? " without scaling" : "",
               alignment.iterations, alignment.converged ? "" : " (not converged)");
-  std::printf("modes       %lld; variance held by 1, 3, 5 modes:", static_cast<long long>(model.modes.variances.size()));
+  std::printf("modes       %lld", static_cast<long long>(model.modes.variances.size()));
+  if (!quality.compactness.empty()) std::printf("; variance held by 1, 3, 5 modes:");
   for (const std::size_t m : {1, 3, 5}) {
     if (m <= quality.compactness.size()) std::printf(" %.1f%%", 100 * quality.compactness[m - 1]);
   }
   std::printf("\n");
-  if (!quality.generalization.empty()) {
+  if (model.modes.variances.size() == 0) {
+    std::printf("measures    none: after alignment the shapes are one shape (no variance above rounding)\n");
+  } else if (!quality.generalization.empty() && !quality.specificity.empty()) {
     std::printf("measures    with 1 mode: generalization %.4g, specificity %.4g (mean point distances)\n",
                 quality.generalization.front().mean, quality.specificity.front().mean);
   }

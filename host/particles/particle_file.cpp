@@ -1,5 +1,6 @@
 #include "particles/particle_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -26,6 +27,10 @@ std::vector<Vec3> read_particle_points(const std::filesystem::path& file) {
     }
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
       throw UserError(file.string() + ": line " + std::to_string(number) + " has a NaN or infinite coordinate");
+    }
+    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kLargestParticleCoordinate) {
+      throw UserError(file.string() + ": line " + std::to_string(number) +
+                      " has a coordinate beyond 1e150 in size (sums of its squares would overflow)");
     }
     points.push_back(p);
   }

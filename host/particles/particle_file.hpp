@@ -11,6 +11,10 @@ namespace meshparticles {
 
 // Throws UserError naming the file (and the line) for a missing or empty
 // file, a line that is not three finite numbers.
+// Coordinates larger than this are refused: their squares, summed over a
+// shape, would overflow a double (the shape model's Procrustes and modes).
+inline constexpr double kLargestParticleCoordinate = 1e150;
+
 std::vector<Vec3> read_particle_points(const std::filesystem::path& file);
 
 struct SnappedParticles {

@@ -7,6 +7,10 @@ namespace meshparticles {
 namespace {
 
 constexpr double kNegligible = 1e-12;  // of the total variance
+// A variance under this share of the mean shape's squared size is rounding
+// (shapes equal but for the last bits: three copies of one file gave "one
+// mode holding 100%"), not a mode.
+constexpr double kRounding = 1e-20;
 
 }  // namespace
 
@@ -25,9 +29,10 @@ ShapeModes principal_modes(const std::vector<PointSet>& aligned) {
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(gram);
   const Eigen::VectorXd values = solver.eigenvalues();  // ascending
   const double total = std::max(values.sum(), 0.0);
+  const double least = std::max(kNegligible * total, kRounding * model.mean.squaredNorm());
   std::vector<Eigen::Index> kept;
   for (Eigen::Index k = count - 1; k >= 0; --k) {
-    if (values(k) > kNegligible * total) kept.push_back(k);
+    if (values(k) > least) kept.push_back(k);
   }
   model.modes.resize(centred.cols(), Eigen::Index(kept.size()));
   model.variances.resize(Eigen::Index(kept.size()));
