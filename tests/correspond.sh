@@ -70,4 +70,11 @@ code=$?
 set -e
 [ "$code" -eq 2 ] && [ "$(grep -c '' <<<"$errors")" -eq 1 ] || fail "one mesh: exit $code: $errors"
 grep -q "correspond needs at least 2 meshes, got 1" <<<"$errors" || fail "$errors"
+# The same file twice is one mesh, and the refusal says why.
+set +e
+errors=$("$bin" correspond "$mesh" "$mesh" --out "$work/twice" -n 8 2>&1 >/dev/null)
+code=$?
+set -e
+[ "$code" -eq 2 ] && [ "$(grep -c '' <<<"$errors")" -eq 1 ] || fail "the same mesh twice: exit $code: $errors"
+grep -q "got 1; .* is the same file as .*: run once" <<<"$errors" || fail "$errors"
 echo "ok"

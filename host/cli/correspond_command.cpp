@@ -88,7 +88,12 @@ void correspond_shared(const CorrespondOptions& options, const std::vector<std::
 void run_correspond(const CorrespondOptions& options) {
   std::vector<std::string> notes;
   const std::vector<MeshInput> inputs = expand_batch_inputs(options.inputs, notes);
-  if (inputs.size() < 2) throw UserError("correspond needs at least 2 meshes, got " + std::to_string(inputs.size()));
+  if (inputs.size() < 2) {
+    // A file given twice counts once: say so, or "got 1" for two names reads as wrong.
+    std::string why;
+    for (const std::string& note : notes) why += "; " + note;
+    throw UserError("correspond needs at least 2 meshes, got " + std::to_string(inputs.size()) + why);
+  }
   const MpiLaunch launch = mpi_launch_from_environment();
   if (!options.quiet && launch.world_rank == 0) {
     for (const std::string& note : notes) std::cerr << "meshparticles: " << note << "\n";
