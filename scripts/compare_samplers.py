@@ -152,16 +152,22 @@ def meshlab_worker(mesh, n, out_dir, result_path, stems):
     Path(result_path).write_text(json.dumps(result))
 
 
-def peer_venv_python():
-    """The peer venv's interpreter, with pymeshlab installed (made on first use)."""
-    venv = Path(os.environ.get("MESHPARTICLES_PEER_VENV") or cache_home() / "meshparticles" / "peer-venv")
+def make_venv(venv, what):
+    """VENV's interpreter, the virtual environment made first where it has none (WHAT names it in the message)."""
     python = venv / "bin" / "python"
     if not python.exists():
-        progress(f"making the MeshLab virtual environment {venv}")
+        progress(f"making the {what} virtual environment {venv}")
         made = subprocess.run([sys.executable, "-m", "venv", "--clear", str(venv)], capture_output=True, text=True)
         if made.returncode != 0:
             die(f"{venv}: cannot make a virtual environment ({last_line(made.stderr)}; "
                 "on Debian: apt-get install python3-venv)")
+    return python
+
+
+def peer_venv_python():
+    """The peer venv's interpreter, with pymeshlab installed (made on first use)."""
+    venv = Path(os.environ.get("MESHPARTICLES_PEER_VENV") or cache_home() / "meshparticles" / "peer-venv")
+    python = make_venv(venv, "MeshLab")
     if subprocess.run([str(python), "-c", "import pymeshlab"], capture_output=True).returncode != 0:
         progress(f"installing pymeshlab into {venv} (pip)")
         installed = subprocess.run([str(python), "-m", "pip", "install", "--quiet", "pymeshlab"],
