@@ -382,6 +382,23 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
                       "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"binary\">"
                       "//////////8AAAEAAAAAAAAAAAAAAAAA</DataArray></Points>"),
                  vtp, "its header claims 18446744073709551615 blocks, past the data");
+  // Issue 50: a piece's indices are its own. One past its points, or
+  // negative, silently took another piece's point; one near 2^63 overflowed
+  // when shifted past the earlier pieces' points (UBSan).
+  const std::string two = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\">\n<PolyData>\n";
+  const auto piece = [&](const std::string& cell) {
+    return "<Piece " + triangle + ">\n" + points +
+           "<Polys><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">" + cell +
+           "</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">3</DataArray></Polys>\n</Piece>\n";
+  };
+  const std::string end = "</PolyData>\n</VTKFile>\n";
+  EXPECT_EQ(refusal(two + piece("0 1 2") + piece("0 1 2") + end, vtp), "accepted");
+  EXPECT_REFUSED(two + piece("0 1 3") + piece("0 1 2") + end, vtp,
+                 "<Polys>: the point index 3 is outside its piece's 3 points");
+  EXPECT_REFUSED(two + piece("0 1 2") + piece("-1 0 1") + end, vtp,
+                 "<Polys>: the point index -1 is outside its piece's 3 points");
+  EXPECT_REFUSED(two + piece("0 1 2") + piece("0 1 9223372036854775807") + end, vtp,
+                 "<Polys>: the point index 9223372036854775807 is outside its piece's 3 points");
 }
 
 // --- OBJ ---

@@ -428,12 +428,12 @@ class VtpReader {
         soup_.vertices.push_back({xyz.reals[3 * i], xyz.reals[3 * i + 1], xyz.reals[3 * i + 2]});
       }
     }
-    read_cells(piece, piece.polys, "NumberOfPolys", "<Polys>", false, first_vertex);
-    read_cells(piece, piece.strips, "NumberOfStrips", "<Strips>", true, first_vertex);
+    read_cells(piece, piece.polys, "NumberOfPolys", "<Polys>", false, first_vertex, points);
+    read_cells(piece, piece.strips, "NumberOfStrips", "<Strips>", true, first_vertex, points);
   }
 
   void read_cells(const Piece& piece, const std::vector<DataArray>& arrays, std::string_view count_name,
-                  const std::string& where, bool strips, std::size_t first_vertex) {
+                  const std::string& where, bool strips, std::size_t first_vertex, std::size_t points) {
     const std::size_t cells = count_attribute(piece.attributes, count_name, "<Piece>");
     if (cells == 0) return;
     if (cells > kMaxInflation * bytes_.size()) {
@@ -450,6 +450,14 @@ class VtpReader {
     }
     const std::vector<long long> connectivity =
         values(named(arrays, "connectivity", where), std::size_t(previous), true, where + " connectivity").integers;
+    // Indices are the piece's own: one outside it would silently take another
+    // piece's point (or, shifted past the earlier pieces' points, overflow).
+    for (const long long index : connectivity) {
+      if (index < 0 || std::uint64_t(index) >= points) {
+        fail(where + ": the point index " + std::to_string(index) + " is outside its piece's " +
+             plural(points, "point"));
+      }
+    }
     const auto shift = static_cast<long long>(first_vertex);
     std::size_t begin = 0;
     for (std::size_t c = 0; c < cells; ++c) {
