@@ -351,6 +351,8 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
   const std::string triangle = "NumberOfPoints=\"3\" NumberOfPolys=\"1\"";
   EXPECT_EQ(refusal(file("", triangle, points + polys), vtp), "accepted");
   EXPECT_REFUSED("not xml", vtp, "not well-formed XML");
+  // Expat's text is not wrapped twice (issue 50, item 4).
+  EXPECT_REFUSED("<?xml version=\"1.0\"?>\n<VTKFile <>", vtp, "not well-formed XML (invalid token)");
   EXPECT_REFUSED("<?xml version=\"1.0\"?><Mesh/>", vtp, "expected a <VTKFile> element, found 'Mesh'");
   EXPECT_REFUSED(file(" compressor=\"vtkLZ4DataCompressor\"", triangle, points + polys), vtp,
                  "compressor 'vtkLZ4DataCompressor' is not read");

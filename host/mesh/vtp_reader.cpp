@@ -78,7 +78,13 @@ class XmlReader {
     const auto line = XML_GetCurrentLineNumber(parser);
     XML_ParserFree(parser);
     if (!error_.empty()) throw UserError(label_ + ": " + error_);
-    if (!parsed) throw_at_line(label_, std::size_t(line), "not well-formed XML (" + problem + ")");
+    if (!parsed) {
+      // Expat's own text may say it already: "not well-formed (invalid token)".
+      constexpr std::string_view kSaid = "not well-formed";
+      const std::string what = problem.starts_with(kSaid) ? "not well-formed XML" + problem.substr(kSaid.size())
+                                                          : "not well-formed XML (" + problem + ")";
+      throw_at_line(label_, std::size_t(line), what);
+    }
     return std::move(document_);
   }
 
