@@ -4,6 +4,7 @@
 #include "mesh/mesh_reader.hpp"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -351,6 +352,27 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
   const std::string triangle = "NumberOfPoints=\"3\" NumberOfPolys=\"1\"";
   EXPECT_EQ(refusal(file("", triangle, points + polys), vtp), "accepted");
   EXPECT_REFUSED("not xml", vtp, "not well-formed XML");
+  // Issue 50, item 3: the inflation bound holds for the whole file. Forty
+  // pieces of 100,000 points, all at offset 0 of one appended zlib block of
+  // zeros, each within the bound alone: refused at once, not after 1.6 GB.
+  {
+    constexpr std::uint32_t kPoints = 100000, kBytes = 3 * 4 * kPoints;
+    const std::vector<unsigned char> zeros(kBytes, 0);
+    std::vector<unsigned char> packed(compressBound(kBytes));
+    uLongf packed_size = packed.size();
+    ASSERT_EQ(compress2(packed.data(), &packed_size, zeros.data(), kBytes, 9), Z_OK);
+    const std::uint32_t header[4] = {1, kBytes, kBytes, std::uint32_t(packed_size)};
+    std::string appended(reinterpret_cast<const char*>(header), sizeof header);
+    appended.append(reinterpret_cast<const char*>(packed.data()), packed_size);
+    std::string bomb = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                       "compressor=\"vtkZLibDataCompressor\">\n<PolyData>\n";
+    for (int k = 0; k < 40; ++k) {
+      bomb += "<Piece NumberOfPoints=\"" + std::to_string(kPoints) + "\" NumberOfPolys=\"0\"><Points><DataArray "
+              "type=\"Float32\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/></Points></Piece>\n";
+    }
+    bomb += "</PolyData>\n<AppendedData encoding=\"raw\">_" + appended + "</AppendedData>\n</VTKFile>\n";
+    EXPECT_REFUSED(bomb, vtp, "more than 1032 times its size");
+  }
   // Expat's text is not wrapped twice (issue 50, item 4).
   EXPECT_REFUSED("<?xml version=\"1.0\"?>\n<VTKFile <>", vtp, "not well-formed XML (invalid token)");
   EXPECT_REFUSED("<?xml version=\"1.0\"?><Mesh/>", vtp, "expected a <VTKFile> element, found 'Mesh'");
