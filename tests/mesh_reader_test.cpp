@@ -307,6 +307,12 @@ TEST(VtkReader, RefusesWhatItCannotRead) {
   EXPECT_EQ(refusal(head + points + "POLYGONS 1 4\n3 0 1 2\n", vtk), "accepted");
   EXPECT_EQ(refusal(head + points + "LINES 1 3\n2 0 1\nPOLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nanything", vtk),
             "accepted");
+  // FIELD arrays of strings, one per line (escaped, so one may be empty),
+  // as VTK's legacy reader takes them (issue 50, item 4).
+  const std::string strings = "FIELD FieldData 2\nnames 1 2 string\nfirst%20name\n\ncounts 1 1 int\n7\n";
+  EXPECT_EQ(refusal(head + points + strings + "POLYGONS 1 4\n3 0 1 2\n", vtk), "accepted");
+  EXPECT_REFUSED(head + points + "FIELD FieldData 1\nnames 1 3 string\none\n", vtk,
+                 "file ends inside a FIELD array of strings");
   EXPECT_REFUSED("OFF\n", vtk, "line 1: expected '# vtk DataFile Version'");
   EXPECT_REFUSED("# vtk DataFile Version 3.0\ntitle\nTEXT\n", vtk, "line 3: expected ASCII or BINARY");
   EXPECT_REFUSED("# vtk DataFile Version 3.0\ntitle\nASCII\nDATASET STRUCTURED_POINTS\n", vtk,

@@ -151,8 +151,8 @@ class VtkReader {
     return std::size_t(*count);
   }
 
-  ValueType header_type() {
-    const std::string_view word = header_word("a data type");
+  ValueType header_type() { return type_of(header_word("a data type")); }
+  ValueType type_of(std::string_view word) {
     const auto type = parse_type(word);
     if (!type || word == "bit") fail("unknown data type " + quoted(word));
     return *type;
@@ -359,8 +359,13 @@ class VtkReader {
       if (*name == "NULL_ARRAY") continue;
       const std::size_t components = header_count("the number of components");
       const std::size_t tuples = header_count("the number of tuples");
-      const ValueType type = header_type();
       if (components != 0 && tuples > SIZE_MAX / components) fail("FIELD array too large");
+      const std::string_view type_name = header_word("a data type");
+      if (type_name == "string") {  // as VTK's legacy reader takes them
+        skip_strings(components * tuples);
+        continue;
+      }
+      const ValueType type = type_of(type_name);
       const std::size_t count = components * tuples;
       check_fits(count, type, "FIELD array");
       if (binary_) {
@@ -368,6 +373,17 @@ class VtkReader {
       } else {
         for (std::size_t i = 0; i < count; ++i) ascii_token("the FIELD array ends");
       }
+    }
+  }
+
+  // A string array's values: in ASCII one per line (escaped, so a line
+  // may be empty), after the rest of the header line. VTK's binary form
+  // (each string led by a length of 1 to 8 bytes) is not read.
+  void skip_strings(std::size_t count) {
+    if (binary_) fail("a FIELD array of binary strings, which this reader does not read");
+    cursor_.next_line();  // the rest of the header line
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!cursor_.next_line()) fail("file ends inside a FIELD array of strings");
     }
   }
 
