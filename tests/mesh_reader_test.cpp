@@ -357,6 +357,21 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
       "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3</DataArray></Polys>\n";
   const std::string triangle = "NumberOfPoints=\"3\" NumberOfPolys=\"1\"";
   EXPECT_EQ(refusal(file("", triangle, points + polys), vtp), "accepted");
+  // Issue 50, item 1: ASCII values past the counts were dropped without a
+  // word (a closed tetrahedron with NumberOfPolys="3" read as 3 triangles).
+  const std::string tetrahedron_points =
+      "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1"
+      "</DataArray></Points>\n";
+  const std::string four_polys =
+      "<Polys><DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 2 1 0 1 3 1 2 3 0 3 2</DataArray>"
+      "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3 6 9 12</DataArray></Polys>\n";
+  EXPECT_EQ(refusal(file("", "NumberOfPoints=\"4\" NumberOfPolys=\"4\"", tetrahedron_points + four_polys), vtp),
+            "accepted");
+  EXPECT_REFUSED(file("", "NumberOfPoints=\"4\" NumberOfPolys=\"3\"", tetrahedron_points + four_polys), vtp,
+                 "<Polys> offsets: more than its 3 values (then '12')");
+  EXPECT_REFUSED(file("", triangle, points + polys.substr(0, polys.find("2</DataArray>") + 1) + " x" +
+                                        polys.substr(polys.find("2</DataArray>") + 1)),
+                 vtp, "<Polys> connectivity: more than its 3 values (then 'x')");
   EXPECT_REFUSED("not xml", vtp, "not well-formed XML");
   // Issue 50, item 3: the inflation bound holds for the whole file. Forty
   // pieces of 100,000 points, all at offset 0 of one appended zlib block of

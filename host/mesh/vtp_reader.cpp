@@ -95,7 +95,9 @@ class XmlReader {
   static void end(void* self, const XML_Char* /*name*/) { static_cast<XmlReader*>(self)->close(); }
   static void characters(void* self, const XML_Char* text, int length) {
     auto* reader = static_cast<XmlReader*>(self);
-    if (reader->array_) reader->array_->text.append(text, std::size_t(length));
+    // The array's own text only, not that of elements inside it (VTK writes
+    // an <InformationKey> with <Value>s into a DataArray, after its values).
+    if (reader->array_ && reader->path_.size() == 5) reader->array_->text.append(text, std::size_t(length));
   }
 
   void open(std::string_view name, const XML_Char** raw) {
@@ -388,6 +390,12 @@ class VtpReader {
           if (!value) fail(what + ": expected a number, got " + quoted(*token));
           out.reals.push_back(*value);
         }
+      }
+      // More values than the counts say (NumberOfPolys smaller than the
+      // connectivity, or anything after the last value): the counts and
+      // the data disagree, as the binary encodings refuse too.
+      if (const auto extra = cursor.next_token()) {
+        fail(what + ": more than its " + plural(expected, "value") + " (then " + quoted(*extra) + ")");
       }
       return out;
     }
