@@ -373,6 +373,9 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
                                         polys.substr(polys.find("2</DataArray>") + 1)),
                  vtp, "<Polys> connectivity: more than its 3 values (then 'x')");
   EXPECT_REFUSED("not xml", vtp, "not well-formed XML");
+  // The text "<AppendedData" in a comment is not the element (issue 50, item 4).
+  EXPECT_EQ(refusal(file("", triangle, "<!-- <AppendedData encoding=\"raw\"> is below -->\n" + points + polys), vtp),
+            "accepted");
   // Issue 50, item 3: the inflation bound holds for the whole file. Forty
   // pieces of 100,000 points, all at offset 0 of one appended zlib block of
   // zeros, each within the bound alone: refused at once, not after 1.6 GB.

@@ -220,7 +220,7 @@ class VtpReader {
     // The appended block may be raw bytes, which no XML parser takes: the
     // XML is everything before it, closed by hand; the block is kept aside.
     std::string xml;
-    const std::size_t appended_at = all.find("<AppendedData");
+    const std::size_t appended_at = appended_tag(all);
     if (appended_at == std::string_view::npos) {
       xml = std::string(all);
     } else {
@@ -248,6 +248,30 @@ class VtpReader {
   static std::string value_or(const Attributes& attributes, std::string_view name, std::string fallback) {
     const auto found = attributes.find(name);
     return found == attributes.end() ? fallback : found->second;
+  }
+
+  // Where the <AppendedData> start tag is, outside comments, CDATA sections
+  // and processing instructions (where the text "<AppendedData" is only
+  // text); npos where there is none.
+  static std::size_t appended_tag(std::string_view all) {
+    static constexpr std::pair<std::string_view, std::string_view> kNotMarkup[] = {
+        {"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}};
+    std::size_t at = 0;
+    while ((at = all.find('<', at)) != std::string_view::npos) {
+      bool skipped = false;
+      for (const auto& [open, close] : kNotMarkup) {
+        if (all.substr(at, open.size()) != open) continue;
+        const std::size_t end = all.find(close, at + open.size());
+        if (end == std::string_view::npos) return std::string_view::npos;  // the XML parse says what is wrong
+        at = end + close.size();
+        skipped = true;
+        break;
+      }
+      if (skipped) continue;
+      if (all.substr(at, 13) == "<AppendedData") return at;
+      ++at;
+    }
+    return std::string_view::npos;
   }
 
   // An attribute of a start tag in raw text (the AppendedData tag, kept out of the XML parse).
