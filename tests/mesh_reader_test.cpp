@@ -307,6 +307,12 @@ TEST(VtkReader, RefusesWhatItCannotRead) {
   EXPECT_EQ(refusal(head + points + "POLYGONS 1 4\n3 0 1 2\n", vtk), "accepted");
   EXPECT_EQ(refusal(head + points + "LINES 1 3\n2 0 1\nPOLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nanything", vtk),
             "accepted");
+  // A METADATA block without its closing empty line swallowed the sections
+  // after it without a word (issue 50, item 1).
+  const std::string metadata = "METADATA\nINFORMATION 0\n";
+  EXPECT_EQ(refusal(head + points + metadata + "\nPOLYGONS 1 4\n3 0 1 2\n", vtk), "accepted");
+  EXPECT_REFUSED(head + points + metadata + "POLYGONS 1 4\n3 0 1 2\n", vtk,
+                 "a METADATA block runs into POLYGONS without the empty line that ends it");
   // FIELD arrays of strings, one per line (escaped, so one may be empty),
   // as VTK's legacy reader takes them (issue 50, item 4).
   const std::string strings = "FIELD FieldData 2\nnames 1 2 string\nfirst%20name\n\ncounts 1 1 int\n7\n";

@@ -387,11 +387,19 @@ class VtkReader {
     }
   }
 
-  // METADATA, then lines of information up to an empty line.
+  // METADATA, then lines of information up to an empty line. A section
+  // keyword before that line means the empty line is missing: the block
+  // would swallow the rest of the file, geometry and all, without a word.
   void skip_metadata() {
+    static constexpr std::string_view kSections[] = {"POINTS", "POLYGONS", "TRIANGLE_STRIPS", "VERTICES", "LINES",
+                                                     "CELLS", "CELL_TYPES", "FIELD", "POINT_DATA", "CELL_DATA"};
     if (!binary_) cursor_.next_line();  // the rest of the METADATA line
     while (const auto line = cursor_.next_line()) {
-      if (LineTokens(*line).next() == std::nullopt) return;
+      const auto first = LineTokens(*line).next();
+      if (first == std::nullopt) return;
+      if (std::find(std::begin(kSections), std::end(kSections), *first) != std::end(kSections)) {
+        fail("a METADATA block runs into " + std::string(*first) + " without the empty line that ends it");
+      }
     }
   }
 
