@@ -215,85 +215,123 @@ std::vector<double> region_reach(const SurfaceVoronoi& cells, std::size_t count)
   return reach;
 }
 
-}  // namespace
+// The farthest `p` is from a corner of its triangle.
+double corner_offset(const SurfaceMesh& mesh, const SurfaceLocation& p) {
+  double offset = 0;
+  for (const VertexId c : mesh.triangles()[p.triangle]) offset = std::max(offset, distance(p.at, mesh.positions()[c]));
+  return offset;
+}
 
-EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
-                        const EveningLimits& limits, bool quiet) {
-  const SurfaceWalk walk(mesh);
-  SolverScratch scratch;
-  SurfaceGap surface_gap(mesh, solver);
-  EveningOutcome outcome;
-  SurfaceVoronoi cells = surface_voronoi(mesh, solver, points, scratch);
-  CornerIndex corners(mesh, points);
-  const double longest = kLongestMove * limits.d_hex;
-  // Particles to visit: at first all; then those that moved or whose
-  // neighbours did (no other can have gained anything).
-  std::vector<char> visit(points.size(), 1);
-  double last_mean = 0;
-  ProgressLine progress("even", limits.max_sweeps, quiet);
-  for (std::size_t sweep = 1; sweep <= limits.max_sweeps; ++sweep) {
+// The evening's state between sweeps, and one particle's move.
+class Evening {
+ public:
+  Evening(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
+          const EveningLimits& limits)
+      : mesh_(mesh), solver_(solver), walk_(mesh), gap_(mesh, solver), limits_(limits), points_(std::move(points)),
+        corners_(mesh, points_), visit_(points_.size(), 1) {
+    cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
+  }
+
+  // One sweep over the particles to visit; its record.
+  EveningSweep sweep() {
     const auto started = std::chrono::steady_clock::now();
     EveningSweep record;
-    record.cover = cells.cover();
-    const NeighbourLists lists = neighbour_lists(mesh, cells, points);
+    record.cover = cells_.cover();
+    const NeighbourLists lists = neighbour_lists(mesh_, cells_, points_);
     // A move of length m leaves the mover's old region within its reach
     // plus m of it: the covering radius stays within the limit when that does.
-    const std::vector<double> reach = region_reach(cells, points.size());
-    std::vector<char> moved(points.size(), 0);
-    double corner_reach = 0;
-    for (const SurfaceLocation& p : points) {
-      for (const VertexId c : mesh.triangles()[p.triangle]) {
-        corner_reach = std::max(corner_reach, distance(p.at, mesh.positions()[c]));
-      }
+    const std::vector<double> reach = region_reach(cells_, points_.size());
+    corner_reach_ = 0;
+    for (const SurfaceLocation& p : points_) corner_reach_ = std::max(corner_reach_, corner_offset(mesh_, p));
+    std::vector<char> moved(points_.size(), 0);
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
+      if (visit_[i] && try_move(i, lists, reach[i])) moved[i] = 1;
     }
-    for (std::uint32_t i = 0; i < points.size(); ++i) {
-      if (!visit[i]) continue;
-      SurfaceLocation& p = points[i];
-      const double before = estimated_gap(p.at, i, lists, points);
-      if (!std::isfinite(before) || norm(walk.normal(p.triangle)) == 0) continue;
-      double widest = before;
-      const Vec3 centre = widest_centre(walk, p, i, lists, points, longest, widest);
-      if (widest <= before + limits.min_gain) continue;
-      const SurfaceLocation there = walk.walk(p.triangle, centre);
-      if (reach[i] + distance(there.at, p.at) > std::max(limits.cover, reach[i])) continue;
-      if (estimated_gap(there.at, i, lists, points) <= before + limits.min_gain) continue;
-      // Kept only where it widens the particle's own gap along the surface,
-      // measured: straight lines and the diagram's paths misjudge folds.
-      const double was = surface_gap(p, i, before + kGapMargin * limits.d_hex, corner_reach, corners, points);
-      const double wanted = was + limits.min_gain;
-      if (surface_gap(there, i, wanted, corner_reach, corners, points) < wanted) continue;
-      corners.move(i, p.triangle, there.triangle);
-      p = there;
-      moved[i] = 1;
-      ++record.moved;
-    }
-    cells = surface_voronoi(mesh, solver, points, scratch);
-    const NeighbourLists after = neighbour_lists(mesh, cells, points);
+    record.moved = std::size_t(std::count(moved.begin(), moved.end(), 1));
+    cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
+    summarize(moved, record);
+    record.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    return record;
+  }
+
+  EveningOutcome outcome(std::vector<EveningSweep> sweeps) {
+    return {std::move(points_), std::move(sweeps), cells_.cover()};
+  }
+
+ private:
+  // Moves particle i to the widest centre of its cavity where that widens
+  // its own gap along the surface and holds the cover; whether it moved.
+  bool try_move(std::uint32_t i, const NeighbourLists& lists, double reach) {
+    SurfaceLocation& p = points_[i];
+    const double before = estimated_gap(p.at, i, lists, points_);
+    if (!std::isfinite(before) || norm(walk_.normal(p.triangle)) == 0) return false;
+    double widest = before;
+    const Vec3 centre = widest_centre(walk_, p, i, lists, points_, kLongestMove * limits_.d_hex, widest);
+    if (widest <= before + limits_.min_gain) return false;
+    const SurfaceLocation there = walk_.walk(p.triangle, centre);
+    if (reach + distance(there.at, p.at) > std::max(limits_.cover, reach)) return false;
+    if (estimated_gap(there.at, i, lists, points_) <= before + limits_.min_gain) return false;
+    // Kept only where it widens the particle's own gap along the surface,
+    // measured: straight lines and the diagram's paths misjudge folds.
+    const double margin = std::max(corner_reach_, corner_offset(mesh_, there));
+    const double was = gap_(p, i, before + kGapMargin * limits_.d_hex, margin, corners_, points_);
+    const double wanted = was + limits_.min_gain;
+    if (gap_(there, i, wanted, margin, corners_, points_) < wanted) return false;
+    corners_.move(i, p.triangle, there.triangle);
+    p = there;
+    corner_reach_ = margin;
+    return true;
+  }
+
+  // The record's spacings over the new diagram, and who to visit next:
+  // those that moved or whose neighbours did (no other can have gained).
+  void summarize(const std::vector<char>& moved, EveningSweep& record) {
+    const NeighbourLists after = neighbour_lists(mesh_, cells_, points_);
     double sum = 0, smallest = std::numeric_limits<double>::infinity();
     std::size_t counted = 0;
-    for (std::uint32_t i = 0; i < points.size(); ++i) {
-      const double gap = estimated_gap(points[i].at, i, after, points);
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
+      visit_[i] = moved[i];
+      for (const Neighbour& k : after.near[i]) visit_[i] = visit_[i] || moved[k.particle];
+      const double gap = estimated_gap(points_[i].at, i, after, points_);
       if (!std::isfinite(gap)) continue;
       sum += gap;
       smallest = std::min(smallest, gap);
       ++counted;
-      visit[i] = moved[i];
-      for (const Neighbour& k : after.near[i]) visit[i] = visit[i] || moved[k.particle];
     }
     record.mean = counted ? sum / double(counted) : 0;
     record.smallest = counted ? smallest : 0;
-    record.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    outcome.sweeps.push_back(record);
+  }
+
+  const SurfaceMesh& mesh_;
+  const GeodesicSolver& solver_;
+  const SurfaceWalk walk_;
+  SurfaceGap gap_;
+  const EveningLimits limits_;
+  std::vector<SurfaceLocation> points_;
+  CornerIndex corners_;
+  std::vector<char> visit_;
+  SolverScratch scratch_;
+  SurfaceVoronoi cells_;
+  double corner_reach_ = 0;  // the largest corner_offset of any particle
+};
+
+}  // namespace
+
+EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
+                        const EveningLimits& limits, bool quiet) {
+  Evening evening(mesh, solver, std::move(points), limits);
+  std::vector<EveningSweep> sweeps;
+  ProgressLine progress("even", limits.max_sweeps, quiet);
+  for (std::size_t sweep = 1; sweep <= limits.max_sweeps; ++sweep) {
+    sweeps.push_back(evening.sweep());
+    const EveningSweep& record = sweeps.back();
     progress.update(sweep, "smallest spacing " + format_number("%.4f", record.smallest / limits.d_hex) + " d_hex, " +
                                std::to_string(record.moved) + " moved");
-    const bool stalled = sweep > 1 && record.mean - last_mean < limits.stall_gain;
-    last_mean = record.mean;
+    const bool stalled = sweeps.size() > 1 && record.mean - sweeps[sweeps.size() - 2].mean < limits.stall_gain;
     if (record.moved == 0 || stalled) break;
   }
   progress.finish();
-  outcome.cover = cells.cover();
-  outcome.points = std::move(points);
-  return outcome;
+  return evening.outcome(std::move(sweeps));
 }
 
 }  // namespace meshparticles
