@@ -39,7 +39,8 @@ void add_run_options(CLI::App& command, RunOptions& options) {
   add_whole_number_option(command, "--relax-rounds", request.relax_rounds, kRelaxRoundRange,
                           "spread: at most this many rounds pushing all particles apart at once, off the vertices, "
                           "after the sweeps (default " + std::to_string(kSpreadRelaxRounds) +
-                              "; 0: the sweeps' vertices)");
+                              "); where that is not kept, an evening step moves them one by one; 0: neither, the "
+                              "sweeps' vertices");
   add_whole_number_option(command, "--iterations", request.max_iterations, kRunIterationRange,
                           "Stop after this many iterations (spread: sweeps), or when nothing moves; 0 writes the "
                           "start and its quality");
