@@ -174,6 +174,13 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   const RunRequest& request = result.plan.request;
   result.working = working;
   const SurfaceMesh& measured = working->mesh;
+  const auto cover_started = std::chrono::steady_clock::now();
+  naming_memory_failures(label, "measuring the result", [&] {
+    result.distance_to_nearest =
+        to_nearest.empty() ? distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions)
+                           : std::move(to_nearest);
+  });
+  result.seconds.quality += seconds_since(cover_started);
   const auto measure_through = [&](const DistancesPlan& store) {
     const auto geodesics_started = std::chrono::steady_clock::now();
     const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
@@ -184,12 +191,6 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
     result.seconds.geodesics += seconds_since(geodesics_started);
     const auto quality_started = std::chrono::steady_clock::now();
     naming_memory_failures(label, "measuring the result", [&] {
-      if (result.distance_to_nearest.empty() || !to_nearest.empty()) {
-        result.distance_to_nearest =
-            to_nearest.empty()
-                ? distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions)
-                : std::move(to_nearest);
-      }
       result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
                                        result.distance_to_nearest, request.quiet);
     });
@@ -199,7 +200,6 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
       // The balls are solved inside the quality step: count them there, not twice.
     }
   };
-  result.distance_to_nearest.clear();
   measure_through(result.plan.distances);
   // A particle with no other within the default balls (a few particles on
   // a small or open surface): the balls of kSpreadWideQualityCutoff.
@@ -220,7 +220,8 @@ double largest_finite(const std::vector<float>& values) {
 }
 
 // spread's evening step (particles/local_farthest_points) from the
-// particles on the vertices `positions` of `working`: each moves off the
+// particles on the vertices of `working` (result.outcome.positions;
+// `solver` is built for that mesh): each moves off the
 // vertices to the centre of the largest empty circle of its neighbours on
 // the surface where that widens its own gap, measured along the surface,
 // and keeps the covering radius within `cover_limit`. The points it ends
