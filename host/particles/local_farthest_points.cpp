@@ -229,7 +229,7 @@ class Evening {
           const EveningLimits& limits)
       : mesh_(mesh), solver_(solver), walk_(mesh), gap_(mesh, solver), limits_(limits), points_(std::move(points)),
         corners_(mesh, points_), visit_(points_.size(), 1) {
-    cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
+    find_neighbours();
   }
 
   // One sweep over the particles to visit; its record.
@@ -237,7 +237,6 @@ class Evening {
     const auto started = std::chrono::steady_clock::now();
     EveningSweep record;
     record.cover = cells_.cover();
-    const NeighbourLists lists = neighbour_lists(mesh_, cells_, points_);
     // A move of length m leaves the mover's old region within its reach
     // plus m of it: the covering radius stays within the limit when that does.
     const std::vector<double> reach = region_reach(cells_, points_.size());
@@ -245,10 +244,10 @@ class Evening {
     for (const SurfaceLocation& p : points_) corner_reach_ = std::max(corner_reach_, corner_offset(mesh_, p));
     std::vector<char> moved(points_.size(), 0);
     for (std::uint32_t i = 0; i < points_.size(); ++i) {
-      if (visit_[i] && try_move(i, lists, reach[i])) moved[i] = 1;
+      if (visit_[i] && try_move(i, lists_, reach[i])) moved[i] = 1;
     }
     record.moved = std::size_t(std::count(moved.begin(), moved.end(), 1));
-    cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
+    find_neighbours();
     summarize(moved, record);
     record.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     return record;
@@ -283,10 +282,16 @@ class Evening {
     return true;
   }
 
+  // The diagram of the particles where they are, and their neighbours in it.
+  void find_neighbours() {
+    cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
+    lists_ = neighbour_lists(mesh_, cells_, points_);
+  }
+
   // The record's spacings over the new diagram, and who to visit next:
   // those that moved or whose neighbours did (no other can have gained).
   void summarize(const std::vector<char>& moved, EveningSweep& record) {
-    const NeighbourLists after = neighbour_lists(mesh_, cells_, points_);
+    const NeighbourLists& after = lists_;
     double sum = 0, smallest = std::numeric_limits<double>::infinity();
     std::size_t counted = 0;
     for (std::uint32_t i = 0; i < points_.size(); ++i) {
@@ -312,6 +317,7 @@ class Evening {
   std::vector<char> visit_;
   SolverScratch scratch_;
   SurfaceVoronoi cells_;
+  NeighbourLists lists_;  // of cells_
   double corner_reach_ = 0;  // the largest corner_offset of any particle
 };
 
