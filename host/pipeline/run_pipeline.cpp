@@ -233,9 +233,9 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
   const SurfaceWalk walk(surface);
   std::vector<SurfaceLocation> from;
   for (const VertexId v : result.outcome.positions) {
-    SurfaceLocation location;
-    if (!walk.first_triangle(v, location.triangle)) return;  // a particle in no triangle: none moves
-    from.push_back(walk.walk(location.triangle, surface.positions()[v]));
+    const std::optional<SurfaceLocation> location = walk.at_vertex(v);
+    if (!location) return;  // a particle in no triangle: none moves
+    from.push_back(*location);
   }
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadMinGain * d_hex, kSpreadStallGain * d_hex,
