@@ -181,6 +181,14 @@ void GeodesicSolver::lower_nearest_from(std::span<const VertexId> rim, std::span
   keep_nearer(nearest, scratch, lowered, &lowered_sources);
 }
 
+double largest_finite(std::span<const float> distances) {
+  double largest = 0;
+  for (const float d : distances) {
+    if (std::isfinite(d)) largest = std::max(largest, double(d));
+  }
+  return largest;
+}
+
 std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {
   if (method == GeodesicMethod::dijkstra) return std::make_unique<EdgeDijkstra>(mesh);
   if (method == GeodesicMethod::fast_iterative) return std::make_unique<FastIterativeMethod>(mesh);

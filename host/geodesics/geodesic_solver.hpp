@@ -118,6 +118,10 @@ class GeodesicSolver {
   std::size_t vertex_count_;
 };
 
+// The largest finite value of a distance field (to the nearest of some
+// sources): its covering radius, components without a source left out.
+double largest_finite(std::span<const float> distances);
+
 // |v - w| for every one-ring entry, in the order of mesh.ring_neighbors():
 // the edge updates both solvers make.
 std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh);

@@ -5,13 +5,7 @@
 
 namespace meshparticles {
 
-double SurfaceVoronoi::cover() const {
-  double largest = 0;
-  for (const float d : distance) {
-    if (std::isfinite(d)) largest = std::max(largest, double(d));
-  }
-  return largest;
-}
+double SurfaceVoronoi::cover() const { return largest_finite(distance); }
 
 std::vector<SurfacePath> SurfaceVoronoi::neighbour_paths(const SurfaceMesh& mesh) const {
   std::vector<SurfacePath> paths;

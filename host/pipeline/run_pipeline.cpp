@@ -211,14 +211,6 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   }
 }
 
-double largest_finite(const std::vector<float>& values) {
-  double largest = 0;
-  for (const float v : values) {
-    if (std::isfinite(v)) largest = std::max(largest, double(v));
-  }
-  return largest;
-}
-
 // spread's evening step (particles/local_farthest_points) from the
 // particles on the vertices of `working` (result.outcome.positions;
 // `solver` is built for that mesh): each moves off the
