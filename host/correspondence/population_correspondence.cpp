@@ -15,6 +15,7 @@
 #include "correspondence/template_deformation.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
+#include "pipeline/run_pipeline.hpp"
 #include "reports/particle_locations.hpp"
 #include "reports/quality_report.hpp"
 
@@ -22,8 +23,10 @@ namespace meshparticles {
 
 namespace {
 
-// The particles measured as `quality` measures a file, on the shape's own
-// surface (refined until they lie on vertices), while its mesh is loaded.
+// The particles measured as `run` measures its own (through the balls of
+// kSpreadQualityCutoff around them, wider where a particle is alone there),
+// on the shape's own surface refined until they lie on vertices, while its
+// mesh is loaded. A shape's figures and its own run's are then the same measure.
 DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMesh& mesh, const PointSet& particles,
                              unsigned threads) {
   PointSetsRequest request;
@@ -35,6 +38,11 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
   request.geodesics.quiet = true;  // the stage's progress line counts the shapes
   request.geodesics.threads = threads;
   request.geodesics.cache_directory.reset();
+  request.distances.kind = StoreKind::local;
+  request.distances.cutoff = kSpreadQualityCutoff;
+  DistributionQuality quality = measure_point_sets(mesh, request).sets.front().quality;
+  if (quality.alone == 0) return quality;
+  request.distances.cutoff = kSpreadWideQualityCutoff;
   return measure_point_sets(mesh, request).sets.front().quality;
 }
 
