@@ -368,15 +368,20 @@ add_test(NAME cli.correspond_population COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/corr
                                                 $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/scripts
                                                 ${CMAKE_CURRENT_BINARY_DIR}/correspond_population)
 set_tests_properties(cli.correspond_population PROPERTIES LABELS fast TIMEOUT 300)
-# correspond killed at each stage and run again, and (with MPI) shared among
-# ranks: the outputs of one uninterrupted process, byte for byte.
+# correspond shared among MPI ranks: the outputs of one process, byte for byte.
 function(correspond_share_test mode)
   add_test(NAME cli.correspond_${mode}
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_share.sh ${mode} $<TARGET_FILE:meshparticles>
                    ${CMAKE_CURRENT_BINARY_DIR}/correspond_${mode} ${ARGN})
   set_tests_properties(cli.correspond_${mode} PROPERTIES LABELS slow PROCESSORS 2 TIMEOUT 600)
 endfunction()
-correspond_share_test(resume)
+# correspond killed at every write, its checkpoint damaged, a second run into its --out.
+add_library(kill_at_rename_shim SHARED kill_at_rename_shim.cpp)
+target_link_libraries(kill_at_rename_shim PRIVATE ${CMAKE_DL_LIBS})
+add_test(NAME cli.correspond_checkpoint
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_checkpoint.sh $<TARGET_FILE:meshparticles>
+                 $<TARGET_FILE:kill_at_rename_shim> ${CMAKE_CURRENT_BINARY_DIR}/correspond_checkpoint)
+set_tests_properties(cli.correspond_checkpoint PROPERTIES LABELS slow TIMEOUT 900)
 if(MPI_CXX_FOUND)
   correspond_share_test(mpi ${MPIEXEC_EXECUTABLE})
 else()

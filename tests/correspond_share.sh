@@ -2,12 +2,8 @@
 # correspond_share.sh MODE MESHPARTICLES WORKDIR [MPIEXEC]: `correspond` on
 # a small population with a known map (generate --population --family
 # ellipsoid), its outputs compared byte for byte with one run of one
-# process that nothing interrupted:
-#   resume  killed with SIGKILL once each stage's checkpoint is written
-#           (template, a transfer, the iterations, the packing, a measured
-#           shape), then run again: the same outputs, the stages kept not
-#           run again, and no checkpoint left; a leftover checkpoint of other
-#           parameters is not taken
+# process that nothing interrupted (correspond_checkpoint.sh kills one
+# process at every write):
 #   mpi     mpirun -n 2 and -n 3 (more ranks than cores): the same outputs;
 #           then mpirun -n 2 killed after the packing, resumed by one process
 set -euo pipefail
@@ -42,25 +38,6 @@ mpi_root=()
 [ "$(id -u)" -eq 0 ] && mpi_root=(--allow-run-as-root)
 
 case "$mode" in
-resume)
-  for stage in template transfer/002 iterated packed settled/001; do
-    out="$work/killed_${stage//\//_}"
-    kill_when "$out/checkpoint/$stage.json" "$bin" correspond "${options[@]}" --out "$out"
-    [ -e "$out/summary.json" ] && fail "killed after $stage, yet it finished: the kill came too late to test anything"
-    [ -e "$out/checkpoint/$stage.json" ] || fail "no checkpoint $stage was written"
-    "$bin" correspond "${options[@]}" --out "$out" > /dev/null 2> "$out.log"
-    grep -q "resuming from" "$out.log" || fail "after $stage: the run again did not resume"
-    same "$out" "killed after $stage, run again"
-  done
-  # The packing kept: neither the iterations nor the packing run again.
-  if grep -E "^(refine|pack):" "$work/killed_packed.log"; then fail "the resumed run refined again"; fi
-  # A checkpoint of another -n is not taken: the run starts anew.
-  out="$work/other_parameters"
-  kill_when "$out/checkpoint/packed.json" "$bin" correspond "$work/shapes" -n 40 --samples 10 --refine-iterations 60 --out "$out"
-  "$bin" correspond "${options[@]}" --out "$out" > /dev/null 2> "$out.log"
-  grep -q "starting anew" "$out.log" || fail "a checkpoint of other parameters was not cleared"
-  same "$out" "a checkpoint of other parameters, run anew"
-  ;;
 mpi)
   for ranks in 2 3; do
     out="$work/ranks_$ranks"

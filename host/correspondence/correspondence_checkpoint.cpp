@@ -3,27 +3,81 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 
 #include "common/atomic_file.hpp"
+#include "common/temporary_names.hpp"
 #include "common/user_error.hpp"
+#include "reports/file_digest.hpp"
 
 namespace meshparticles {
 
 namespace {
 
 constexpr const char* kRequestEntry = "request";
+constexpr const char* kExtension = ".json";
 
 std::filesystem::path entry_file(const std::filesystem::path& folder, const std::string& name) {
-  return folder / (name + ".json");
+  return folder / (name + kExtension);
 }
 
-std::optional<nlohmann::json> read_entry(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
-  // A file that does not parse was not written by a finished write: as if absent.
-  nlohmann::json value = nlohmann::json::parse(in, nullptr, false);
-  if (value.is_discarded()) return std::nullopt;
-  return value;
+// An entry file's values, or why they cannot be taken: a header line that
+// names `name` and `request` and gives the size and SHA-256 of the values'
+// line, then that line.
+struct EntryCheck {
+  std::optional<nlohmann::json> values;
+  std::string problem;
+};
+
+EntryCheck check_entry(const std::filesystem::path& file, const std::string& name, const std::string& request) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return {std::nullopt, "it cannot be read"};
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::size_t header_end = text.find('\n');
+  if (header_end == std::string::npos) return {std::nullopt, "it has no header line"};
+  const nlohmann::json header = nlohmann::json::parse(text.substr(0, header_end), nullptr, false);
+  const auto field = [&](const char* key) { return header.is_object() ? header.value(key, nlohmann::json()) : nlohmann::json(); };
+  if (field("entry") != name) return {std::nullopt, "its header does not name it " + name};
+  if (field("request") != request) return {std::nullopt, "its header names another request"};
+  const std::string values_line = text.substr(header_end + 1);
+  if (values_line.empty() || values_line.back() != '\n' || values_line.find('\n') != values_line.size() - 1) {
+    return {std::nullopt, "it is not two whole lines"};
+  }
+  const std::string values_text = values_line.substr(0, values_line.size() - 1);
+  if (field("bytes") != values_text.size()) return {std::nullopt, "its values are not the size its header gives"};
+  if (field("sha256") != text_sha256(values_text)) return {std::nullopt, "its values do not match their SHA-256"};
+  nlohmann::json values = nlohmann::json::parse(values_text, nullptr, false);
+  if (values.is_discarded()) return {std::nullopt, "its values are not JSON"};
+  return {std::move(values), ""};
+}
+
+// The first entry under `folder` that cannot be taken, as "transfer/002.json:
+// why"; empty when all can. Temporaries a killed write left (hidden names)
+// are not entries.
+std::string first_damaged_entry(const std::filesystem::path& folder, const std::string& request) {
+  std::error_code error;
+  for (auto it = std::filesystem::recursive_directory_iterator(folder, error);
+       !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
+    const std::filesystem::path relative = it->path().lexically_relative(folder);
+    if (it->path().filename().string().starts_with(".")) continue;
+    if (it->is_directory(error)) continue;
+    std::string name = relative.generic_string();
+    if (!name.ends_with(kExtension)) return name + ": it is not a checkpoint entry";
+    name.resize(name.size() - std::string(kExtension).size());
+    const EntryCheck check = check_entry(it->path(), name, request);
+    if (!check.values) return relative.generic_string() + ": " + check.problem;
+  }
+  if (error) return "the folder cannot be read: " + error.message();
+  return "";
+}
+
+void remove_stale_temporaries_under(const std::filesystem::path& folder) {
+  std::error_code error;
+  remove_stale_temporaries(folder);
+  for (auto it = std::filesystem::recursive_directory_iterator(folder, error);
+       !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
+    if (it->is_directory(error)) remove_stale_temporaries(it->path());
+  }
 }
 
 }  // namespace
@@ -34,35 +88,57 @@ std::string shape_entry(const std::string& stage, std::size_t shape) {
   return stage + name;
 }
 
-CorrespondCheckpoint::CorrespondCheckpoint(const std::filesystem::path& directory, nlohmann::json fingerprint,
+CorrespondCheckpoint::CorrespondCheckpoint(const std::filesystem::path& directory, const nlohmann::json& fingerprint,
                                            bool leader, bool quiet)
-    : folder_(directory / kFolder) {
+    : folder_(directory / kFolder), request_digest_(text_sha256(fingerprint.dump())) {
   if (!leader) return;
-  const std::optional<nlohmann::json> earlier = read_entry(entry_file(folder_, kRequestEntry));
   std::error_code error;
-  if (earlier && *earlier == fingerprint) {
+  if (!std::filesystem::exists(folder_, error)) {
+    write(kRequestEntry, fingerprint);
+    return;
+  }
+  remove_stale_temporaries_under(folder_);
+  const EntryCheck request = check_entry(entry_file(folder_, kRequestEntry), kRequestEntry, request_digest_);
+  std::string why_anew;
+  if (!request.values || *request.values != fingerprint) {
+    why_anew = folder_.string() + " is of other inputs or parameters";
+  } else if (const std::string damaged = first_damaged_entry(folder_, request_digest_); !damaged.empty()) {
+    why_anew = folder_.string() + " is damaged (" + damaged + "): removed it";
+  } else {
     if (!quiet) std::cerr << "meshparticles: resuming from " << folder_.string() << "\n";
     return;
   }
-  if (std::filesystem::exists(folder_, error)) {
-    if (!quiet) {
-      std::cerr << "meshparticles: " << folder_.string()
-                << " is of other inputs or parameters: starting anew\n";
-    }
-    std::filesystem::remove_all(folder_, error);
-    if (error) throw UserError("cannot clear " + folder_.string() + ": " + error.message());
-  }
+  if (!quiet) std::cerr << "meshparticles: " << why_anew << ": starting anew\n";
+  std::filesystem::remove_all(folder_, error);
+  if (error) throw UserError("cannot clear " + folder_.string() + ": " + error.message());
   write(kRequestEntry, fingerprint);
 }
 
-std::optional<nlohmann::json> CorrespondCheckpoint::read(const std::string& name) const {
-  return read_entry(entry_file(folder_, name));
+std::optional<nlohmann::json> CorrespondCheckpoint::read_values(const std::string& name) const {
+  const std::filesystem::path file = entry_file(folder_, name);
+  std::error_code error;
+  if (!std::filesystem::exists(file, error)) return std::nullopt;
+  EntryCheck check = check_entry(file, name, request_digest_);
+  if (!check.values) refuse(name, check.problem);
+  return std::move(check.values);
 }
 
-void CorrespondCheckpoint::write(const std::string& name, const nlohmann::json& value) const {
+void CorrespondCheckpoint::refuse(const std::string& name, const std::string& why) const {
+  std::error_code error;
+  std::filesystem::remove_all(folder_, error);
+  throw UserError(entry_file(folder_, name).string() + " is damaged (" + why + "): removed " + folder_.string() +
+                  "; run the command again to start anew");
+}
+
+void CorrespondCheckpoint::write(const std::string& name, const nlohmann::json& values) const {
   const std::filesystem::path file = entry_file(folder_, name);
   create_directory_for(file.parent_path(), "checkpoint folder");
-  write_file_atomically(file, [&](std::ostream& out) { out << value.dump() << "\n"; });
+  const std::string values_text = values.dump();
+  const nlohmann::json header = {{"entry", name},
+                                 {"request", request_digest_},
+                                 {"bytes", values_text.size()},
+                                 {"sha256", text_sha256(values_text)}};
+  write_file_atomically(file, [&](std::ostream& out) { out << header.dump() << "\n" << values_text << "\n"; });
 }
 
 void CorrespondCheckpoint::remove() const {

@@ -8,8 +8,17 @@
 // Each file is written whole (atomically); a stage counts only once its
 // record is written, after every shape's file of it. The folder is removed
 // once the outputs are in place.
+//
+// A checkpoint is not trusted blindly. Each entry is two lines: a header
+// naming the entry, the request it belongs to and the size and SHA-256 of
+// the second line, the values. The leader checks every entry before the
+// run takes any: one that was edited, cut short or moved makes the whole
+// checkpoint damaged, and the run removes it and starts anew. A decode that
+// finds values no run of this request could have written (an id past the
+// mesh, a row short) refuses in one line, after removing the checkpoint.
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -20,19 +29,39 @@ class CorrespondCheckpoint {
  public:
   // The checkpoint folder of output directory `directory`, for a run that
   // `fingerprint` describes. The leader (the one process, or rank 0) clears
-  // one that another run left, before any other process reads it.
-  CorrespondCheckpoint(const std::filesystem::path& directory, nlohmann::json fingerprint, bool leader, bool quiet);
+  // one that another run left, or that is damaged, before any other process
+  // reads it.
+  CorrespondCheckpoint(const std::filesystem::path& directory, const nlohmann::json& fingerprint, bool leader,
+                       bool quiet);
 
-  // `name` as "template", "transfer/007"; absent when not written yet.
-  std::optional<nlohmann::json> read(const std::string& name) const;
-  void write(const std::string& name, const nlohmann::json& value) const;
+  // `name` as "template", "transfer/007": its values, decoded by `decode`;
+  // absent when not written yet. `decode` throws nlohmann::json's exceptions
+  // or std::invalid_argument on values it cannot take; those refuse the run
+  // (UserError) after the folder is removed.
+  template <typename Decode>
+  auto read(const std::string& name, Decode&& decode) const -> std::optional<decltype(decode(nlohmann::json()))> {
+    const std::optional<nlohmann::json> values = read_values(name);
+    if (!values) return std::nullopt;
+    try {
+      return decode(*values);
+    } catch (const nlohmann::json::exception& error) {
+      refuse(name, error.what());
+    } catch (const std::invalid_argument& error) {
+      refuse(name, error.what());
+    }
+  }
+  void write(const std::string& name, const nlohmann::json& values) const;
   // Once the outputs are written: the folder goes.
   void remove() const;
 
   static constexpr const char* kFolder = "checkpoint";
 
  private:
+  std::optional<nlohmann::json> read_values(const std::string& name) const;
+  [[noreturn]] void refuse(const std::string& name, const std::string& why) const;
+
   std::filesystem::path folder_;
+  std::string request_digest_;
 };
 
 // "transfer/007": a stage's file for shape k.

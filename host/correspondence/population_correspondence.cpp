@@ -1,9 +1,11 @@
 #include "correspondence/population_correspondence.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
@@ -125,16 +127,33 @@ std::vector<TemplateParticle> template_from_message(const std::vector<double>& m
   return particles;
 }
 
+// The template's particles as a checkpoint keeps them, checked against the
+// template's `vertices` before they are used (std::invalid_argument).
+std::vector<TemplateParticle> template_from_checkpoint(const nlohmann::json& kept, std::size_t vertices,
+                                                       DistributionQuality& quality) {
+  const std::vector<double> message = kept.at("particles").get<std::vector<double>>();
+  if (message.empty() || message.size() % 6 != 0) {
+    throw std::invalid_argument(std::to_string(message.size()) + " numbers, not 6 per particle");
+  }
+  for (std::size_t i = 0; i < message.size(); ++i) {
+    const double value = message[i];
+    const bool corner = i % 6 < 3;
+    const bool valid = corner ? value >= 0 && value < double(vertices) && value == std::floor(value) : std::isfinite(value);
+    if (!valid) throw std::invalid_argument((corner ? "vertex " : "weight ") + nlohmann::json(value).dump());
+  }
+  quality = quality_from_json(kept.at("quality"), message.size() / 6);
+  return template_from_message(message);
+}
+
 // The template's run (or the checkpoint's), on the leader: its particles as
 // the template's vertices' weights, and its quality.
 std::vector<TemplateParticle> sample_template(const SurfaceMesh& template_mesh, const CorrespondRequest& request,
                                               const CorrespondCheckpoint* checkpoint, DistributionQuality& quality) {
   if (checkpoint) {
-    if (const std::optional<nlohmann::json> kept = checkpoint->read("template")) {
-      const std::vector<double> message = kept->at("particles").get<std::vector<double>>();
-      quality = quality_from_json(kept->at("quality"), message.size() / 6);
-      return template_from_message(message);
-    }
+    const auto kept = checkpoint->read("template", [&](const nlohmann::json& values) {
+      return template_from_checkpoint(values, template_mesh.vertex_count(), quality);
+    });
+    if (kept) return *kept;
   }
   RunRequest run = request.run;
   run.mesh_label = request.meshes.front().string();
@@ -174,20 +193,23 @@ class SharedProgress {
 
 // A refinement stage ("iterated", "packed"): taken from the checkpoint where
 // an earlier run finished it, else run and kept. Every process takes the same branch.
-void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& particles, ShapeShare& share,
-                      const CorrespondCheckpoint* checkpoint, JointRefinementRecord& record,
+void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& particles, std::size_t particle_count,
+                      ShapeShare& share, const CorrespondCheckpoint* checkpoint, JointRefinementRecord& record,
                       const std::function<void()>& run) {
-  std::optional<nlohmann::json> kept = checkpoint ? checkpoint->read(stage) : std::nullopt;
+  const auto kept = checkpoint ? checkpoint->read(stage, refinement_from_json) : std::nullopt;
   if (kept) {
     for (const std::size_t k : share.owned()) {
-      const std::optional<nlohmann::json> shape = checkpoint->read(shape_entry(stage, k));
+      const SurfaceMesh& mesh = *particles[k].mesh;
+      auto shape = checkpoint->read(shape_entry(stage, k), [&](const nlohmann::json& values) {
+        return locations_from_json(values, mesh.triangle_count(), particle_count);
+      });
       if (!shape) {
         throw UserError("checkpoint stage " + stage + " lacks shape " + std::to_string(k) + ": remove " +
                         CorrespondCheckpoint::kFolder + "/ and run again");
       }
-      particles[k].at = locations_from_json(*shape);
+      particles[k].at = std::move(*shape);
     }
-    record = refinement_from_json(*kept);
+    record = *kept;
     return;
   }
   run();
@@ -236,13 +258,17 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   SharedProgress transferring("correspond", owned.size(), request.quiet);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
     if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], request.quiet, {}));
-    const std::optional<nlohmann::json> kept = checkpoint ? checkpoint->read(shape_entry("transfer", k)) : std::nullopt;
+    const SurfaceMesh& mesh = *meshes[k];
+    const auto kept = !checkpoint ? std::nullopt : checkpoint->read(shape_entry("transfer", k), [&](const nlohmann::json& values) {
+      return std::pair(alignment_from_json(values.at("alignment")),
+                       locations_from_json(values.at("locations"), mesh.triangle_count(), particle_count));
+    });
     if (kept) {
       ShapeCorrespondence& shape = population.shapes[k];
       shape.mesh = request.meshes[k];
-      shape.vertices = meshes[k]->vertex_count();
-      shape.alignment = alignment_from_json(kept->at("alignment"));
-      particles[k] = {&*meshes[k], locations_from_json(kept->at("locations"))};
+      shape.vertices = mesh.vertex_count();
+      shape.alignment = kept->first;
+      particles[k] = {&mesh, kept->second};
     } else {
       population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, template_frame,
                                       template_particles, particles[k]);
@@ -255,10 +281,10 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   });
   transferring.finish();
 
-  refinement_stage("iterated", particles, share, checkpoint, population.refinement, [&] {
+  refinement_stage("iterated", particles, particle_count, share, checkpoint, population.refinement, [&] {
     iterate_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
   });
-  refinement_stage("packed", particles, share, checkpoint, population.refinement, [&] {
+  refinement_stage("packed", particles, particle_count, share, checkpoint, population.refinement, [&] {
     pack_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
   });
 
@@ -267,7 +293,10 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   const unsigned measure_threads = std::max(1u, share.threads() / unsigned(std::max<std::size_t>(owned.size(), 1)));
   std::vector<std::string> results(count);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
-    const std::optional<nlohmann::json> kept = checkpoint ? checkpoint->read(shape_entry("settled", k)) : std::nullopt;
+    const auto kept = !checkpoint ? std::nullopt : checkpoint->read(shape_entry("settled", k), [&](const nlohmann::json& values) {
+      check_shape_json(values, meshes[k]->vertex_count(), particle_count);
+      return values;
+    });
     if (kept) {
       results[k] = kept->dump();
     } else {

@@ -1,8 +1,36 @@
 #include "correspondence/shape_records.hpp"
 
+#include <cmath>
+#include <stdexcept>
+
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {
+
+namespace {
+
+// `value` as an index below `count`, read without wrapping (nlohmann's
+// get<std::uint32_t> would take 2^32 as 0 and -5 as 4294967291).
+std::size_t index_below(const nlohmann::json& value, std::size_t count, const char* what) {
+  if (!value.is_number_unsigned() || value.get<std::uint64_t>() >= count) {
+    throw std::invalid_argument(std::string(what) + " " + value.dump() + " of " + std::to_string(count));
+  }
+  return value.get<std::size_t>();
+}
+
+double finite_number(const nlohmann::json& value, const char* what) {
+  const double number = value.get<double>();
+  if (!std::isfinite(number)) throw std::invalid_argument(std::string(what) + " " + value.dump());
+  return number;
+}
+
+void check_rows(const nlohmann::json& rows, std::size_t particles) {
+  if (!rows.is_array() || rows.size() != particles) {
+    throw std::invalid_argument(std::to_string(rows.size()) + " rows for " + std::to_string(particles) + " particles");
+  }
+}
+
+}  // namespace
 
 nlohmann::json locations_json(const std::vector<SurfaceLocation>& locations) {
   nlohmann::json rows = nlohmann::json::array();
@@ -12,13 +40,16 @@ nlohmann::json locations_json(const std::vector<SurfaceLocation>& locations) {
   return rows;
 }
 
-std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json) {
+std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json, std::size_t triangles,
+                                                 std::size_t particles) {
+  check_rows(json, particles);
   std::vector<SurfaceLocation> locations;
   for (const nlohmann::json& row : json) {
     SurfaceLocation at;
-    at.triangle = row.at(0).get<std::uint32_t>();
-    for (std::size_t k = 0; k < 3; ++k) at.weights[k] = row.at(1 + k).get<double>();
-    at.at = {row.at(4).get<double>(), row.at(5).get<double>(), row.at(6).get<double>()};
+    at.triangle = std::uint32_t(index_below(row.at(0), triangles, "triangle"));
+    for (std::size_t k = 0; k < 3; ++k) at.weights[k] = finite_number(row.at(1 + k), "weight");
+    at.at = {finite_number(row.at(4), "coordinate"), finite_number(row.at(5), "coordinate"),
+             finite_number(row.at(6), "coordinate")};
     locations.push_back(at);
   }
   return locations;
@@ -84,6 +115,20 @@ ShapeCorrespondence shape_from_json(const nlohmann::json& json) {
   }
   shape.quality = quality_from_json(json.at("quality"), rows.size());
   return shape;
+}
+
+void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::size_t particles) {
+  if (json.at("vertices") != vertices) {
+    throw std::invalid_argument("a mesh of " + json.at("vertices").dump() + " vertices, not " + std::to_string(vertices));
+  }
+  const nlohmann::json& rows = json.at("locations");
+  check_rows(rows, particles);
+  for (const nlohmann::json& row : rows) {
+    for (std::size_t k = 0; k < 3; ++k) index_below(row.at(k), vertices, "vertex");
+    index_below(row.at(6), vertices, "vertex");
+    for (const std::size_t k : {3, 4, 5}) finite_number(row.at(k), "weight");
+    for (const std::size_t k : {7, 8, 9}) finite_number(row.at(k), "coordinate");
+  }
 }
 
 nlohmann::json refinement_json(const JointRefinementRecord& record) {

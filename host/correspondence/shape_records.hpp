@@ -3,6 +3,12 @@
 // the others under mpirun, and what a checkpoint keeps for a resume. Every
 // double reads back as it was (nlohmann::json writes the shortest text that
 // does), so a result rebuilt from them is the same to the bit.
+//
+// What a checkpoint gives back is checked before it is used: the readers
+// below that take a mesh's sizes throw std::invalid_argument naming the first
+// value no run on that mesh could have written (an id past its end, a row
+// short, a weight that is not a finite number), and nlohmann::json's
+// exceptions on a missing or mistyped field.
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -13,7 +19,9 @@
 namespace meshparticles {
 
 nlohmann::json locations_json(const std::vector<SurfaceLocation>& locations);
-std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json);
+// `particles` locations on a mesh of `triangles` triangles.
+std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json, std::size_t triangles,
+                                                 std::size_t particles);
 
 nlohmann::json alignment_json(const MeshAlignment& alignment);
 MeshAlignment alignment_from_json(const nlohmann::json& json);
@@ -21,6 +29,8 @@ MeshAlignment alignment_from_json(const nlohmann::json& json);
 // Everything a ShapeCorrespondence holds.
 nlohmann::json shape_json(const ShapeCorrespondence& shape);
 ShapeCorrespondence shape_from_json(const nlohmann::json& json);
+// Throws unless `json` is a shape of `particles` particles on a mesh of `vertices` vertices.
+void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::size_t particles);
 
 nlohmann::json refinement_json(const JointRefinementRecord& record);
 JointRefinementRecord refinement_from_json(const nlohmann::json& json);

@@ -1,0 +1,149 @@
+#!/usr/bin/env bash
+# correspond_checkpoint.sh MESHPARTICLES SHIM WORKDIR: `correspond`'s
+# checkpoint and outputs against kills, damage and a second run, on a small
+# population (generate --population --family ellipsoid). SHIM is
+# tests/kill_at_rename_shim.cpp's library: it kills (or stops) the run at
+# the rename that completes a chosen file, before or after it.
+#   kills    killed as each checkpoint entry and each output is written,
+#            before and after its rename, then run again: the outputs of one
+#            run that nothing interrupted, byte for byte, and no checkpoint left
+#   damage   a checkpoint edited, cut short, moved or of another request: the
+#            run says it is damaged and starts anew; values that pass the
+#            digest yet no run could have written (an id past the mesh, a row
+#            short): one line, exit 2, the checkpoint removed; never a crash
+set -euo pipefail
+bin=$1 shim=$2 work=$3
+fail() { echo "FAIL: $*"; exit 1; }
+rm -rf "$work" && mkdir -p "$work"
+work=$(cd "$work" && pwd)
+"$bin" generate --population 5 --family ellipsoid --vertices 900 --seed 3 --out-dir "$work/shapes" 2> /dev/null
+options=("$work/shapes" -n 48 --samples 10 --refine-iterations 60)
+"$bin" correspond "${options[@]}" --out "$work/reference" > /dev/null 2> "$work/reference.log"
+[ -d "$work/reference/checkpoint" ] && fail "a finished run left its checkpoint"
+
+same() {  # same OUT WHAT: OUT's outputs are the reference's
+  diff -r "$work/reference" "$1" > "$work/diff.txt" || { head -5 "$work/diff.txt"; fail "$2: outputs differ from one uninterrupted run"; }
+  [ -d "$1/checkpoint" ] && fail "$2: the checkpoint was left"
+  echo "ok: $2"
+}
+# killed_at SUFFIX WHEN OUT: the run into OUT killed at the rename onto SUFFIX.
+# (Through a second bash, whose note of the kill goes to the log.)
+killed_at() {
+  local status=0
+  KILL_AT_RENAME="$1" KILL_AT_RENAME_WHEN="$2" LD_PRELOAD="$shim" \
+    bash -c '"$@"; exit $?' _ "$bin" correspond "${options[@]}" --out "$3" > /dev/null 2> "$3.killed.log" || status=$?
+  [ "$status" -eq 137 ] || fail "killed at $1 ($2): exit $status, not SIGKILL: the rename never came"
+}
+
+# --- kills: every checkpoint entry and every output, before and after its rename
+for target in checkpoint/request.json checkpoint/template.json checkpoint/transfer/002.json \
+  checkpoint/iterated/001.json checkpoint/iterated.json checkpoint/packed/003.json checkpoint/packed.json \
+  checkpoint/settled/001.json /shapes /model /summary.json; do
+  for when in before after; do
+    out="$work/killed_$(echo "$target" | tr -c 'a-z0-9\n' _)_$when"
+    killed_at "$target" "$when" "$out"
+    "$bin" correspond "${options[@]}" --out "$out" > /dev/null 2> "$out.log" || { cat "$out.log"; fail "run again after $target ($when) failed"; }
+    same "$out" "killed $when $target, run again"
+  done
+done
+# Stages kept are not run again: after the packing's record, no refinement.
+grep -q "resuming from" "$work/killed_checkpoint_packed_json_after.log" || fail "the run again did not resume"
+if grep -E "^(refine|pack):" "$work/killed_checkpoint_packed_json_after.log"; then fail "the resumed run refined again"; fi
+
+# --- damage: a whole checkpoint (killed as the outputs begin), then changed
+killed="$work/killed_whole"
+killed_at /shapes before "$killed"
+# damaged NAME EDIT...: a copy of it with EDIT (a python statement on `values`,
+# the entry's values, or `lines`, its two lines of text) done to entry NAME;
+# with FORGE=1 the header's size and SHA-256 are made to match the edit.
+damaged() {
+  local name=$1 edit=$2 out="$work/damaged"
+  rm -rf "$out" && cp -r "$killed" "$out"
+  FORGE=${FORGE:-0} /usr/bin/python3 - "$out/checkpoint/$name" "$edit" <<'PY'
+import hashlib, json, os, sys
+path, edit = sys.argv[1], sys.argv[2]
+lines = open(path).read().split("\n")[:2]
+values = json.loads(lines[1])
+if edit != "pass":
+    exec(edit)
+    if "lines" not in edit:
+        lines[1] = values if isinstance(values, str) else json.dumps(values, separators=(",", ":"))
+if os.environ["FORGE"] == "1":
+    header = json.loads(lines[0])
+    header["bytes"] = len(lines[1].encode())
+    header["sha256"] = hashlib.sha256(lines[1].encode()).hexdigest()
+    lines[0] = json.dumps(header, separators=(",", ":"))
+open(path, "w").write("\n".join(lines) + "\n")
+PY
+}
+# Starts anew: says why, and is stopped once the template is written again.
+anew() {  # anew WHAT
+  local out="$work/damaged" status=0
+  KILL_AT_RENAME=checkpoint/template.json LD_PRELOAD="$shim" \
+    bash -c '"$@"; exit $?' _ "$bin" correspond "${options[@]}" --out "$out" > /dev/null 2> "$out.log" || status=$?
+  grep -q "is damaged (.*): removed it: starting anew" "$out.log" || { cat "$out.log"; fail "$1: not found damaged"; }
+  [ "$status" -eq 137 ] || { cat "$out.log"; fail "$1: it did not start anew (exit $status)"; }
+  echo "ok: $1: $(grep -o 'damaged (.*)' "$out.log")"
+}
+damaged packed/001.json 'values[5][0] = 99999999'
+anew "a triangle id edited"
+damaged template.json 'values["particles"][0] = -5'
+anew "a template corner edited"
+damaged packed/001.json 'values = values[:-1]'
+anew "a row cut"
+damaged packed/001.json 'values = json.dumps(values).replace(",", ",,", 1)'
+anew "a number missing"
+damaged settled/001.json 'values["locations"][3][7] += 1e-9'
+anew "a coordinate edited"
+damaged settled/002.json 'lines[1] = lines[1].replace("1", "2", 1)'
+anew "a digit changed, the size kept"
+damaged iterated.json 'lines[0] = lines[0].replace("\"bytes\":", "\"bytes\":1")'
+anew "a header's size edited"
+damaged transfer/002.json 'lines = [lines[0]]'
+anew "an entry cut short"
+damaged packed.json 'lines = ["", ""]'
+anew "an entry emptied"
+cp "$killed/checkpoint/packed/001.json" "$killed/checkpoint/packed/002.json.moved"
+damaged packed/001.json 'pass'
+mv "$work/damaged/checkpoint/packed/002.json.moved" "$work/damaged/checkpoint/packed/002.json"
+rm "$killed/checkpoint/packed/002.json.moved"
+anew "an entry moved onto another shape's"
+damaged packed/001.json 'pass'
+touch "$work/damaged/checkpoint/notes.txt"
+anew "a file that is no entry"
+# The whole damaged run goes on to the reference's outputs.
+damaged transfer/002.json 'values["alignment"]["scale"] *= 2'
+"$bin" correspond "${options[@]}" --out "$work/damaged" > /dev/null 2> "$work/damaged.log"
+grep -q "is damaged" "$work/damaged.log" || fail "an edited scale was taken"
+same "$work/damaged" "an edited checkpoint, run anew"
+
+# Forged: the digest matches, the values cannot be this run's.
+refused() {  # refused WHAT PATTERN
+  local out="$work/damaged" status=0
+  "$bin" correspond "${options[@]}" -q --out "$out" > /dev/null 2> "$out.log" || status=$?
+  [ "$status" -eq 2 ] || { cat "$out.log"; fail "$1: exit $status, not 2"; }
+  [ "$(wc -l < "$out.log")" -eq 1 ] || { cat "$out.log"; fail "$1: not one line"; }
+  grep -q "is damaged (.*$2.*): removed .*checkpoint; run the command again" "$out.log" || { cat "$out.log"; fail "$1: unclear refusal"; }
+  [ -e "$out/checkpoint" ] && fail "$1: the damaged checkpoint was kept"
+  echo "ok: $1: $(cat "$out.log")"
+}
+FORGE=1 damaged packed/001.json 'values[5][0] = 99999999'
+refused "a forged triangle id" "triangle 99999999 of"
+FORGE=1 damaged packed/001.json 'values[5][0] = 2**32'
+refused "a forged triangle id of 2^32" "triangle 4294967296 of"
+FORGE=1 damaged template.json 'values["particles"][0] = -5'
+refused "a forged template corner" "vertex -5"
+FORGE=1 damaged packed/001.json 'values = values[:-1]'
+refused "a forged row cut" "47 rows for 48 particles"
+FORGE=1 damaged packed/001.json 'values[5] = values[5][:3]'
+refused "a forged number missing" "json.exception"
+FORGE=1 damaged settled/001.json 'values["locations"][2][6] = 5000'
+refused "a forged settled vertex" "vertex 5000 of"
+FORGE=1 damaged transfer/002.json 'del values["alignment"]["rotation"]'
+refused "a forged alignment without rotation" "rotation"
+# A checkpoint of other parameters is not taken.
+rm -rf "$work/other" && cp -r "$killed" "$work/other"
+"$bin" correspond "$work/shapes" -n 40 --samples 10 --refine-iterations 60 --out "$work/other" > /dev/null 2> "$work/other.log"
+grep -q "of other inputs or parameters: starting anew" "$work/other.log" || fail "a checkpoint of other parameters was taken"
+echo "ok: a checkpoint of other parameters, run anew"
+
