@@ -11,6 +11,8 @@
 #            run says it is damaged and starts anew; values that pass the
 #            digest yet no run could have written (an id past the mesh, a row
 #            short): one line, exit 2, the checkpoint removed; never a crash
+#   lock     a second run into the --out of one in progress is refused in one
+#            line; the first ends with its own outputs
 set -euo pipefail
 bin=$1 shim=$2 work=$3
 fail() { echo "FAIL: $*"; exit 1; }
@@ -147,3 +149,19 @@ rm -rf "$work/other" && cp -r "$killed" "$work/other"
 grep -q "of other inputs or parameters: starting anew" "$work/other.log" || fail "a checkpoint of other parameters was taken"
 echo "ok: a checkpoint of other parameters, run anew"
 
+# --- lock: the first run stopped as its template is written, holding --out
+out="$work/locked"
+KILL_AT_RENAME=checkpoint/template.json KILL_AT_RENAME_SIGNAL=STOP LD_PRELOAD="$shim" \
+  "$bin" correspond "${options[@]}" --out "$out" > /dev/null 2> "$out.first.log" &
+first=$!
+until [ "$(ps -o stat= -p "$first" | cut -c1)" = T ]; do
+  kill -0 "$first" 2> /dev/null || fail "the first run ended before it held --out"
+  sleep 0.05
+done
+status=0
+"$bin" correspond "$work/shapes" -n 40 --samples 10 --out "$out" > /dev/null 2> "$out.second.log" || status=$?
+kill -CONT "$first"
+wait "$first" || fail "the first run failed after the second was refused"
+[ "$status" -eq 2 ] || { cat "$out.second.log"; fail "a second run into a busy --out: exit $status, not 2"; }
+grep -q "is in use by another correspond" "$out.second.log" || { cat "$out.second.log"; fail "unclear refusal of a busy --out"; }
+same "$out" "a second run into a busy --out refused; the first's outputs are its own"

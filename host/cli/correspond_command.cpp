@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "batch/batch_inputs.hpp"
@@ -13,6 +14,7 @@
 #include "batch/launch_environment.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
+#include "common/directory_lock.hpp"
 #include "common/user_error.hpp"
 #include "common/version.hpp"
 #include "correspondence/correspondence_checkpoint.hpp"
@@ -70,7 +72,12 @@ void write_results(const CorrespondOptions& options, const std::vector<std::stri
 // The population's particles, on every process of `share`; the leader writes the outputs.
 void correspond_shared(const CorrespondOptions& options, const std::vector<std::string>& names,
                        CorrespondRequest request, ShapeShare& share) {
-  if (share.leads()) prepare_correspondence_directory(options.out, names);  // before the work
+  // One run at a time in --out; then, before the work, the checks that it can take the outputs.
+  std::optional<DirectoryLock> lock;
+  if (share.leads()) {
+    lock.emplace(options.out, "correspond");
+    prepare_correspondence_directory(options.out, names);
+  }
   request.run.particles = options.particles;
   request.run.seed = options.seed;
   request.quiet = options.quiet || !share.leads();
