@@ -51,6 +51,7 @@ assert (renumbered == template).all(), f"renumbered: {np.count_nonzero(renumbere
 summary = json.load(open(f"{work}/out/summary.json"))
 fits = [shape["fit_rms"] for shape in summary["shapes"]]
 assert max(fits) < 1e-6, fits
+assert summary["warnings"] == [], summary["warnings"]
 print("every particle on its own vertex on both copies; fits", fits)
 PY
 # A run killed while it wrote its outputs leaves hidden temporaries of a
@@ -77,4 +78,13 @@ code=$?
 set -e
 [ "$code" -eq 2 ] && [ "$(grep -c '' <<<"$errors")" -eq 1 ] || fail "the same mesh twice: exit $code: $errors"
 grep -q "got 1; .* is the same file as .*: run once" <<<"$errors" || fail "$errors"
+# A shape of another topology runs, and is said to be one: the torus
+# beside the committed sphere (on stdout's summary too, and in summary.json).
+meshes=$(dirname "$mesh")
+"$bin" correspond "$meshes/sphere.off" "$meshes/torus.off" -n 32 --samples 10 --refine-iterations 0 --out "$work/mixed" \
+  >/dev/null 2>"$work/mixed.log" || fail "a sphere and a torus: $(cat "$work/mixed.log")"
+grep -q "warning: .*torus.off (1 component, genus 1, no boundary) is not of the template's topology (1 component, genus 0, no boundary)" \
+  "$work/mixed.log" || fail "no warning of a torus among spheres: $(cat "$work/mixed.log")"
+/usr/bin/python3 -c 'import json, sys; w = json.load(open(sys.argv[1]))["warnings"]; assert len(w) == 1 and "torus" in w[0], w' \
+  "$work/mixed/summary.json" || fail "summary.json lacks the warning"
 echo "ok"

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_topology.hpp"
 
 namespace meshparticles {
 namespace {
@@ -74,6 +76,36 @@ TEST(CommittedMeshes, PatchIsOpenAndFlat) {
   const SurfaceMesh patch = read_committed("patch.off");
   EXPECT_GT(patch.boundary_vertex_count(), 0u);
   EXPECT_NEAR(patch.area(), 1.0, 1e-9);
+}
+
+TEST(MeshTopology, CommittedMeshesHaveTheirComponentsLoopsAndGenus) {
+  const MeshTopology sphere = mesh_topology(read_committed("sphere.off"));
+  EXPECT_EQ(sphere, (MeshTopology{1, 0, 2, 0}));
+  EXPECT_EQ(describe(sphere), "1 component, genus 0, no boundary");
+  EXPECT_EQ(mesh_topology(read_committed("torus.off")), (MeshTopology{1, 0, 0, 1}));
+  const MeshTopology patch = mesh_topology(read_committed("patch.off"));
+  EXPECT_EQ(patch, (MeshTopology{1, 1, 1, 0}));
+  EXPECT_EQ(describe(patch), "1 component, genus 0, 1 boundary loop");
+  EXPECT_EQ(mesh_topology(generate_mesh("two_pieces")).components, 2u);
+}
+
+TEST(MeshTopology, AnOpenTubeHasTwoBoundaryLoops) {
+  // Eight quads round a cylinder, each as two triangles: two rims, genus 0.
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  for (VertexId k = 0; k < 8; ++k) {
+    const double angle = 2 * std::numbers::pi * k / 8;
+    positions.push_back({std::cos(angle), std::sin(angle), 0});
+    positions.push_back({std::cos(angle), std::sin(angle), 1});
+  }
+  for (VertexId k = 0; k < 8; ++k) {
+    const VertexId a = 2 * k, b = 2 * ((k + 1) % 8);
+    triangles.push_back({a, b, VertexId(b + 1)});
+    triangles.push_back({a, VertexId(b + 1), VertexId(a + 1)});
+  }
+  const MeshTopology tube = mesh_topology(SurfaceMesh(positions, triangles));
+  EXPECT_EQ(tube, (MeshTopology{1, 2, 0, 0}));
+  EXPECT_EQ(describe(tube), "1 component, genus 0, 2 boundary loops");
 }
 
 // Regeneration, byte for byte: tests/command_outputs.sh.

@@ -19,6 +19,7 @@
 #include "common/version.hpp"
 #include "correspondence/correspondence_checkpoint.hpp"
 #include "correspondence/correspondence_outputs.hpp"
+#include "correspondence/shape_records.hpp"
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {
@@ -159,6 +160,7 @@ void write_results(const CorrespondOptions& options, const std::vector<std::stri
                           {"fit_rms", shape.alignment.rms},
                           {"fit_iterations", shape.alignment.iterations},
                           {"fit_from", shape.alignment.from_principal_axes ? "principal axes" : "pose as given"},
+                          {"topology", topology_json(shape.topology)},
                           {"quality", quality_json(shape.quality)}});
   }
   const nlohmann::json summary = {{"version", program_version()},
@@ -170,7 +172,10 @@ void write_results(const CorrespondOptions& options, const std::vector<std::stri
                                                                {"smallest_spacing", refinement.packing_spacing},
                                                                {"correspondence_step", refinement.packing_correspondence_step}}}}},
                                   {"params", params},
-                                  {"template", {{"mesh", names.front()}, {"quality", quality_json(population.template_quality)}}},
+                                  {"template", {{"mesh", names.front()},
+                                                {"topology", topology_json(population.template_topology)},
+                                                {"quality", quality_json(population.template_quality)}}},
+                                  {"warnings", population.warnings},
                                   {"shapes", shape_rows},
                                   {"model", shape_model_summary(outputs)}};
   write_correspondence(options.out, population, outputs, summary);

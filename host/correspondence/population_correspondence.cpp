@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -62,6 +63,7 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   ShapeCorrespondence shape;
   shape.mesh = file;
   shape.vertices = mesh.vertex_count();
+  shape.topology = mesh_topology(mesh);
   shape.alignment = align_to_template(mesh, template_points, template_frame);
   const PointSet world = vertex_points(mesh);
   const PointSet common = shape.alignment.to_common.apply(world);
@@ -220,6 +222,20 @@ void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& par
   if (share.leads()) checkpoint->write(stage, refinement_json(record));
 }
 
+// A shape of another topology than the template's still gets particles,
+// but particle i cannot mean the same place on both (a torus's hole has no
+// match on a sphere), and the model's modes describe the mismatch: said.
+void warn_of_other_topologies(PopulationCorrespondence& population, bool quiet) {
+  for (const ShapeCorrespondence& shape : population.shapes) {
+    if (shape.topology == population.template_topology) continue;
+    population.warnings.push_back(shape.mesh.string() + " (" + describe(shape.topology) +
+                                  ") is not of the template's topology (" + describe(population.template_topology) +
+                                  "): its particles cannot match the template's everywhere, and the model's modes "
+                                  "describe the mismatch");
+    if (!quiet) std::cerr << "meshparticles: warning: " << population.warnings.back() << "\n";
+  }
+}
+
 }  // namespace
 
 PopulationCorrespondence correspond_population(const CorrespondRequest& request) {
@@ -236,6 +252,7 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   std::vector<std::optional<SurfaceMesh>> meshes(count);
   meshes.front().emplace(load_mesh(request.meshes.front(), request.quiet, {}));
   const SurfaceMesh& template_mesh = *meshes.front();
+  population.template_topology = mesh_topology(template_mesh);
 
   // The leader samples the template and tells the others.
   std::vector<TemplateParticle> template_particles;
@@ -267,6 +284,7 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
       ShapeCorrespondence& shape = population.shapes[k];
       shape.mesh = request.meshes[k];
       shape.vertices = mesh.vertex_count();
+      shape.topology = mesh_topology(mesh);
       shape.alignment = kept->first;
       particles[k] = {&mesh, kept->second};
     } else {
@@ -310,6 +328,7 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   measuring.finish();
   share.gather(results);
   for (std::size_t k = 0; k < count; ++k) population.shapes[k] = shape_from_json(nlohmann::json::parse(results[k]));
+  warn_of_other_topologies(population, request.quiet);
   return population;
 }
 

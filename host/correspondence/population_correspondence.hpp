@@ -17,6 +17,7 @@
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/mesh_alignment.hpp"
 #include "correspondence/shape_share.hpp"
+#include "mesh/mesh_topology.hpp"
 #include "quality/distribution_quality.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -41,6 +42,7 @@ struct ShapeCorrespondence {
   std::filesystem::path mesh;
   std::size_t vertices = 0;
   MeshAlignment alignment;
+  MeshTopology topology;                 // components, boundary loops, genus
   std::vector<ShapeLocation> locations;  // per particle: where it lies on this shape
   PointSet particles;                      // their positions, the shape's own coordinates
   DistributionQuality quality;             // how evenly they cover the shape, as `quality` measures a file
@@ -48,6 +50,9 @@ struct ShapeCorrespondence {
 
 struct PopulationCorrespondence {
   DistributionQuality template_quality;  // its own run's (on the leader)
+  MeshTopology template_topology;
+  // One line per shape whose topology is not the template's (on stderr too).
+  std::vector<std::string> warnings;
   std::vector<ShapeCorrespondence> shapes;
   JointRefinementRecord refinement;
 };

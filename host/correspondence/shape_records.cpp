@@ -91,6 +91,7 @@ nlohmann::json shape_json(const ShapeCorrespondence& shape) {
   return {{"mesh", shape.mesh.string()},
           {"vertices", shape.vertices},
           {"alignment", alignment_json(shape.alignment)},
+          {"topology", topology_json(shape.topology)},
           {"locations", locations},
           {"quality", quality_json(shape.quality)}};
 }
@@ -100,6 +101,7 @@ ShapeCorrespondence shape_from_json(const nlohmann::json& json) {
   shape.mesh = json.at("mesh").get<std::string>();
   shape.vertices = json.at("vertices").get<std::size_t>();
   shape.alignment = alignment_from_json(json.at("alignment"));
+  shape.topology = topology_from_json(json.at("topology"));
   const nlohmann::json& rows = json.at("locations");
   shape.particles.resize(Eigen::Index(rows.size()), 3);
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -121,6 +123,7 @@ void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::siz
   if (json.at("vertices") != vertices) {
     throw std::invalid_argument("a mesh of " + json.at("vertices").dump() + " vertices, not " + std::to_string(vertices));
   }
+  topology_from_json(json.at("topology"));
   const nlohmann::json& rows = json.at("locations");
   check_rows(rows, particles);
   for (const nlohmann::json& row : rows) {
@@ -129,6 +132,22 @@ void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::siz
     for (const std::size_t k : {3, 4, 5}) finite_number(row.at(k), "weight");
     for (const std::size_t k : {7, 8, 9}) finite_number(row.at(k), "coordinate");
   }
+}
+
+nlohmann::json topology_json(const MeshTopology& topology) {
+  return {{"components", topology.components},
+          {"boundary_loops", topology.boundary_loops},
+          {"euler_characteristic", topology.euler_characteristic},
+          {"genus", topology.genus ? nlohmann::json(*topology.genus) : nlohmann::json()}};
+}
+
+MeshTopology topology_from_json(const nlohmann::json& json) {
+  MeshTopology topology;
+  topology.components = json.at("components").get<std::size_t>();
+  topology.boundary_loops = json.at("boundary_loops").get<std::size_t>();
+  topology.euler_characteristic = json.at("euler_characteristic").get<long long>();
+  if (!json.at("genus").is_null()) topology.genus = json.at("genus").get<long long>();
+  return topology;
 }
 
 nlohmann::json refinement_json(const JointRefinementRecord& record) {

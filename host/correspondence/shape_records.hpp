@@ -32,6 +32,9 @@ ShapeCorrespondence shape_from_json(const nlohmann::json& json);
 // Throws unless `json` is a shape of `particles` particles on a mesh of `vertices` vertices.
 void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::size_t particles);
 
+nlohmann::json topology_json(const MeshTopology& topology);
+MeshTopology topology_from_json(const nlohmann::json& json);
+
 nlohmann::json refinement_json(const JointRefinementRecord& record);
 JointRefinementRecord refinement_from_json(const nlohmann::json& json);
 
