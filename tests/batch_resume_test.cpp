@@ -55,7 +55,7 @@ class BatchResume : public ::testing::Test {
     request.count = {ParticleCount::Rule::fixed, 4};
     request.run.quiet = true;
     request.quiet = true;
-    plan_ = plan_batch(request);
+    plan_ = plan_batch(request, false);
     ASSERT_EQ(kept_by_a_pass(), (std::map<std::string, bool>{{"edited", false}, {"untouched", false}}));
   }
   void TearDown() override { std::filesystem::remove_all(root_); }

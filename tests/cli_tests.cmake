@@ -297,6 +297,11 @@ function(batch_test mode labels)
   set_tests_properties(cli.batch_${mode} PROPERTIES LABELS "${labels}" PROCESSORS 2)
 endfunction()
 batch_test(broken "fast;device")
+# A second batch into the --out of one in progress (the shim stops the first).
+add_test(NAME cli.batch_busy_output
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/busy_output.sh $<TARGET_FILE:meshparticles> $<TARGET_FILE:kill_at_rename_shim>
+                 ${PROJECT_SOURCE_DIR}/meshes ${CMAKE_CURRENT_BINARY_DIR}/batch_busy_output)
+set_tests_properties(cli.batch_busy_output PROPERTIES LABELS "fast;device" TIMEOUT 120)
 batch_test(resume "slow;device")
 if(MPI_CXX_FOUND)
   batch_test(mpi "slow;device" ${MPIEXEC_EXECUTABLE})

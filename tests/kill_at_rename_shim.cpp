@@ -6,7 +6,8 @@
 // temporary; anything else kills it just after, leaving the new file and
 // nothing written after it. Unlike a kill from outside, it cannot come too
 // early or too late. KILL_AT_RENAME_SIGNAL=STOP stops the process there
-// instead (SIGSTOP), holding what it holds, until it is sent SIGCONT.
+// instead (SIGSTOP), holding what it holds, until it is sent SIGCONT; it
+// stops once, at the first such rename.
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -30,17 +31,21 @@ bool kill_before() {
   return when && strcmp(when, "before") == 0;
 }
 
-int chosen_signal() {
+// The signal, sent once: the target is forgotten (a file rewritten as
+// the work goes on, like batch's summary, does not stop the process again).
+void send_signal() {
   const char* name = getenv("KILL_AT_RENAME_SIGNAL");
-  return name && strcmp(name, "STOP") == 0 ? SIGSTOP : SIGKILL;
+  const int signal = name && strcmp(name, "STOP") == 0 ? SIGSTOP : SIGKILL;
+  unsetenv("KILL_AT_RENAME");
+  raise(signal);
 }
 
 template <typename Rename>
 int renamed(const char* destination, Rename&& rename) {
   const bool target = ends_with_target(destination);
-  if (target && kill_before()) raise(chosen_signal());
+  if (target && kill_before()) send_signal();
   const int result = rename();
-  if (target && !kill_before() && result == 0) raise(chosen_signal());
+  if (target && !kill_before() && result == 0) send_signal();
   return result;
 }
 

@@ -8,7 +8,7 @@
 
 namespace meshparticles {
 
-BatchPlan plan_batch(const BatchRequest& request) {
+BatchPlan plan_batch(const BatchRequest& request, bool lock_out) {
   BatchPlan plan;
   plan.request = request;
   plan.request.run.quiet = true;  // one line per mesh instead of each run's progress lines
@@ -21,6 +21,7 @@ BatchPlan plan_batch(const BatchRequest& request) {
   const std::vector<std::string> names = output_names(meshes);
   for (std::size_t i = 0; i < meshes.size(); ++i) plan.items.push_back({std::move(meshes[i]), names[i]});
   create_directory_for(request.out, "output directory");
+  if (lock_out) plan.out_lock = std::make_shared<const DirectoryLock>(request.out, "batch");
   check_writable_directory(request.out);
   return plan;
 }

@@ -3,11 +3,13 @@
 // folder per mesh and a summary (docs/BATCH.md). plan_batch finds the
 // meshes, names their folders and checks --out before any work.
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "batch/batch_inputs.hpp"
 #include "batch/particle_count.hpp"
+#include "common/directory_lock.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -34,12 +36,17 @@ struct BatchItem {
 struct BatchPlan {
   BatchRequest request;
   std::vector<BatchItem> items;  // in the order of the inputs
+  // --out held for this batch alone while the plan lives (on the process
+  // that writes the summary): two batches into one folder would each
+  // rewrite the summary and leave one that is neither's.
+  std::shared_ptr<const DirectoryLock> out_lock;
 };
 
 // Throws UserError for inputs that name no mesh, a folder or list that
-// cannot be read, and an --out that cannot be written. Prints a note for
-// each mesh given twice unless quiet.
-BatchPlan plan_batch(const BatchRequest& request);
+// cannot be read, and an --out that cannot be written or that another
+// batch holds (when `lock_out`). Prints a note for each mesh given twice
+// unless quiet.
+BatchPlan plan_batch(const BatchRequest& request, bool lock_out);
 
 // The output folder of item `index`.
 std::filesystem::path output_directory(const BatchPlan& plan, std::size_t index);

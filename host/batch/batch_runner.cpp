@@ -37,7 +37,7 @@ int run_batch(const BatchRequest& request) {
     }
   }
 #endif
-  BatchPlan plan = plan_batch(request);
+  BatchPlan plan = plan_batch(request, true);
   share_node(plan.request.run, 0, 1);
   return run_batch_alone(plan);
 }

@@ -290,7 +290,7 @@ std::optional<BatchPlan> plan_on_every_rank(const BatchRequest& request, const M
   try {
     BatchRequest own = request;
     own.quiet = request.quiet || mpi.rank != 0;  // rank 0's notes are enough
-    plan = plan_batch(own);
+    plan = plan_batch(own, mpi.rank == 0);  // rank 0 writes the summary
     plan->request.quiet = request.quiet;          // each rank prints its meshes' warnings
     share_node(plan->request.run, mpi.node_rank, mpi.node_size);
   } catch (...) {
