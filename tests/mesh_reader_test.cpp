@@ -300,6 +300,47 @@ TEST(VtkReader, FilesFromVtkAndMeshioReadAsTheSameMeshAsOff) {
   }
 }
 
+// A tetrahedron as VTK 9.7.2 writes it by default, with a FIELD array of
+// strings (issue 50; tests/data/vtk/make_vtk_files.py): in binary legacy
+// files the strings' lengths take 1, 2 and 4 bytes, and one string is
+// empty and one holds a line break.
+TEST(VtkReader, ReadsPastBinaryStringArraysVtkWrote) {
+  for (const char* name : {"tetrahedron_strings_vtk42_binary.vtk", "tetrahedron_strings_vtk51_binary.vtk"}) {
+    SCOPED_TRACE(name);
+    std::vector<std::string> warnings;
+    const SurfaceMesh mesh = read_mesh(data(std::string("vtk/") + name), warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+    EXPECT_EQ(mesh.vertex_count(), 4u);
+    EXPECT_EQ(mesh.triangle_count(), 4u);
+  }
+}
+
+// Binary strings as vtkDataWriter writes them: each length big-endian in
+// 1, 2, 4 or 8 bytes, as the top two bits of its first byte say.
+TEST(VtkReader, ReadsPastBinaryStringsOfEveryLengthWidth) {
+  const auto vtk = MeshFormat::vtk;
+  const auto file = [](long long count, const std::string& strings) {
+    // A triangle: three big-endian float points, one polygon of int.
+    const std::string points("\0\0\0\0\0\0\0\0\0\0\0\0\x3f\x80\0\0\0\0\0\0\0\0\0\0"
+                             "\0\0\0\0\x3f\x80\0\0\0\0\0\0", 36);
+    const std::string polygon("\0\0\0\x03\0\0\0\0\0\0\0\x01\0\0\0\x02", 16);
+    return "# vtk DataFile Version 4.2\ntitle\nBINARY\nDATASET POLYDATA\nFIELD FieldData 1\nnames 1 " +
+           std::to_string(count) + " string\n" + strings + "\nPOINTS 3 float\n" + points + "\nPOLYGONS 1 4\n" +
+           polygon + "\n";
+  };
+  // "abc" with its length in 8 bytes, "hi" in 1, "" in 2, "xyz" in 4.
+  const std::string widths = std::string("\0\0\0\0\0\0\0\x03" "abc", 11) + "\xc2" "hi" +
+                             std::string("\x80\0", 2) + std::string("\x40\0\0\x03" "xyz", 7);
+  EXPECT_EQ(refusal(file(4, widths), vtk), "accepted");
+  // A string whose bytes hold a line break and a keyword is still only a string.
+  EXPECT_EQ(refusal(file(1, "\xcd" "a\nPOLYGONS 9\n"), vtk), "accepted");
+  EXPECT_REFUSED(file(1, std::string("\x40\0\x10\0" "xyz", 7)), vtk,
+                 "FIELD string 0 of 4096 bytes runs past the end of the file");
+  EXPECT_REFUSED(file(1, "\x3f\xff\xff\xff\xff\xff\xff\xff"), vtk,
+                 "FIELD string 0 of 4611686018427387903 bytes runs past the end of the file");
+  EXPECT_REFUSED(file(1000000, "\xc0"), vtk, "FIELD array of 1000000 strings, more than the");
+}
+
 TEST(VtkReader, RefusesWhatItCannotRead) {
   const auto vtk = MeshFormat::vtk;
   const std::string head = "# vtk DataFile Version 3.0\ntitle\nASCII\nDATASET POLYDATA\n";

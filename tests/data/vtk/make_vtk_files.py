@@ -97,11 +97,21 @@ def write_xml(data, name, mode, compressed, header64, block_size=4096):
 
 
 def write_tetrahedron_files():
-    """A small mesh as VTK writes it by default (issue 50): compressed, each
-    array one block, smaller than VTK's default block size of 32768 bytes."""
+    """A small mesh as VTK writes it by default (issue 50). The compressed
+    .vtp has one block per array, each smaller than VTK's default block size
+    of 32768 bytes; the binary legacy files hold a FIELD array of strings
+    whose lengths take 1, 2 and 4 bytes (5, 70 and 16,400 characters), one
+    string empty and one with a line break."""
     points = np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)], dtype=float)
     data = polydata(points, [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)])
     write_xml(data, "tetrahedron_zlib_one_small_block.vtp", "binary", True, False, block_size=32768)
+    names = vtk.vtkStringArray()
+    names.SetName("names")
+    for text in ["alpha", "", "two words", "v" * 70, "new\nline", "w" * 16400]:
+        names.InsertNextValue(text)
+    data.GetFieldData().AddArray(names)
+    for version in (42, 51):
+        write_legacy(data, f"tetrahedron_strings_vtk{version}_binary.vtk", True, version)
 
 
 def main():
