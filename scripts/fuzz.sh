@@ -22,7 +22,7 @@ CXX_FOR_FUZZ="${CXX_FOR_FUZZ:-$(command -v clang++-14 || command -v clang++ || t
 [ -n "$CXX_FOR_FUZZ" ] || { echo "fuzz: needs clang++ (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
 
 cmake -S "$ROOT" -B "$BUILD" -DMESHPARTICLES_FUZZ=ON -DCMAKE_CXX_COMPILER="$CXX_FOR_FUZZ" >/dev/null
-cmake --build "$BUILD" --parallel 2 -- --no-print-directory >/dev/null
+cmake --build "$BUILD" --parallel "$(nproc)" -- --no-print-directory >/dev/null
 
 shares=0
 for target in "${TARGETS[@]}"; do shares=$((shares + $(cut -d: -f2 <<<"$target"))); done
