@@ -64,10 +64,10 @@ class LegacyWriter {
     return recipe_.tweaked(site, {0, index, of}, actual, related);
   }
 
-  void integers(const std::vector<long long>& values, Kind kind) {
+  void integers(const std::vector<long long>& values, ValueType type) {
     for (const long long value : values) {
       if (binary_) {
-        append_binary(out_, kind, 0, value, true);
+        append_binary(out_, type, 0, value, true);
       } else {
         out_ += std::to_string(value) + " ";
       }
@@ -75,10 +75,10 @@ class LegacyWriter {
     out_ += "\n";
   }
 
-  void reals(const std::vector<double>& values, Kind kind) {
+  void reals(const std::vector<double>& values, ValueType type) {
     for (const double value : values) {
       if (binary_) {
-        append_binary(out_, kind, value, 0, true);
+        append_binary(out_, type, value, 0, true);
       } else {
         out_ += real_text(value) + " ";
       }
@@ -96,7 +96,7 @@ class LegacyWriter {
     const long long n = (long long)mesh_.points.size();
     out_ += "POINTS " + std::to_string(tweaked(Site::point_count, 0, 1, n, 3 * n)) +
             (recipe_.points_double ? " double\n" : " float\n");
-    reals(coordinates(), recipe_.points_double ? Kind::float64 : Kind::float32);
+    reals(coordinates(), recipe_.points_double ? ValueType::float64 : ValueType::float32);
     if (recipe_.metadata) out_ += "METADATA\nCOMPONENT_NAMES\nx\ny\nz\nINFORMATION 0\n\n";
   }
 
@@ -120,14 +120,14 @@ class LegacyWriter {
     const long long size = recipe_.version_5 ? (long long)connectivity.size() : (long long)list.size();
     out_ += keyword + " " + std::to_string(tweaked(Site::cell_count, section, kSections, count, size)) + " " +
             std::to_string(tweaked(Site::cell_list_size, section, kSections, size, count)) + "\n";
-    if (!recipe_.version_5) return integers(list, Kind::int32);
-    const Kind kind = index_kind(recipe_.index_type);
+    if (!recipe_.version_5) return integers(list, ValueType::int32);
+    const ValueType type = index_type_of(recipe_.index_type);
     static constexpr const char* kTypeNames[] = {"int", "vtktypeint64", "unsigned_int", "vtktypeuint64"};
-    const std::string type = kTypeNames[recipe_.index_type % 4];
-    out_ += "OFFSETS " + type + "\n";
-    integers(offsets, kind);
-    out_ += "CONNECTIVITY " + type + "\n";
-    integers(connectivity, kind);
+    const std::string type_name = kTypeNames[recipe_.index_type % 4];
+    out_ += "OFFSETS " + type_name + "\n";
+    integers(offsets, type);
+    out_ += "CONNECTIVITY " + type_name + "\n";
+    integers(connectivity, type);
   }
 
   // UNSTRUCTURED_GRID: every cell in one CELLS section, then their types
@@ -153,7 +153,7 @@ class LegacyWriter {
     for (std::size_t c = 0; c < types.size(); ++c) types[c] = tweaked(Site::cell_type, c, 256, types[c]);
     const long long n = (long long)types.size();
     out_ += "CELL_TYPES " + std::to_string(tweaked(Site::cell_type_count, 0, 1, n, n)) + "\n";
-    integers(types, Kind::int32);
+    integers(types, ValueType::int32);
   }
 
   // FIELD data at the dataset level: a numeric array (with METADATA when
@@ -163,7 +163,7 @@ class LegacyWriter {
     out_ += "FIELD FieldData 2\n";
     out_ += "temperature " + std::to_string(tweaked(Site::component_count, 0, 2, 1)) + " " +
             std::to_string(tweaked(Site::tuple_count, 0, 2, n, 3 * n)) + " float\n";
-    reals(std::vector<double>(std::size_t(n), 1.5), Kind::float32);
+    reals(std::vector<double>(std::size_t(n), 1.5), ValueType::float32);
     if (recipe_.metadata) out_ += "METADATA\nINFORMATION 0\n\n";
     out_ += "names " + std::to_string(tweaked(Site::component_count, 1, 2, 1)) + " " +
             std::to_string(tweaked(Site::tuple_count, 1, 2, strings, strings + 1)) + " string\n";
@@ -192,7 +192,7 @@ class LegacyWriter {
 
   void attributes() {
     out_ += "POINT_DATA " + std::to_string(mesh_.points.size()) + "\nSCALARS height float 1\nLOOKUP_TABLE default\n";
-    reals(std::vector<double>(mesh_.points.size(), 2.0), Kind::float32);
+    reals(std::vector<double>(mesh_.points.size(), 2.0), ValueType::float32);
   }
 
   const Recipe& recipe_;

@@ -8,14 +8,14 @@
 #include <cstring>
 #include <string>
 
+#include "mesh/binary_values.hpp"
+
 namespace meshparticles::fuzzing {
 
-enum class Kind { int32, int64, uint32, uint64, float32, float64 };
-
 // The index types a recipe chooses among (Recipe::index_type).
-inline Kind index_kind(std::uint8_t index_type) {
-  static constexpr Kind kKinds[] = {Kind::int32, Kind::int64, Kind::uint32, Kind::uint64};
-  return kKinds[index_type % 4];
+inline ValueType index_type_of(std::uint8_t index_type) {
+  static constexpr ValueType kTypes[] = {ValueType::int32, ValueType::int64, ValueType::uint32, ValueType::uint64};
+  return kTypes[index_type % 4];
 }
 
 template <typename T>
@@ -26,14 +26,19 @@ void append_raw(std::string& out, T value, bool big_endian) {
   out.append(raw, sizeof(T));
 }
 
-inline void append_binary(std::string& out, Kind kind, double real, long long integer, bool big_endian) {
-  switch (kind) {
-    case Kind::int32: return append_raw(out, std::int32_t(integer), big_endian);
-    case Kind::int64: return append_raw(out, std::int64_t(integer), big_endian);
-    case Kind::uint32: return append_raw(out, std::uint32_t(integer), big_endian);
-    case Kind::uint64: return append_raw(out, std::uint64_t(integer), big_endian);
-    case Kind::float32: return append_raw(out, float(real), big_endian);
-    case Kind::float64: return append_raw(out, real, big_endian);
+// A value of `type`: `real` for the two real types, `integer` for the others.
+inline void append_binary(std::string& out, ValueType type, double real, long long integer, bool big_endian) {
+  switch (type) {
+    case ValueType::int8: return append_raw(out, std::int8_t(integer), big_endian);
+    case ValueType::uint8: return append_raw(out, std::uint8_t(integer), big_endian);
+    case ValueType::int16: return append_raw(out, std::int16_t(integer), big_endian);
+    case ValueType::uint16: return append_raw(out, std::uint16_t(integer), big_endian);
+    case ValueType::int32: return append_raw(out, std::int32_t(integer), big_endian);
+    case ValueType::int64: return append_raw(out, std::int64_t(integer), big_endian);
+    case ValueType::uint32: return append_raw(out, std::uint32_t(integer), big_endian);
+    case ValueType::uint64: return append_raw(out, std::uint64_t(integer), big_endian);
+    case ValueType::float32: return append_raw(out, float(real), big_endian);
+    case ValueType::float64: return append_raw(out, real, big_endian);
   }
 }
 

@@ -126,7 +126,7 @@ class VtpWriter {
     Values out;
     for (const double value : values) {
       out.text += real_text(value) + " ";
-      append_binary(out.bytes, doubles ? Kind::float64 : Kind::float32, value, 0, recipe_.big_endian);
+      append_binary(out.bytes, doubles ? ValueType::float64 : ValueType::float32, value, 0, recipe_.big_endian);
     }
     return out;
   }
@@ -135,7 +135,7 @@ class VtpWriter {
     Values out;
     for (const long long value : values) {
       out.text += std::to_string(value) + " ";
-      append_binary(out.bytes, index_kind(recipe_.index_type), 0, value, recipe_.big_endian);
+      append_binary(out.bytes, index_type_of(recipe_.index_type), 0, value, recipe_.big_endian);
     }
     return out;
   }
