@@ -1,7 +1,8 @@
 # The fuzz build: -DMESHPARTICLES_FUZZ=ON with clang (scripts/fuzz.sh
 # configures it in build-fuzz/). It builds one libFuzzer target per mesh
-# format from the readers, the mesh checks and fast marching, with ASan,
-# UBSan and libstdc++ assertions, and nothing that needs OpenCL or OpenMesh.
+# format, and a structured one for VTK and VTP, from the readers, the mesh
+# checks and fast marching, with ASan, UBSan and libstdc++ assertions, and
+# nothing that needs OpenCL or OpenMesh.
 option(MESHPARTICLES_FUZZ "Build the libFuzzer targets of the mesh readers (clang only) instead of the program" OFF)
 if(MESHPARTICLES_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
@@ -18,11 +19,22 @@ if(MESHPARTICLES_FUZZ)
   target_link_libraries(fuzzed_mesh_input PUBLIC EXPAT::EXPAT ZLIB::ZLIB)
   target_compile_options(fuzzed_mesh_input PUBLIC -g -O1 ${SANITIZERS} -fsanitize=fuzzer-no-link)
   target_link_options(fuzzed_mesh_input PUBLIC ${SANITIZERS})
+  # The finding rules every target shares.
+  add_library(fuzz_checks STATIC fuzz/fuzz_checks.cpp)
+  target_link_libraries(fuzz_checks PUBLIC fuzzed_mesh_input)
   foreach(format off ply obj stl vtk vtp)
     add_executable(fuzz_${format} fuzz/mesh_reader_fuzzer.cpp)
     target_compile_definitions(fuzz_${format} PRIVATE FUZZ_FORMAT=${format})
     target_compile_options(fuzz_${format} PRIVATE -fsanitize=fuzzer)
     target_link_options(fuzz_${format} PRIVATE -fsanitize=fuzzer)
-    target_link_libraries(fuzz_${format} PRIVATE fuzzed_mesh_input)
+    target_link_libraries(fuzz_${format} PRIVATE fuzz_checks)
   endforeach()
+  # Structured: VTK and VTP files written from a recipe the input describes
+  # (fuzz/vtk_recipe.hpp), so mutations reach counts, offsets, pieces and
+  # appended ranges in every encoding.
+  add_executable(fuzz_vtk_structured fuzz/vtk_structured_fuzzer.cpp fuzz/vtk_recipe.cpp fuzz/recipe_file.cpp
+                                     fuzz/legacy_vtk_writer.cpp fuzz/vtp_writer.cpp)
+  target_compile_options(fuzz_vtk_structured PRIVATE -fsanitize=fuzzer)
+  target_link_options(fuzz_vtk_structured PRIVATE -fsanitize=fuzzer)
+  target_link_libraries(fuzz_vtk_structured PRIVATE fuzz_checks)
 endif()

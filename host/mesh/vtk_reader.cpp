@@ -361,7 +361,7 @@ class VtkReader {
       const std::size_t tuples = header_count("the number of tuples");
       if (components != 0 && tuples > SIZE_MAX / components) fail("FIELD array too large");
       const std::string_view type_name = header_word("a data type");
-      if (type_name == "string") {  // as VTK's legacy reader takes them
+      if (type_name == "string" || type_name == "utf8_string") {  // as VTK's legacy reader takes them
         skip_strings(components * tuples);
         continue;
       }
@@ -376,15 +376,43 @@ class VtkReader {
     }
   }
 
-  // A string array's values: in ASCII one per line (escaped, so a line
-  // may be empty), after the rest of the header line. VTK's binary form
-  // (each string led by a length of 1 to 8 bytes) is not read.
+  // A string array's values. ASCII: one per line (escaped, so a line may
+  // be empty), after the rest of the header line. BINARY: each string's
+  // length, then its bytes (binary_string_length).
   void skip_strings(std::size_t count) {
-    if (binary_) fail("a FIELD array of binary strings, which this reader does not read");
-    cursor_.next_line();  // the rest of the header line
-    for (std::size_t i = 0; i < count; ++i) {
-      if (!cursor_.next_line()) fail("file ends inside a FIELD array of strings");
+    if (!binary_) {
+      cursor_.next_line();  // the rest of the header line
+      for (std::size_t i = 0; i < count; ++i) {
+        if (!cursor_.next_line()) fail("file ends inside a FIELD array of strings");
+      }
+      return;
     }
+    if (count > cursor_.remaining()) {  // each string takes a byte at least
+      fail("FIELD array of " + plural(count, "string") + ", more than the " + plural(cursor_.remaining(), "byte") +
+           " after it can hold");
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint64_t length = binary_string_length();
+      if (length > cursor_.remaining() || !cursor_.next_bytes(std::size_t(length))) {
+        fail("FIELD string " + std::to_string(i) + " of " + plural(length, "byte") + " runs past the end of the file");
+      }
+    }
+  }
+
+  // A binary string's length as VTK writes it (IO/Legacy/vtkDataWriter.cxx,
+  // WriteArray, case VTK_STRING) and reads it (vtkDataReader.cxx, ReadArray,
+  // "string"): big-endian in 1, 2, 4 or 8 bytes, as the top two bits of the
+  // first byte say (11, 10, 01, 00); those two bits are not part of it.
+  std::uint64_t binary_string_length() {
+    const auto lead = cursor_.next_bytes(1);
+    if (!lead) fail("file ends inside a FIELD array of strings");
+    const auto first = static_cast<unsigned char>((*lead)[0]);
+    const std::size_t width = std::size_t(1) << (3 - (first >> 6));
+    const auto rest = cursor_.next_bytes(width - 1);
+    if (!rest) fail("file ends inside a FIELD string's length");
+    std::uint64_t length = first & 0x3f;
+    for (const char byte : *rest) length = length << 8 | static_cast<unsigned char>(byte);
+    return length;
   }
 
   // METADATA, then lines of information up to an empty line. A section

@@ -76,7 +76,7 @@ def write_legacy(data, name, binary, version):
     assert writer.Write() == 1
 
 
-def write_xml(data, name, mode, compressed, header64):
+def write_xml(data, name, mode, compressed, header64, block_size=4096):
     writer = vtk.vtkXMLPolyDataWriter()
     writer.SetInputData(data)
     writer.SetFileName(str(HERE / name))
@@ -89,11 +89,29 @@ def write_xml(data, name, mode, compressed, header64):
         writer.SetEncodeAppendedData(mode == "appended_base64")
     if compressed:
         writer.SetCompressorTypeToZLib()
-        writer.SetBlockSize(4096)  # several blocks per array
+        writer.SetBlockSize(block_size)  # 4096: several blocks per array
     else:
         writer.SetCompressorTypeToNone()
     writer.SetHeaderTypeToUInt64() if header64 else writer.SetHeaderTypeToUInt32()
     assert writer.Write() == 1
+
+
+def write_tetrahedron_files():
+    """A small mesh as VTK writes it by default (issue 50). The compressed
+    .vtp has one block per array, each smaller than VTK's default block size
+    of 32768 bytes; the binary legacy files hold a FIELD array of strings
+    whose lengths take 1, 2 and 4 bytes (5, 70 and 16,400 characters), one
+    string empty and one with a line break."""
+    points = np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)], dtype=float)
+    data = polydata(points, [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)])
+    write_xml(data, "tetrahedron_zlib_one_small_block.vtp", "binary", True, False, block_size=32768)
+    names = vtk.vtkStringArray()
+    names.SetName("names")
+    for text in ["alpha", "", "two words", "v" * 70, "new\nline", "w" * 16400]:
+        names.InsertNextValue(text)
+    data.GetFieldData().AddArray(names)
+    for version in (42, 51):
+        write_legacy(data, f"tetrahedron_strings_vtk{version}_binary.vtk", True, version)
 
 
 def main():
@@ -119,6 +137,7 @@ def main():
     ]:
         write_xml(data, f"patch_{name}.vtp", mode, compressed, header64)
     write_xml(strips, "patch_strips_appended_raw.vtp", "appended_raw", False, False)
+    write_tetrahedron_files()
     mesh = meshio.Mesh(points, [("triangle", faces)])
     meshio.write(HERE / "patch_meshio_binary.vtk", mesh, file_format="vtk", binary=True)
     meshio.write(HERE / "patch_meshio_ascii.vtk", mesh, file_format="vtk", binary=False)
