@@ -4,7 +4,7 @@
     scripts/correspondence_error.py POPULATION.json PARTICLES... [--json FILE]
 
 POPULATION.json is what `meshparticles generate --population N --family ellipsoid`
-writes beside its meshes: each shape's parameters and pose. PARTICLES are
+(or radii) writes beside its meshes: each shape's parameters and pose. PARTICLES are
 "x y z" rows in the shapes' own (world) coordinates, row i the same particle
 on every shape: `correspond`'s shapes/NNN_STEM.particles, `batch`'s
 STEM/particles.particles, or any tool's file named after its mesh's stem.
@@ -47,7 +47,7 @@ def parameters(points, shape, population):
     u /= np.linalg.norm(u, axis=1, keepdims=True)
     bump = np.exp(-(1 - u @ np.array(population["bump_direction"])) / population["bump_width"])
     knob = np.exp(-(1 - u @ np.array(population["knob_direction"])) / population["knob_width"])
-    radius = 1 + shape["bump_height"] * bump + population["knob_height"] * knob
+    radius = 1 + shape["bump_height"] * bump + shape["knob_height"] * knob
     on_surface = radius[:, None] * axes * u
     return u, np.linalg.norm(unposed - on_surface, axis=1)
 

@@ -54,6 +54,30 @@ TEST(EllipsoidPopulation, EveryVertexLiesOnItsShapeAtItsParameter) {
   EXPECT_LE(std::abs(shape.elongation), 0.2);
 }
 
+// The radii family: each of a shape's three radii within 20% of 1.25, 1
+// and 0.8, so that their order swaps; the bump and the knob of each shape's
+// own height. Its vertices lie where its parameters say, as above.
+TEST(EllipsoidPopulation, TheRadiiFamilySwapsTheOrderOfItsRadii) {
+  bool swapped = false;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const EllipsoidVariant shape = generate_ellipsoid_variant(seed, 600, EllipsoidFamily::radii);
+    EXPECT_GE(shape.axes.x, 1.0) << seed;
+    EXPECT_LE(shape.axes.x, 1.5) << seed;
+    EXPECT_GE(shape.knob_height, 0.0) << seed;
+    EXPECT_LE(shape.knob_height, 0.3) << seed;
+    swapped = swapped || shape.axes.y < shape.axes.z || shape.axes.x < shape.axes.y;
+    double worst = 0;
+    for (const Vec3& world : shape.mesh.positions()) {
+      const Vec3 unposed = (1 / shape.scale) * unrotate(shape.rotation, world + (-1.0) * shape.translation);
+      const Vec3 u = parameter_of(shape, unposed);
+      const double r = 1 + shape.bump_height * bump_term(kEllipsoidBump, u) + shape.knob_height * bump_term(kEllipsoidKnob, u);
+      worst = std::max(worst, norm(r * Vec3{shape.axes.x * u.x, shape.axes.y * u.y, shape.axes.z * u.z} + (-1.0) * unposed));
+    }
+    EXPECT_LT(worst, 1e-12) << seed;
+  }
+  EXPECT_TRUE(swapped) << "no shape of 8 has its radii in another order";
+}
+
 TEST(EllipsoidPopulation, ShapesAreMeshedEachOnItsOwnAndPosedAtRandom) {
   std::set<std::size_t> sizes;
   std::vector<Vec3> first_vertex_parameters;

@@ -44,6 +44,7 @@ nlohmann::json ellipsoid_truth(const std::string& file, const EllipsoidVariant& 
   return {{"mesh", file},
           {"elongation", shape.elongation},
           {"bump_height", shape.bump_height},
+          {"knob_height", shape.knob_height},
           {"axes", vec_json(shape.axes)},
           {"rotation", {vec_json(shape.rotation[0]), vec_json(shape.rotation[1]), vec_json(shape.rotation[2])}},
           {"scale", shape.scale},
@@ -63,23 +64,23 @@ void write_population(const GenerateOptions& options) {
     if (options.family == "atrium") {
       write_generated(generate_atrium_variant(shape_seeds.next(), vertices), out / name);
     } else {
-      const EllipsoidVariant shape = generate_ellipsoid_variant(shape_seeds.next(), vertices);
+      const EllipsoidFamily family = options.family == "radii" ? EllipsoidFamily::radii : EllipsoidFamily::knob;
+      const EllipsoidVariant shape = generate_ellipsoid_variant(shape_seeds.next(), vertices, family);
       write_generated(shape.mesh, out / name);
       shapes.push_back(ellipsoid_truth(name, shape));
     }
   }
-  if (options.family == "ellipsoid") {
+  if (options.family != "atrium") {
     const nlohmann::json truth = {
-        {"family", "ellipsoid"},
+        {"family", options.family},
         {"parameter", "u = normalize(diag(axes)^-1 x), x = rotation^T (world - translation) / scale"},
         {"surface", "x(u) = (1 + bump_height exp(-(1 - u.bump_direction) / bump_width) + knob_height exp(-(1 - "
-                    "u.knob_direction) / knob_width)) diag(axes) u, "
-                    "axes = (1.5 (1 + elongation), 1, 0.7 / (1 + elongation))"},
+                    "u.knob_direction) / knob_width)) diag(axes) u, each shape with its axes, bump_height and "
+                    "knob_height"},
         {"bump_direction", vec_json(kEllipsoidBump.direction)},
         {"bump_width", kEllipsoidBump.width},
         {"knob_direction", vec_json(kEllipsoidKnob.direction)},
         {"knob_width", kEllipsoidKnob.width},
-        {"knob_height", kEllipsoidKnob.height},
         {"seed", options.seed},
         {"shapes", shapes}};
     write_file_atomically(out / "population.json", [&](std::ostream& stream) { stream << truth.dump(2) << "\n"; });
@@ -124,9 +125,11 @@ void add_generate_command(CLI::App& app) {
                           "Write a population of this many shapes instead, FAMILY_000.off, ..., from --seed");
   generate->add_option("--family", options->family,
                        "With --population: atrium (each with its own size, body and bulges; for batch benchmarks) "
-                       "or ellipsoid (two true modes, each meshed on its own and posed at random, with the true "
-                       "correspondence in population.json; for correspond)")
-      ->check(CLI::IsMember({"atrium", "ellipsoid"}))
+                       "ellipsoid (two true modes, each meshed on its own and posed at random, with the true "
+                       "correspondence in population.json; for correspond) or radii (as ellipsoid, each radius "
+                       "within 20% of 1.25, 1, 0.8 so their order swaps, and a knob of its own height, at times "
+                       "none: shapes whose principal axes cannot pose them)")
+      ->check(CLI::IsMember({"atrium", "ellipsoid", "radii"}))
       ->capture_default_str();
   add_whole_number_option(*generate, "--seed", options->seed, kSeedRange, "Seed of the --population");
   generate->callback([options] { run_generate(*options); });

@@ -417,20 +417,32 @@ Vec3 rotate(const std::array<Vec3, 3>& rows, Vec3 p) { return {dot(rows[0], p), 
 
 }  // namespace
 
-EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vertices) {
+EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vertices, EllipsoidFamily family) {
   SplitMix64 random(seed);
-  const double elongation = 0.2 * (2 * random.uniform() - 1);
-  const double height = 0.35 + 0.25 * (2 * random.uniform() - 1);
-  // Three unequal axes whatever the elongation, and a bump off every plane of
-  // symmetry: no turn or mirror of a shape fits it, so its correspondence is
-  // fixed by its geometry.
-  const Vec3 axes{1.5 * (1 + elongation), 1.0, 0.7 / (1 + elongation)};
+  double elongation = 0, height = 0, knob_height = kEllipsoidKnob.height;
+  Vec3 axes{};
+  if (family == EllipsoidFamily::knob) {
+    elongation = 0.2 * (2 * random.uniform() - 1);
+    height = 0.35 + 0.25 * (2 * random.uniform() - 1);
+    // Three unequal axes whatever the elongation, and a bump off every plane of
+    // symmetry: no turn or mirror of a shape fits it, so its correspondence is
+    // fixed by its geometry.
+    axes = {1.5 * (1 + elongation), 1.0, 0.7 / (1 + elongation)};
+  } else {
+    // Each radius within 20% of 1.25, 1 and 0.8: their order swaps from shape
+    // to shape, so the principal axes' order says nothing. The bump and the
+    // knob each of their own height, the knob at times next to none: a
+    // shape may be all but symmetric.
+    axes = {1.25 * (0.8 + 0.4 * random.uniform()), 0.8 + 0.4 * random.uniform(), 0.8 * (0.8 + 0.4 * random.uniform())};
+    height = 0.1 + 0.5 * random.uniform();
+    knob_height = 0.3 * random.uniform();
+  }
   // Any point maps to the surface point of its parameter, so the mesher's
   // projections keep every vertex on the shape and its parameter exact.
-  const Projection onto_shape = [axes, height](Vec3 p) {
+  const Projection onto_shape = [axes, height, knob_height](Vec3 p) {
     const Vec3 u = normalized({p.x / axes.x, p.y / axes.y, p.z / axes.z});
     const double r = 1 + height * std::exp(-(1 - dot(u, kEllipsoidBump.direction)) / kEllipsoidBump.width) +
-                     kEllipsoidKnob.height * std::exp(-(1 - dot(u, kEllipsoidKnob.direction)) / kEllipsoidKnob.width);
+                     knob_height * std::exp(-(1 - dot(u, kEllipsoidKnob.direction)) / kEllipsoidKnob.width);
     return r * Vec3{axes.x * u.x, axes.y * u.y, axes.z * u.z};
   };
   const int frequency = std::max(2, frequency_for(vertices) + int(random.below(3)) - 1);
@@ -445,7 +457,8 @@ EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vert
   const Vec3 translation{10 * random.uniform() - 5, 10 * random.uniform() - 5, 10 * random.uniform() - 5};
   std::vector<Vec3> posed;
   for (const Vec3& p : unposed.positions()) posed.push_back(scale * rotate(rotation, p) + translation);
-  return {SurfaceMesh(std::move(posed), unposed.triangles()), elongation, height, axes, rotation, scale, translation};
+  return {SurfaceMesh(std::move(posed), unposed.triangles()), elongation, height, knob_height, axes, rotation, scale,
+          translation};
 }
 
 }  // namespace meshparticles
