@@ -160,6 +160,7 @@ void write_results(const CorrespondOptions& options, const std::vector<std::stri
                           {"fit_rms", shape.alignment.rms},
                           {"fit_iterations", shape.alignment.iterations},
                           {"fit_from", shape.alignment.from_principal_axes ? "principal axes" : "pose as given"},
+                          {"fit_runner_up", runner_up_json(shape.alignment.runner_up)},
                           {"topology", topology_json(shape.topology)},
                           {"quality", quality_json(shape.quality)}});
   }

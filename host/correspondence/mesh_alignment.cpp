@@ -1,8 +1,10 @@
 #include "correspondence/mesh_alignment.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "correspondence/point_tree.hpp"
 
@@ -14,8 +16,36 @@ constexpr std::size_t kMaxIterations = 60;
 constexpr double kSettled = 1e-9;            // rms change, unit-area units
 constexpr Eigen::Index kMaxFitPoints = 4000;  // vertices fitted, evenly strided beyond
 // A start from the principal axes replaces the given pose when it fits at
-// least this much better (rms ratio) after a few iterations.
+// least this much better (rms ratio) after kTrialIterations.
 constexpr double kClearlyBetter = 0.8;
+constexpr std::size_t kTrialIterations = 8;
+// Trials that end this far from the chosen pose are another pose.
+constexpr double kOtherPoseDegrees = 30;
+
+// The 24 turns that take the coordinate axes onto themselves (the cube's
+// rotations): every signed permutation of determinant +1, the identity's
+// order first.
+std::vector<Eigen::Matrix3d> cube_rotations() {
+  std::vector<Eigen::Matrix3d> turns;
+  std::array<int, 3> order{0, 1, 2};
+  do {
+    for (const Eigen::Vector3d& sign : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, -1, -1),
+                                        Eigen::Vector3d(-1, 1, -1), Eigen::Vector3d(-1, -1, 1),
+                                        Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(-1, 1, 1),
+                                        Eigen::Vector3d(1, -1, 1), Eigen::Vector3d(1, 1, -1)}) {
+      Eigen::Matrix3d turn = Eigen::Matrix3d::Zero();
+      for (int k = 0; k < 3; ++k) turn(k, order[std::size_t(k)]) = sign(k);
+      if (turn.determinant() > 0) turns.push_back(turn);
+    }
+  } while (std::next_permutation(order.begin(), order.end()));
+  return turns;
+}
+
+// The angle of the turn from `a` to `b`, in degrees.
+double turn_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
+  const double cosine = std::clamp(((a.transpose() * b).trace() - 1) / 2, -1.0, 1.0);
+  return std::acos(cosine) * 180 / std::numbers::pi;
+}
 
 // The vertices the fit uses: all, or every k-th of a large mesh.
 PointSet fit_points(const PointSet& points) {
@@ -110,33 +140,31 @@ MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& templat
   const Similarity own = canonical_frame(mesh);
   // The starts: the pose as given (turned as the template's frame turns
   // the template: shapes of one scanner often arrive roughly aligned, and
-  // on a nearly symmetric shape the principal axes are arbitrary), and the
-  // shape's own principal axes with each of the four proper sign patterns
-  // (shapes in any orientation).
+  // on a nearly symmetric shape the principal axes are arbitrary), then the
+  // shape's own principal axes onto the template's in each of the 24 proper
+  // ways (the four sign patterns of their order first, then the other
+  // orders: where two radii are close, the axes' order is arbitrary too).
   std::vector<Similarity> starts;
   Similarity as_given = own;
   as_given.rotation = template_frame.rotation;
   starts.push_back(as_given);
-  for (const Eigen::Vector3d& sign : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, -1, -1), Eigen::Vector3d(-1, 1, -1),
-                                      Eigen::Vector3d(-1, -1, 1)}) {
+  for (const Eigen::Matrix3d& turn : cube_rotations()) {
     Similarity turned = own;
-    turned.rotation = sign.asDiagonal() * own.rotation;
+    turned.rotation = turn * own.rotation;
     starts.push_back(turned);
   }
   const PointSet world = fit_points(vertex_points(mesh));
   const PointTree tree(template_points);
+  std::vector<RigidFit> trials;
   std::size_t chosen = 0;
-  RigidFit best;
   for (std::size_t k = 0; k < starts.size(); ++k) {
     Similarity& start = starts[k];
     start.translation = -start.scale * (start.rotation * world.colwise().mean().transpose());
-    const RigidFit trial = closest_point_fit(start.apply(world), template_points, tree, 8);
-    // The given pose is kept unless another start fits clearly better.
-    if (k == 0 || trial.rms < kClearlyBetter * best.rms) {
-      best = trial;
-      chosen = k;
-    }
+    trials.push_back(closest_point_fit(start.apply(world), template_points, tree, kTrialIterations));
+    // The given pose, or the first start in order, is kept unless another fits clearly better.
+    if (trials[k].rms < kClearlyBetter * trials[chosen].rms) chosen = k;
   }
+  const RigidFit& best = trials[chosen];
   const PointSet started = (starts[chosen].apply(world) * best.rotation.transpose()).rowwise() + best.translation.transpose();
   const RigidFit finish = closest_point_fit(started, template_points, tree, kMaxIterations);
 
@@ -148,6 +176,13 @@ MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& templat
       finish.rotation * (best.rotation * starts[chosen].translation + best.translation) + finish.translation;
   alignment.rms = finish.rms;
   alignment.iterations = best.iterations + finish.iterations;
+  // The runner-up: the best trial that ended in another pose.
+  const Eigen::Matrix3d chosen_turn = best.rotation * starts[chosen].rotation;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const double angle = turn_angle(chosen_turn, trials[k].rotation * starts[k].rotation);
+    if (angle < kOtherPoseDegrees || trials[k].rms >= alignment.runner_up.rms) continue;
+    alignment.runner_up = {trials[k].rms / best.rms, angle, trials[k].rms};
+  }
   return alignment;
 }
 

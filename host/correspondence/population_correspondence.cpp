@@ -10,6 +10,7 @@
 
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "correspondence/closest_surface_point.hpp"
 #include "correspondence/joint_refinement.hpp"
@@ -222,17 +223,31 @@ void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& par
   if (share.leads()) checkpoint->write(stage, refinement_json(record));
 }
 
-// A shape of another topology than the template's still gets particles,
-// but particle i cannot mean the same place on both (a torus's hole has no
-// match on a sphere), and the model's modes describe the mismatch: said.
-void warn_of_other_topologies(PopulationCorrespondence& population, bool quiet) {
+// What the result cannot promise, said once per shape on stderr and kept
+// for summary.json: a shape of another topology than the template's still
+// gets particles, but particle i cannot mean the same place on both (a
+// torus's hole has no match on a sphere), and the model's modes describe
+// the mismatch; a shape whose pose another fits almost as well may lie turned.
+void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
+  const auto warn = [&](std::string line) {
+    if (!quiet) std::cerr << "meshparticles: warning: " << line << "\n";
+    population.warnings.push_back(std::move(line));
+  };
   for (const ShapeCorrespondence& shape : population.shapes) {
-    if (shape.topology == population.template_topology) continue;
-    population.warnings.push_back(shape.mesh.string() + " (" + describe(shape.topology) +
-                                  ") is not of the template's topology (" + describe(population.template_topology) +
-                                  "): its particles cannot match the template's everywhere, and the model's modes "
-                                  "describe the mismatch");
-    if (!quiet) std::cerr << "meshparticles: warning: " << population.warnings.back() << "\n";
+    if (shape.topology != population.template_topology) {
+      warn(shape.mesh.string() + " (" + describe(shape.topology) + ") is not of the template's topology (" +
+           describe(population.template_topology) +
+           "): its particles cannot match the template's everywhere, and the model's modes describe the mismatch");
+    }
+    const MeshAlignment::RunnerUp& runner_up = shape.alignment.runner_up;
+    if (runner_up.rms_ratio < kAmbiguousPoseRatio) {
+      warn(shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
+           " degrees from the one chosen fits the template " +
+           (runner_up.rms_ratio < 0.9995 ? format_number("%.1f%% better", 100 * (1 - runner_up.rms_ratio))
+                                         : format_number("within %.1f%%", std::max(0.0, 100 * (runner_up.rms_ratio - 1)))) +
+           ": the shape's geometry barely tells them apart, and its particles may lie turned (fit_runner_up in "
+           "summary.json)");
+    }
   }
 }
 
@@ -328,7 +343,7 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   measuring.finish();
   share.gather(results);
   for (std::size_t k = 0; k < count; ++k) population.shapes[k] = shape_from_json(nlohmann::json::parse(results[k]));
-  warn_of_other_topologies(population, request.quiet);
+  warn_of_doubts(population, request.quiet);
   return population;
 }
 

@@ -55,6 +55,13 @@ std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json, std
   return locations;
 }
 
+// null where no start ended in another pose, or the chosen fits exactly
+// (JSON has no infinity).
+nlohmann::json runner_up_json(const MeshAlignment::RunnerUp& runner_up) {
+  if (!std::isfinite(runner_up.rms) || !std::isfinite(runner_up.rms_ratio)) return nullptr;
+  return {{"rms_ratio", runner_up.rms_ratio}, {"degrees", runner_up.degrees}, {"rms", runner_up.rms}};
+}
+
 nlohmann::json alignment_json(const MeshAlignment& alignment) {
   const Similarity& to_common = alignment.to_common;
   nlohmann::json rotation = nlohmann::json::array();
@@ -64,7 +71,8 @@ nlohmann::json alignment_json(const MeshAlignment& alignment) {
           {"translation", {to_common.translation(0), to_common.translation(1), to_common.translation(2)}},
           {"rms", alignment.rms},
           {"iterations", alignment.iterations},
-          {"from_principal_axes", alignment.from_principal_axes}};
+          {"from_principal_axes", alignment.from_principal_axes},
+          {"runner_up", runner_up_json(alignment.runner_up)}};
 }
 
 MeshAlignment alignment_from_json(const nlohmann::json& json) {
@@ -77,6 +85,11 @@ MeshAlignment alignment_from_json(const nlohmann::json& json) {
   alignment.rms = json.at("rms").get<double>();
   alignment.iterations = json.at("iterations").get<std::size_t>();
   alignment.from_principal_axes = json.at("from_principal_axes").get<bool>();
+  const nlohmann::json& runner_up = json.at("runner_up");
+  if (!runner_up.is_null()) {
+    alignment.runner_up = {runner_up.at("rms_ratio").get<double>(), runner_up.at("degrees").get<double>(),
+                           runner_up.at("rms").get<double>()};
+  }
   return alignment;
 }
 

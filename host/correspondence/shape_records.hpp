@@ -23,6 +23,7 @@ nlohmann::json locations_json(const std::vector<SurfaceLocation>& locations);
 std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json, std::size_t triangles,
                                                  std::size_t particles);
 
+nlohmann::json runner_up_json(const MeshAlignment::RunnerUp& runner_up);
 nlohmann::json alignment_json(const MeshAlignment& alignment);
 MeshAlignment alignment_from_json(const nlohmann::json& json);
 
