@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "common/atomic_file.hpp"
+#include "common/json_text.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -62,7 +63,7 @@ std::optional<nlohmann::json> CorrespondCheckpoint::read(const std::string& name
 void CorrespondCheckpoint::write(const std::string& name, const nlohmann::json& value) const {
   const std::filesystem::path file = entry_file(folder_, name);
   create_directory_for(file.parent_path(), "checkpoint folder");
-  write_file_atomically(file, [&](std::ostream& out) { out << value.dump() << "\n"; });
+  write_file_atomically(file, [&](std::ostream& out) { out << json_text(value) << "\n"; });
 }
 
 void CorrespondCheckpoint::remove() const {

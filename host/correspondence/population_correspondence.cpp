@@ -5,6 +5,7 @@
 #include <mutex>
 #include <optional>
 
+#include "common/json_text.hpp"
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
 #include "common/user_error.hpp"
@@ -266,7 +267,7 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
       settle(population.shapes[k], *meshes[k], particles[k], measure_threads);
       const nlohmann::json result = shape_json(population.shapes[k]);
       if (checkpoint) checkpoint->write(shape_entry("settled", k), result);
-      results[k] = result.dump();
+      results[k] = json_text(result);
     }
     measuring.advance();
   });
