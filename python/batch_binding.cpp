@@ -10,6 +10,7 @@
 
 #include "batch/batch_runner.hpp"
 #include "bindings.hpp"
+#include "cancellation.hpp"
 #include "common/user_error.hpp"
 #include "run_settings.hpp"
 
@@ -19,30 +20,28 @@ namespace meshparticles::python {
 
 namespace {
 
-std::string run_batch_json(const std::vector<std::string>& inputs, const std::string& out, const py::kwargs& given) {
+std::string run_batch_json(const py::list& inputs, const py::object& out, const py::kwargs& given) {
   KeywordOptions options(given);
   BatchRequest request;
-  request.inputs = inputs;
-  request.out = out;
+  for (const py::handle input : inputs) request.inputs.push_back(path_argument(input, "inputs").string());
+  request.out = path_argument(out, "out");
   request.run = take_run_request(options);
   const auto n = options.take_whole("n", kParticleRange);
-  const auto spacing = options.take<double>("spacing");
-  const auto per_area = options.take<double>("per_area");
-  request.read.strict = options.take<bool>("strict").value_or(false);
-  request.force = options.take<bool>("force").value_or(false);
+  const auto spacing = options.take_positive("spacing");
+  const auto per_area = options.take_positive("per_area");
+  request.read.strict = options.take_flag("strict").value_or(false);
+  request.force = options.take_flag("force").value_or(false);
+  const CancelScope cancel(options.take_object("cancel"));
   options.refuse_unknown("batch");
   if (int(n.has_value()) + int(spacing.has_value()) + int(per_area.has_value()) > 1) {
     throw UserError("batch: give at most one of n, spacing and per_area");
-  }
-  for (const auto& [name, value] : {std::pair{"spacing", spacing}, std::pair{"per_area", per_area}}) {
-    if (value && !(*value > 0)) throw UserError(std::string(name) + ": expected a number above 0");
   }
   request.quiet = request.run.quiet;
   request.count.value = double(n.value_or(request.run.particles));
   if (spacing) request.count = {ParticleCount::Rule::spacing, *spacing};
   if (per_area) request.count = {ParticleCount::Rule::per_area, *per_area};
   {
-    py::gil_scoped_release unlocked;  // minutes to hours; Ctrl-C stops it between progress updates
+    py::gil_scoped_release unlocked;  // minutes to hours; Ctrl-C or cancel stops it at a progress update
     run_batch(request);
   }
   std::ifstream summary(request.out / "summary.json");

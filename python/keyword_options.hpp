@@ -1,14 +1,16 @@
 #pragma once
 // Keyword arguments taken one by one by name, the way the command line takes
-// its options: each read once with its type, None meaning absent, and any
-// left over refused by name (a misspelt option must not be ignored).
+// its options: each read once with its type (python/argument_values.hpp),
+// None meaning absent, and any left over refused by name (a misspelt option
+// must not be ignored).
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 
 #include <pybind11/pybind11.h>
 
-#include "cli/number_options.hpp"
+#include "argument_values.hpp"
 
 namespace meshparticles::python {
 
@@ -19,33 +21,31 @@ class KeywordOptions {
   // Whether `name` is given, and not None, among those not yet taken.
   bool given(const char* name) const { return left_.contains(name) && !left_[name].is_none(); }
 
-  // The value of `name` as T, or nothing when absent or None. Throws
-  // TypeError naming the keyword when it is not a T.
-  template <typename T>
-  std::optional<T> take(const char* name) {
+  // The value of `name` as it is, or nothing when absent or None.
+  std::optional<pybind11::object> take_object(const char* name) {
     if (!left_.contains(name)) return std::nullopt;
-    const pybind11::object value = left_.attr("pop")(name);
+    pybind11::object value = left_.attr("pop")(name);
     if (value.is_none()) return std::nullopt;
-    try {
-      return value.cast<T>();
-    } catch (const pybind11::cast_error&) {
-      throw pybind11::type_error(std::string(name) + ": " + describe_expected<T>() + " expected, got " +
-                                 pybind11::str(pybind11::type::of(value)).cast<std::string>());
-    }
+    return value;
   }
 
   // A whole number within `range` (the command line's, cli/number_options.hpp),
   // refused in its words: "iterations: expected a whole number from 0 to 1000000, got -1".
   std::optional<std::uint64_t> take_whole(const char* name, WholeRange range) {
-    const auto value = take<pybind11::int_>(name);
-    if (!value) return std::nullopt;
-    const bool in_range = *value >= pybind11::int_(range.min) && *value <= pybind11::int_(range.max);
-    if (!in_range) {
-      throw pybind11::value_error(std::string(name) + ": expected a whole number from " + std::to_string(range.min) +
-                                  " to " + std::to_string(range.max) + ", got " +
-                                  pybind11::str(pybind11::handle(*value)).cast<std::string>());
-    }
-    return value->cast<std::uint64_t>();
+    return taken(name, [&](pybind11::handle value) { return whole_number(value, name, range); });
+  }
+  // A finite number above 0: "sigma: expected a finite number above 0, got inf".
+  std::optional<double> take_positive(const char* name) {
+    return taken(name, [&](pybind11::handle value) { return positive_number(value, name); });
+  }
+  std::optional<bool> take_flag(const char* name) {
+    return taken(name, [&](pybind11::handle value) { return flag(value, name); });
+  }
+  std::optional<std::string> take_word(const char* name) {
+    return taken(name, [&](pybind11::handle value) { return word(value, name); });
+  }
+  std::optional<std::filesystem::path> take_path(const char* name) {
+    return taken(name, [&](pybind11::handle value) { return path_argument(value, name); });
   }
 
   // Throws TypeError naming the first keyword nothing took.
@@ -57,13 +57,11 @@ class KeywordOptions {
   }
 
  private:
-  template <typename T>
-  static const char* describe_expected() {
-    if constexpr (std::is_same_v<T, bool>) return "True or False";
-    else if constexpr (std::is_same_v<T, pybind11::int_>) return "an integer";
-    else if constexpr (std::is_integral_v<T>) return "an integer";
-    else if constexpr (std::is_floating_point_v<T>) return "a number";
-    else return "a string";
+  template <typename Convert>
+  auto taken(const char* name, Convert convert) -> std::optional<decltype(convert(pybind11::handle()))> {
+    const auto value = take_object(name);
+    if (!value) return std::nullopt;
+    return convert(*value);
   }
 
   pybind11::dict left_;

@@ -6,6 +6,8 @@
 #include <pybind11/numpy.h>
 
 #include "bindings.hpp"
+#include "cancellation.hpp"
+#include "common/json_text.hpp"
 #include "common/user_error.hpp"
 #include "mesh_object.hpp"
 #include "pipeline/point_sets.hpp"
@@ -42,16 +44,16 @@ std::string measure(const Mesh& mesh, const std::vector<py::array>& arrays, cons
   PointSetsRequest request;
   for (const py::array& array : arrays) request.points.push_back(points_of(array));
   request.names = arrays.size() == 2 ? std::vector<std::string>{"<a>", "<b>"} : std::vector<std::string>{"<points>"};
-  request.sigma = options.take<double>("sigma");
-  request.potential = parse_potential(options.take<std::string>("potential").value_or("exp"));
-  const std::string refine = options.take<std::string>("refine").value_or("auto");
+  request.sigma = options.take_positive("sigma");
+  request.potential = parse_potential(options.take_word("potential").value_or("exp"));
+  const std::string refine = options.take_word("refine").value_or("auto");
   request.geodesics = take_geodesics_request(options);
   request.distances = take_distances_request(options, request.geodesics);
+  const CancelScope cancel(options.take_object("cancel"));
   options.refuse_unknown(arrays.size() == 2 ? "compare" : "quality");
   set_refinement(request, refine);
-  if (request.sigma && !(*request.sigma > 0)) throw UserError("sigma must be a positive number");
   py::gil_scoped_release unlocked;
-  return point_sets_json(mesh.label, measure_point_sets(*mesh.surface, request)).dump();
+  return json_text(point_sets_json(mesh.label, measure_point_sets(*mesh.surface, request)));
 }
 
 }  // namespace

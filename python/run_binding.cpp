@@ -3,9 +3,11 @@
 // writes (reports/run_outputs.hpp), by the same code.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
+#include "argument_values.hpp"
 #include "bindings.hpp"
+#include "cancellation.hpp"
+#include "common/json_text.hpp"
 #include "mesh_object.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "reports/file_digest.hpp"
@@ -36,6 +38,7 @@ RunOutput run_mesh(const Mesh& mesh, const py::kwargs& given) {
   KeywordOptions options(given);
   RunRequest request = take_run_request(options);
   request.particles = options.take_whole("n", kParticleRange).value_or(request.particles);
+  const CancelScope cancel(options.take_object("cancel"));
   options.refuse_unknown("run");
   request.mesh_label = mesh.label;
   RunOutput output{mesh, {}, {}, {}};
@@ -48,7 +51,8 @@ RunOutput run_mesh(const Mesh& mesh, const py::kwargs& given) {
   return output;
 }
 
-void save(const RunOutput& output, const std::filesystem::path& directory) {
+void save(const RunOutput& output, const py::object& path) {
+  const std::filesystem::path directory = path_argument(path, "directory");
   py::gil_scoped_release unlocked;
   prepare_output_directory(directory);
   write_run_outputs(directory, *output.mesh.surface, output.result, output.report(directory));
@@ -101,8 +105,8 @@ void bind_run(py::module_& module) {
       .def_property_readonly("seconds", [](const RunOutput& output) { return output.result.seconds.total; })
       .def_property_readonly("device", [](const RunOutput& output) { return output.result.device; })
       // JSON text: the package turns it into dicts with json.loads.
-      .def("report_json", [](const RunOutput& output) { return output.report("").dump(); })
-      .def("quality_json", [](const RunOutput& output) { return quality_json(output.result.quality).dump(); })
+      .def("report_json", [](const RunOutput& output) { return json_text(output.report("")); })
+      .def("quality_json", [](const RunOutput& output) { return json_text(quality_json(output.result.quality)); })
       .def("save", &save, py::arg("directory"));
   module.def("run", &run_mesh, py::arg("mesh"));
 }

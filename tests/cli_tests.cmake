@@ -392,3 +392,7 @@ if(MPI_CXX_FOUND)
 else()
   message(STATUS "MPI not found: cli.correspond_mpi is not registered")
 endif()
+# File and folder names that are not UTF-8 (issue 50, item 13): valid JSON and messages, the bytes escaped.
+add_test(NAME cli.non_utf8_paths COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/non_utf8_paths.sh $<TARGET_FILE:meshparticles> ${TETRA}
+                                         ${CMAKE_CURRENT_BINARY_DIR}/non_utf8_paths)
+set_tests_properties(cli.non_utf8_paths PROPERTIES LABELS "fast;device" TIMEOUT 120)

@@ -17,6 +17,7 @@
 #include "batch/failure.hpp"
 #include "batch/mesh_queue.hpp"
 #include "batch/node_share.hpp"
+#include "common/json_text.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -134,7 +135,7 @@ class RemoteQueue : public MeshQueue {
     return std::size_t(assignment);
   }
   void finished(std::size_t index, const MeshOutcome& outcome) override {
-    last_outcome_ = nlohmann::json{{"index", index}, {"row", outcome.row}, {"reused", outcome.reused}}.dump();
+    last_outcome_ = json_text({{"index", index}, {"row", outcome.row}, {"reused", outcome.reused}});
   }
 
  private:

@@ -1,5 +1,6 @@
 #include "batch/reusable_output.hpp"
 
+#include "common/json_text.hpp"
 #include "reports/batch_summary.hpp"
 #include "reports/output_digests.hpp"
 #include "reports/run_outputs.hpp"
@@ -33,14 +34,16 @@ std::optional<nlohmann::json> reusable_report(const std::filesystem::path& direc
   if (!intact) return std::nullopt;
   const nlohmann::json& report = *intact;
   try {  // a value of another type than a run writes (a forged report) throws: not reusable
-    const nlohmann::json expected_mesh = {{"path", plan.request.mesh_label},
-                                          {"sha256", mesh_sha256},
-                                          {"vertices", mesh.vertex_count()}};
+    // As written: a path that is not UTF-8 is recorded escaped (common/json_text.hpp).
+    const nlohmann::json expected_mesh = as_written({{"path", plan.request.mesh_label},
+                                                     {"sha256", mesh_sha256},
+                                                     {"vertices", mesh.vertex_count()}});
     const nlohmann::json recorded_mesh = report.value("mesh", nlohmann::json::object());
     for (const auto& [key, value] : expected_mesh.items()) {
       if (recorded_mesh.value(key, nlohmann::json()) != value) return std::nullopt;
     }
-    if (without_out(report.value("params", nlohmann::json::object())) != without_out(run_parameters(plan, directory))) {
+    const nlohmann::json expected_params = as_written(without_out(run_parameters(plan, directory)));
+    if (without_out(report.value("params", nlohmann::json::object())) != expected_params) {
       return std::nullopt;
     }
     // The store is no parameter of report.json's, but a run on local balls may

@@ -9,6 +9,7 @@
 #include "cli/number_options.hpp"
 #include "cli/option_values.hpp"
 #include "common/atomic_file.hpp"
+#include "common/json_text.hpp"
 #include "common/user_error.hpp"
 #include "measurement/bench.hpp"
 #include "measurement/quality_bench.hpp"
@@ -50,7 +51,7 @@ std::vector<CaseRequest> requested_cases(const BenchOptions& options) {
 }
 
 void write_json(const std::string& file, const nlohmann::json& document) {
-  if (!file.empty()) write_file_atomically(file, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
+  if (!file.empty()) write_file_atomically(file, [&](std::ostream& out) { out << json_text(document, 2) << "\n"; });
 }
 
 // As `run` does: an unreadable or unusable tuning file is named, once.

@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
 #include "common/atomic_file.hpp"
+#include "common/json_text.hpp"
 #include "common/random.hpp"
 #include "common/user_error.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -83,7 +84,7 @@ void write_population(const GenerateOptions& options) {
         {"knob_width", kEllipsoidKnob.width},
         {"seed", options.seed},
         {"shapes", shapes}};
-    write_file_atomically(out / "population.json", [&](std::ostream& stream) { stream << truth.dump(2) << "\n"; });
+    write_file_atomically(out / "population.json", [&](std::ostream& stream) { stream << json_text(truth, 2) << "\n"; });
     std::cerr << "wrote " << (out / "population.json").string() << " (each shape's parameters and pose)\n";
   }
 }

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "common/json_text.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "pipeline/mesh_input.hpp"
 
@@ -39,7 +40,7 @@ void run_info(const InfoOptions& options) {
   nlohmann::json stats = mesh_statistics(mesh);
   stats["mesh"] = options.mesh;
   if (options.json) {
-    std::cout << stats.dump(2) << "\n";
+    std::cout << json_text(stats, 2) << "\n";
     return;
   }
   const auto& valence = stats["valence"];

@@ -33,8 +33,7 @@ std::uint64_t parse_whole_number(const std::string& text, const std::string& opt
   const auto [stop, error] = std::from_chars(text.data(), end, value, 10);
   const bool digits_only = !text.empty() && stop == end && error == std::errc{};
   if (!digits_only || value < range.min || value > range.max) {
-    throw UserError(option + ": expected a whole number from " + std::to_string(range.min) + " to " +
-                    std::to_string(range.max) + ", got " + quoted(text));
+    throw UserError(whole_number_refusal(option, range, quoted(text)));
   }
   return value;
 }
@@ -43,10 +42,21 @@ double parse_positive_number(const std::string& text, const std::string& option)
   double value = 0;
   const char* end = text.data() + text.size();
   const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || stop != end || error != std::errc{} || !std::isfinite(value) || value <= 0) {
-    throw UserError(option + ": expected a finite number above 0, got " + quoted(text));
+  if (text.empty() || stop != end || error != std::errc{} || !is_positive_number(value)) {
+    throw UserError(positive_number_refusal(option, quoted(text)));
   }
   return value;
+}
+
+bool is_positive_number(double value) { return std::isfinite(value) && value > 0; }
+
+std::string whole_number_refusal(const std::string& option, WholeRange range, const std::string& given) {
+  return option + ": expected a whole number from " + std::to_string(range.min) + " to " + std::to_string(range.max) +
+         ", got " + given;
+}
+
+std::string positive_number_refusal(const std::string& option, const std::string& given) {
+  return option + ": expected a finite number above 0, got " + given;
 }
 
 CLI::Option* add_positive_number_option(CLI::App& command, const std::string& names, std::optional<double>& target,

@@ -54,6 +54,14 @@ std::uint64_t parse_whole_number(const std::string& text, const std::string& opt
 // `text` as a finite number above zero; throws UserError naming `option` otherwise.
 double parse_positive_number(const std::string& text, const std::string& option);
 
+// What a positive-number option takes: finite and above 0.
+bool is_positive_number(double value);
+
+// The refusals, in the words the command line and the Python module share
+// ("OPTION: expected a finite number above 0, got GIVEN").
+std::string whole_number_refusal(const std::string& option, WholeRange range, const std::string& given);
+std::string positive_number_refusal(const std::string& option, const std::string& given);
+
 // "-n/--particles" for the names "-n,--particles": how messages name an option.
 std::string option_label(const std::string& names);
 

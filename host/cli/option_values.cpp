@@ -24,14 +24,25 @@ std::string non_empty(const std::string& value) {
   return value.empty() ? "an empty value is not allowed (leave the option out for its default)" : "";
 }
 
+void add_checks(CLI::App& command) {
+  for (CLI::Option* option : command.get_options()) {
+    if (option->get_type_size() == 0) continue;  // a flag
+    option->check(CLI::Validator(non_empty, "", "NONEMPTY"));
+    if (is_path_option(*option)) option->check(CLI::Validator(unusable_path_reason, "", "PATH"));
+  }
+  for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; })) add_checks(*subcommand);
+}
+
+}  // namespace
+
 // Linux's limits (PATH_MAX, NAME_MAX): a longer path fails at the first
 // open or mkdir, which may come after minutes of work.
-std::string usable_path(const std::string& value) {
-  if (value.size() >= PATH_MAX) {
-    return "the path is " + std::to_string(value.size()) + " bytes, more than the " + std::to_string(PATH_MAX - 1) +
+std::string unusable_path_reason(const std::string& path) {
+  if (path.size() >= PATH_MAX) {
+    return "the path is " + std::to_string(path.size()) + " bytes, more than the " + std::to_string(PATH_MAX - 1) +
            " a path may have";
   }
-  for (const auto& part : std::filesystem::path(value)) {
+  for (const auto& part : std::filesystem::path(path)) {
     if (part.native().size() > NAME_MAX) {
       return "a part of the path is " + std::to_string(part.native().size()) + " bytes, more than the " +
              std::to_string(NAME_MAX) + " a file name may have";
@@ -39,17 +50,6 @@ std::string usable_path(const std::string& value) {
   }
   return "";
 }
-
-void add_checks(CLI::App& command) {
-  for (CLI::Option* option : command.get_options()) {
-    if (option->get_type_size() == 0) continue;  // a flag
-    option->check(CLI::Validator(non_empty, "", "NONEMPTY"));
-    if (is_path_option(*option)) option->check(CLI::Validator(usable_path, "", "PATH"));
-  }
-  for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; })) add_checks(*subcommand);
-}
-
-}  // namespace
 
 std::vector<std::string> split_list(const std::string& text, const std::string& label) {
   std::vector<std::string> elements;

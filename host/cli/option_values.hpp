@@ -18,6 +18,10 @@ std::vector<std::string> split_list(const std::string& text, const std::string& 
 CLI::Option* add_name_list_option(CLI::App& command, const std::string& names, std::vector<std::string>& target,
                                   const std::vector<std::string>& allowed, const std::string& help);
 
+// Why the system could not hold `path` (longer than PATH_MAX, or a part
+// longer than NAME_MAX), or "" when it could.
+std::string unusable_path_reason(const std::string& path);
+
 // Adds the checks to every option that takes a value, in `app` and all its
 // subcommands; path checks to the options that name files or folders.
 void refuse_unusable_values(CLI::App& app);

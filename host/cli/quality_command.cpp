@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
+#include "common/json_text.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
 #include "reports/quality_report.hpp"
@@ -40,7 +41,7 @@ void run_quality(const QualityOptions& options) {
   request.sigma = options.sigma;
   const PointSetsMeasurement measured = measure_point_sets(input, request);
   if (options.json) {
-    std::cout << point_sets_json(options.mesh, measured).dump(2) << "\n";
+    std::cout << json_text(point_sets_json(options.mesh, measured), 2) << "\n";
     return;
   }
   const MeasuringMesh& measuring = measured.measuring;

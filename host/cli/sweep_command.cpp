@@ -9,6 +9,7 @@
 #include "cli/number_options.hpp"
 #include "cli/option_values.hpp"
 #include "common/atomic_file.hpp"
+#include "common/json_text.hpp"
 #include "common/user_error.hpp"
 #include "measurement/sweep.hpp"
 #include "pipeline/mesh_input.hpp"
@@ -94,7 +95,7 @@ void run_sweep_command(SweepOptions options, bool tiles_given, bool weights_give
   if (!options.csv.empty()) write_sweep_csv(options.csv, sweep);
   if (!options.json.empty()) {
     const nlohmann::json document = sweep_json(sweep);
-    write_file_atomically(options.json, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
+    write_file_atomically(options.json, [&](std::ostream& out) { out << json_text(document, 2) << "\n"; });
   }
   if (options.save) save_best(sweep, tuning_file, store);
 

@@ -22,7 +22,7 @@ using InterruptionCheck = bool (*)();
 void set_interruption_check(InterruptionCheck check);
 
 // Throws Interrupted when the check says so; a no-op without a check, and
-// the check itself is asked at most every 100 ms.
+// the check itself is asked at most every 100 ms on each thread.
 void throw_if_interrupted();
 
 }  // namespace meshparticles

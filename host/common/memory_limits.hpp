@@ -37,12 +37,16 @@ std::optional<std::uint64_t> address_space_limit_bytes();
 // "1.25 GiB".
 std::string gibibytes(double bytes);
 
+// What a run's out-of-memory message suggests.
+inline constexpr const char* kRunMemoryHint = "fewer particles, a smaller --cutoff or --distances local need less";
+
 // `work()`, with an out-of-memory inside it said where: a MemoryRefusal
 // gains "LABEL: ", and std::bad_alloc becomes "LABEL: out of memory while
-// STAGE (X left under WHAT SETS IT)". Both become plain UserErrors, so an
-// outer stage does not name them twice.
+// STAGE (X left under WHAT SETS IT): HINT". Both become plain UserErrors, so
+// an outer stage does not name them twice.
 template <class Work>
-decltype(auto) naming_memory_failures(const std::string& label, const std::string& stage, Work&& work) {
+decltype(auto) naming_memory_failures(const std::string& label, const std::string& stage, Work&& work,
+                                      const std::string& hint = kRunMemoryHint) {
   try {
     return work();
   } catch (const MemoryRefusal& refusal) {
@@ -50,7 +54,7 @@ decltype(auto) naming_memory_failures(const std::string& label, const std::strin
   } catch (const std::bad_alloc&) {
     const MemoryRoom room = memory_room();
     throw UserError(label + ": out of memory while " + stage + " (" + gibibytes(double(room.bytes)) + " left under " +
-                    room.set_by + "): fewer particles, a smaller --cutoff or --distances local need less");
+                    room.set_by + "): " + hint);
   }
 }
 

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include "common/utf8_text.hpp"
+
 namespace meshparticles {
 
 // `value` through a printf pattern such as "%.3f".
@@ -21,11 +23,12 @@ inline std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
-// `text` on one line, whatever it quotes: a control character (a path may
-// hold a newline) is written as an escape, \n, \r, \t or \xHH.
+// `text` on one line and valid UTF-8, whatever it quotes: a control
+// character (a path may hold a newline) is written as an escape, \n, \r,
+// \t or \xHH, and so is a byte that is not UTF-8 (common/utf8_text.hpp).
 inline std::string one_line(const std::string& text) {
   std::string line;
-  for (const char c : text) {
+  for (const char c : escaped_utf8(text)) {
     const auto byte = static_cast<unsigned char>(c);
     if (byte >= 0x20 && byte != 0x7f) line += c;
     else if (c == '\n') line += "\\n";

@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "common/atomic_file.hpp"
+#include "common/json_text.hpp"
 #include "common/temporary_names.hpp"
 #include "common/user_error.hpp"
 #include "reports/file_digest.hpp"
@@ -90,7 +91,7 @@ std::string shape_entry(const std::string& stage, std::size_t shape) {
 
 CorrespondCheckpoint::CorrespondCheckpoint(const std::filesystem::path& directory, const nlohmann::json& fingerprint,
                                            bool leader, bool quiet)
-    : folder_(directory / kFolder), request_digest_(text_sha256(fingerprint.dump())) {
+    : folder_(directory / kFolder), request_digest_(text_sha256(json_text(fingerprint))) {
   if (!leader) return;
   std::error_code error;
   if (!std::filesystem::exists(folder_, error)) {
@@ -133,12 +134,12 @@ void CorrespondCheckpoint::refuse(const std::string& name, const std::string& wh
 void CorrespondCheckpoint::write(const std::string& name, const nlohmann::json& values) const {
   const std::filesystem::path file = entry_file(folder_, name);
   create_directory_for(file.parent_path(), "checkpoint folder");
-  const std::string values_text = values.dump();
+  const std::string values_text = json_text(values);
   const nlohmann::json header = {{"entry", name},
                                  {"request", request_digest_},
                                  {"bytes", values_text.size()},
                                  {"sha256", text_sha256(values_text)}};
-  write_file_atomically(file, [&](std::ostream& out) { out << header.dump() << "\n" << values_text << "\n"; });
+  write_file_atomically(file, [&](std::ostream& out) { out << json_text(header) << "\n" << values_text << "\n"; });
 }
 
 void CorrespondCheckpoint::remove() const {

@@ -5,6 +5,7 @@
 
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
+#include "common/json_text.hpp"
 #include "common/temporary_names.hpp"
 #include "common/user_error.hpp"
 #include "correspondence/correspondence_checkpoint.hpp"
@@ -71,7 +72,7 @@ void write_correspondence(const std::filesystem::path& directory, const Populati
     }
   });
   write_shape_model(directory / "model", model);
-  write_file_atomically(directory / "summary.json", [&](std::ostream& out) { out << summary.dump(2) << "\n"; });
+  write_file_atomically(directory / "summary.json", [&](std::ostream& out) { out << json_text(summary, 2) << "\n"; });
 }
 
 }  // namespace meshparticles

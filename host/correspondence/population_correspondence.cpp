@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "common/json_text.hpp"
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
@@ -331,12 +332,12 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
       return values;
     });
     if (kept) {
-      results[k] = kept->dump();
+      results[k] = json_text(*kept);
     } else {
       settle(population.shapes[k], *meshes[k], particles[k], measure_threads);
       const nlohmann::json result = shape_json(population.shapes[k]);
       if (checkpoint) checkpoint->write(shape_entry("settled", k), result);
-      results[k] = result.dump();
+      results[k] = json_text(result);
     }
     measuring.advance();
   });

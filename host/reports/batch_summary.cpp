@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/atomic_file.hpp"
+#include "common/json_text.hpp"
 #include "common/text_format.hpp"
 #include "common/version.hpp"
 
@@ -88,7 +89,7 @@ void write_batch_summary(const std::filesystem::path& directory, const std::vect
   for (const MeshStatus status : kStatuses) counts[mesh_status_name(status)] = 0;
   for (const nlohmann::json& row : rows) ++counts[row.at("status").get<std::string>()];
   const nlohmann::json summary = {{"version", program_version()}, {"timing_fields", kTimingFields}, {"counts", counts}, {"meshes", rows}};
-  write_file_atomically(directory / "summary.json", [&](std::ostream& out) { out << summary.dump(2) << "\n"; });
+  write_file_atomically(directory / "summary.json", [&](std::ostream& out) { out << json_text(summary, 2) << "\n"; });
   write_file_atomically(directory / "summary.csv", [&](std::ostream& out) {
     for (std::size_t c = 0; c < kColumns.size(); ++c) out << (c ? "," : "") << kColumns[c];
     out << "\n";

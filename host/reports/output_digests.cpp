@@ -1,6 +1,7 @@
 #include "reports/output_digests.hpp"
 
 #include "common/input_file.hpp"
+#include "common/json_text.hpp"
 #include "common/user_error.hpp"
 #include "reports/file_digest.hpp"
 #include "reports/run_outputs.hpp"
@@ -12,7 +13,7 @@ namespace {
 constexpr const char* kReportFile = "report.json";
 
 // The one way report.json is written, so that its text can be checked too.
-std::string report_text(const nlohmann::json& report) { return report.dump(2) + "\n"; }
+std::string report_text(const nlohmann::json& report) { return json_text(report, 2) + "\n"; }
 
 std::optional<std::string> read_bytes(const std::filesystem::path& file) {
   try {

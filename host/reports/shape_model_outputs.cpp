@@ -5,6 +5,7 @@
 
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
+#include "common/json_text.hpp"
 #include "common/text_format.hpp"
 #include "common/version.hpp"
 
@@ -110,7 +111,7 @@ void write_shape_model(const std::filesystem::path& directory, const ShapeModelO
         // deviation is sqrt(variance) of it).
         modes.push_back({{"variance", model.variances(k)}, {"vectors", rows_of(unflattened(model.modes.col(k)))}});
       }
-      out << nlohmann::json{{"mean", rows_of(unflattened(model.mean))}, {"modes", modes}}.dump() << "\n";
+      out << json_text({{"mean", rows_of(unflattened(model.mean))}, {"modes", modes}}) << "\n";
     });
     write_new_file(staging / "transforms.json", [&](std::ostream& out) {
       nlohmann::json shapes = nlohmann::json::array();
@@ -122,7 +123,7 @@ void write_shape_model(const std::filesystem::path& directory, const ShapeModelO
         shapes.push_back({{"file", outputs.shapes[s]}, {"aligned", aligned_names[s]}, {"scale", t.scale},
                           {"matrix", matrix}});
       }
-      out << nlohmann::json{{"world_to_aligned", shapes}}.dump(2) << "\n";
+      out << json_text({{"world_to_aligned", shapes}}, 2) << "\n";
     });
     write_new_file(staging / "evaluation.csv", [&](std::ostream& out) {
       out << "modes,compactness,generalization,generalization_sd,specificity,specificity_sd\n";
@@ -138,7 +139,7 @@ void write_shape_model(const std::filesystem::path& directory, const ShapeModelO
             << format_number("%.9g", quality.specificity[m].sd) << "\n";
       }
     });
-    write_new_file(staging / "model.json", [&](std::ostream& out) { out << shape_model_summary(outputs).dump(2) << "\n"; });
+    write_new_file(staging / "model.json", [&](std::ostream& out) { out << json_text(shape_model_summary(outputs), 2) << "\n"; });
   });
 }
 

@@ -9,6 +9,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/input_file.hpp"
+#include "common/json_text.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -138,7 +139,7 @@ void TuningStore::save(const std::filesystem::path& file) const {
   std::error_code error;
   std::filesystem::create_directories(file.parent_path(), error);
   if (error) throw UserError("cannot create " + file.parent_path().string() + ": " + error.message());
-  write_file_atomically(file, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
+  write_file_atomically(file, [&](std::ostream& out) { out << json_text(document, 2) << "\n"; });
 }
 
 }  // namespace meshparticles

@@ -8,9 +8,12 @@
     result.save("out")      # the files of `meshparticles run --out out`
 
 Options take the command line's names with `-` as `_` (--rebuild-every is
-rebuild_every=); None means the command line's default. Errors the command
-line reports in one line raise ValueError with that line; no usable OpenCL
-runtime or device raises DeviceError.
+rebuild_every=); None means the command line's default. A value of the wrong
+type raises TypeError naming the keyword (n=2.7 is refused, not truncated);
+errors the command line reports in one line raise ValueError with that line;
+no usable OpenCL runtime or device raises DeviceError. A long call stops with
+KeyboardInterrupt on Ctrl-C (main thread), or with Cancelled once the
+threading.Event given as cancel= is set (any thread).
 """
 from __future__ import annotations
 
@@ -21,9 +24,10 @@ from typing import Any, Dict, List, Optional, Sequence, Union
 import numpy as np
 
 from . import _core
-from ._core import DeviceError, Mesh, MeshWarning, __version__, read_mesh
+from ._core import Cancelled, DeviceError, Mesh, MeshWarning, __version__, read_mesh
 
 __all__ = [
+    "Cancelled",
     "DeviceError",
     "Mesh",
     "MeshWarning",
@@ -39,7 +43,9 @@ __all__ = [
     "run",
 ]
 
-PathLike = Union[str, "os.PathLike[str]"]
+PathLike = Union[str, bytes, "os.PathLike[str]", "os.PathLike[bytes]"]
+# threading.Event, multiprocessing.Event: anything with is_set().
+CancelEvent = Any
 
 
 def _fan(polygons: "list[np.ndarray]") -> np.ndarray:
@@ -71,7 +77,7 @@ def as_mesh(mesh: Any) -> Mesh:
     others ignored). The arrays are copied and checked as a file's would be."""
     if isinstance(mesh, Mesh):
         return mesh
-    if isinstance(mesh, (str, os.PathLike)):
+    if isinstance(mesh, (str, bytes, os.PathLike)):
         return read_mesh(mesh)
     if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
         return Mesh(np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces))
@@ -87,10 +93,6 @@ def as_mesh(mesh: Any) -> Mesh:
         f"expected a meshparticles.Mesh, a mesh file's path, or a mesh object (trimesh, pyvista or meshio), "
         f"got {type(mesh).__name__}"
     )
-
-
-def _path(value: Optional[PathLike]) -> Optional[str]:
-    return None if value is None else os.fspath(value)
 
 
 class Result:
@@ -137,7 +139,7 @@ class Result:
     def save(self, directory: PathLike) -> None:
         """Writes the six files of `meshparticles run --out DIRECTORY` in place
         of DIRECTORY at once; refuses a directory holding other files."""
-        self._output.save(os.fspath(directory))
+        self._output.save(directory)
 
     def __repr__(self) -> str:
         return f"<meshparticles.Result: {len(self.positions)} particles on {self.device}, {self.seconds:.3f} s>"
@@ -149,6 +151,7 @@ def run(
     *,
     method: Optional[str] = None,
     vertices_per_particle: Optional[float] = None,
+    relax_rounds: Optional[int] = None,
     iterations: Optional[int] = None,
     backend: Optional[str] = None,
     scheme: Optional[str] = None,
@@ -171,14 +174,18 @@ def run(
     no_cache: bool = False,
     threads: Optional[int] = None,
     quiet: bool = False,
+    cancel: Optional[CancelEvent] = None,
 ) -> Result:
     """`meshparticles run` on `mesh` with `n` particles; see `meshparticles run
-    --help` for each option. The GIL is released while it runs."""
+    --help` for each option. The GIL is released while it runs; setting the
+    event `cancel` (a threading.Event) from another thread stops it with
+    Cancelled."""
     output = _core.run(
         as_mesh(mesh),
         n=n,
         method=method,
         vertices_per_particle=vertices_per_particle,
+        relax_rounds=relax_rounds,
         iterations=iterations,
         backend=backend,
         scheme=scheme,
@@ -196,11 +203,12 @@ def run(
         tile=tile,
         weights=weights,
         rebuild_every=rebuild_every,
-        tuning_file=_path(tuning_file),
-        cache_dir=_path(cache_dir),
+        tuning_file=tuning_file,
+        cache_dir=cache_dir,
         no_cache=no_cache,
         threads=threads,
         quiet=quiet,
+        cancel=cancel,
     )
     return Result(output)
 
@@ -211,7 +219,7 @@ def _measure(core_function: Any, mesh: Any, point_sets: Sequence[Any], *, refine
     array, the options as the core takes them, its JSON back as a dict."""
     arrays = [np.asarray(p.positions if isinstance(p, Result) else p, dtype=np.float64) for p in point_sets]
     text = core_function(as_mesh(mesh), *arrays, refine=None if refine is None else str(refine),
-                         cache_dir=_path(cache_dir), **options)
+                         cache_dir=cache_dir, **options)
     return json.loads(text)
 
 
@@ -229,6 +237,7 @@ def quality(
     no_cache: bool = False,
     threads: Optional[int] = None,
     quiet: bool = False,
+    cancel: Optional[CancelEvent] = None,
 ) -> Dict[str, Any]:
     """`meshparticles quality MESH PARTICLES --json` on `points` (P x 3, or a
     Result): the points made vertices of a measuring mesh (the input where
@@ -236,7 +245,7 @@ def quality(
     are) and measured by geodesic distances."""
     return _measure(_core.quality_json, mesh, [points], refine=refine, cache_dir=cache_dir, sigma=sigma,
                     potential=potential, geodesic=geodesic, distances=distances, cutoff=cutoff,
-                    no_cache=no_cache, threads=threads, quiet=quiet)
+                    no_cache=no_cache, threads=threads, quiet=quiet, cancel=cancel)
 
 
 def compare(
@@ -254,6 +263,7 @@ def compare(
     no_cache: bool = False,
     threads: Optional[int] = None,
     quiet: bool = False,
+    cancel: Optional[CancelEvent] = None,
 ) -> Dict[str, Any]:
     """`meshparticles compare MESH A B --json` on two point sets (P x 3, or
     Results): "a" and "b" measured as quality() measures one, on the same
@@ -261,7 +271,7 @@ def compare(
     mean geodesic distance from each set's particles to the other's nearest."""
     return _measure(_core.compare_json, mesh, [a, b], refine=refine, cache_dir=cache_dir, sigma=sigma,
                     potential=potential, geodesic=geodesic, distances=distances, cutoff=cutoff,
-                    no_cache=no_cache, threads=threads, quiet=quiet)
+                    no_cache=no_cache, threads=threads, quiet=quiet, cancel=cancel)
 
 
 def batch(
@@ -273,6 +283,7 @@ def batch(
     per_area: Optional[float] = None,
     force: bool = False,
     strict: bool = False,
+    cancel: Optional[CancelEvent] = None,
     **run_options: Any,
 ) -> Dict[str, Any]:
     """`meshparticles batch INPUTS --out OUT`: `run` on every mesh of `inputs`
@@ -283,12 +294,9 @@ def batch(
     per unit of area). `run_options`: run()'s keywords. Returns summary.json:
     a mesh refused or failed is a row with its status and reason, not an
     exception."""
-    paths = [os.fspath(inputs)] if isinstance(inputs, (str, os.PathLike)) else [os.fspath(p) for p in inputs]
-    for key in ("cache_dir", "tuning_file"):
-        if run_options.get(key) is not None:
-            run_options[key] = os.fspath(run_options[key])
-    text = _core.batch_json(paths, os.fspath(out), n=n, spacing=spacing, per_area=per_area, force=force,
-                            strict=strict, **run_options)
+    paths = [inputs] if isinstance(inputs, (str, bytes, os.PathLike)) else list(inputs)
+    text = _core.batch_json(paths, out, n=n, spacing=spacing, per_area=per_area, force=force, strict=strict,
+                            cancel=cancel, **run_options)
     return json.loads(text)
 
 
@@ -304,9 +312,11 @@ def geodesics(
     max_distance: Optional[float] = None,
     *,
     geodesic: str = "fmm",
+    cancel: Optional[CancelEvent] = None,
 ) -> np.ndarray:
     """Geodesic distances from each source (an input vertex id) to every input
-    vertex: a (len(sources), V) float64 array, +inf beyond `max_distance`, in
-    another component, or at a vertex the reader dropped."""
-    ids = [int(sources)] if np.ndim(sources) == 0 else [int(s) for s in sources]
-    return _core.geodesics(as_mesh(mesh), ids, max_distance=max_distance, geodesic=geodesic)
+    vertex: a (len(sources), V) float64 array, +inf beyond `max_distance`
+    (0 or more; None or inf: no limit), in another component, or at a vertex
+    the reader dropped."""
+    ids = [sources] if np.ndim(sources) == 0 else list(sources)
+    return _core.geodesics(as_mesh(mesh), ids, max_distance=max_distance, geodesic=geodesic, cancel=cancel)

@@ -327,3 +327,188 @@ def test_batch_runs_each_mesh_and_resumes(tmp_path, cache):
         mp.batch(inputs, tmp_path / "other", n=4, spacing=0.1)
     with pytest.raises(TypeError, match="frobnicate"):
         mp.batch(inputs, tmp_path / "other", frobnicate=1)
+
+
+# Issue 50, items 10-14: keywords, values the program refuses, paths, cancelling.
+
+WHOLE_KEYWORDS = ["n", "iterations", "relax_rounds", "seed", "start_vertex", "threads", "colors", "wg", "tile",
+                  "rebuild_every"]
+
+
+@pytest.mark.parametrize("keyword", WHOLE_KEYWORDS)
+@pytest.mark.parametrize("value", [2.7, "3", float("nan"), True, np.float64(2.0)], ids=repr)
+def test_whole_number_keywords_refuse_what_int_would_convert(keyword, value):
+    # int() would truncate 2.7 and parse "3": refused by type, naming the keyword, before any work.
+    tetrahedron = mp.read_mesh(TETRAHEDRON)
+    with pytest.raises(TypeError, match=rf"^{keyword}: expected an integer, got \w"):
+        mp.run(tetrahedron, **{keyword: value})
+
+
+def test_whole_number_keywords_take_numpy_integers(tmp_path):
+    result = mp.run(TETRAHEDRON, n=np.int64(2), iterations=np.uint8(0), seed=np.int32(4), no_cache=True, quiet=True)
+    assert len(result.positions) == 2
+    with pytest.raises(TypeError, match=r"^n: expected an integer, got float"):
+        mp.batch([TETRAHEDRON], tmp_path / "out", n=2.7)
+    for sources in (1.5, [0, 1.5], ["0"], [True]):
+        with pytest.raises(TypeError, match=r"^sources: expected an integer, got"):
+            mp.geodesics(TETRAHEDRON, sources)
+    with pytest.raises(ValueError, match=r"^sources: expected a whole number from 0 to \d+, got -1$"):
+        mp.geodesics(TETRAHEDRON, [-1])
+    assert mp.geodesics(TETRAHEDRON, np.array([0, 3])).shape == (2, 4)
+
+
+@pytest.mark.parametrize("keyword", ["sigma", "vertices_per_particle", "cutoff"])
+@pytest.mark.parametrize("value", [float("inf"), float("nan"), 0, -1.0])
+def test_positive_numbers_are_finite_and_above_zero_as_the_programs(keyword, value):
+    # The program's words (--sigma: expected a finite number above 0, got "inf"), without the dashes.
+    with pytest.raises(ValueError, match=rf"^{keyword}: expected a finite number above 0, got "):
+        mp.run(TETRAHEDRON, n=2, no_cache=True, quiet=True, **{keyword: value})
+
+
+def test_other_calls_refuse_what_the_program_refuses(sphere, paper_run, tmp_path):
+    points = paper_run.positions
+    for measure in (lambda **o: mp.quality(sphere, points, **o), lambda **o: mp.compare(sphere, points, points, **o)):
+        with pytest.raises(ValueError, match=r"^sigma: expected a finite number above 0, got inf$"):
+            measure(sigma=float("inf"), no_cache=True)
+        with pytest.raises(ValueError, match=r"^cutoff: expected a finite number above 0, got inf$"):
+            measure(cutoff=float("inf"), no_cache=True)
+        with pytest.raises(TypeError, match=r"^sigma: expected a number, got str$"):
+            measure(sigma="1", no_cache=True)
+    for keyword in ("spacing", "per_area"):
+        with pytest.raises(ValueError, match=rf"^{keyword}: expected a finite number above 0, got inf$"):
+            mp.batch([TETRAHEDRON], tmp_path / "out", **{keyword: float("inf")})
+    for limit in (-1, -0.5, float("nan"), float("-inf")):
+        with pytest.raises(ValueError, match=r"^max_distance: expected a number from 0 up"):
+            mp.geodesics(sphere, [0], max_distance=limit)
+    at_zero = mp.geodesics(sphere, [0], max_distance=0)
+    assert at_zero[0, 0] == 0 and np.isinf(at_zero[0, 1:]).all()
+    assert np.isfinite(mp.geodesics(sphere, [0], max_distance=float("inf"))).all()
+
+
+@pytest.mark.parametrize("keyword", ["backend", "method", "scheme", "init", "potential", "geodesic", "distances",
+                                     "device", "weights"])
+def test_empty_words_are_refused_not_the_default(keyword):
+    with pytest.raises(ValueError, match=rf"^{keyword}: an empty value is not allowed"):
+        mp.run(TETRAHEDRON, n=2, **{keyword: ""})
+    with pytest.raises(TypeError, match=rf"^{keyword}: expected a string, got int$"):
+        mp.run(TETRAHEDRON, n=2, **{keyword: 1})
+
+
+def test_flags_are_true_or_false():
+    with pytest.raises(TypeError, match=r"^quiet: expected True or False, got str$"):
+        mp.run(TETRAHEDRON, n=2, quiet="no")
+    with pytest.raises(TypeError, match=r"^no_cache: expected True or False, got int$"):
+        mp.run(TETRAHEDRON, n=2, no_cache=1)
+
+
+def test_a_nul_in_a_path_is_a_value_error_as_open_raises(paper_run, tmp_path):
+    with pytest.raises(ValueError, match=r"^cache_dir: embedded null byte$"):
+        mp.run(TETRAHEDRON, n=2, cache_dir=str(tmp_path / "cache\x00suffix"), quiet=True)
+    assert not (tmp_path / "cache").exists()
+    with pytest.raises(ValueError, match=r"^tuning_file: embedded null byte$"):
+        mp.run(TETRAHEDRON, n=2, tuning_file=str(tmp_path / "t\x00.json"), no_cache=True)
+    with pytest.raises(ValueError, match=r"^path: embedded null byte$"):
+        mp.read_mesh(str(TETRAHEDRON) + "\x00.off")
+    with pytest.raises(ValueError, match=r"^path: embedded null byte$"):
+        mp.read_mesh(bytes(TETRAHEDRON) + b"\x00")
+    with pytest.raises(ValueError, match=r"^directory: embedded null byte$"):
+        paper_run.save(str(tmp_path / "out\x00x"))
+    assert not (tmp_path / "out").exists()
+    with pytest.raises(ValueError, match=r"^inputs: embedded null byte$"):
+        mp.batch([str(TETRAHEDRON) + "\x00"], tmp_path / "batch")
+    with pytest.raises(ValueError, match=r"^out: embedded null byte$"):
+        mp.batch([TETRAHEDRON], str(tmp_path / "batch\x00x"))
+    with pytest.raises(TypeError, match=r"^path: expected str, bytes or os.PathLike object, not int$"):
+        mp.read_mesh(3)
+    with pytest.raises(ValueError, match=r"^cache_dir: an empty path"):
+        mp.run(TETRAHEDRON, n=2, cache_dir="")
+
+
+def test_paths_that_are_not_utf8(tmp_path):
+    # Linux names are bytes: b"\xff.off" is a file name, seen in Python as "\udcff.off".
+    folder = os.fsencode(tmp_path)
+    name = folder + b"/\xff.off"
+    with open(name, "wb") as copy:
+        copy.write((ROOT / "tests" / "data" / "unreferenced_vertices.off").read_bytes())
+    with pytest.warns(mp.MeshWarning, match=r"\\xff\.off"):
+        mesh = mp.read_mesh(os.fsdecode(name))
+    assert mesh.label == os.fsdecode(name)  # opens the same file again
+    assert "\\xff.off" in repr(mesh) and "\\xff.off" in mesh.warnings[0]
+    with pytest.warns(mp.MeshWarning):
+        assert mp.read_mesh(name).input_vertex_count == mesh.input_vertex_count
+    with pytest.raises(ValueError, match=r"\\xfe-missing\.off: no such file"):
+        mp.read_mesh(folder + b"/\xfe-missing.off")
+    result = mp.run(mesh, n=2, no_cache=True, quiet=True)
+    assert result.report["mesh"]["path"] == os.fsencode(tmp_path).decode() + "/\\xff.off"
+    out = folder + b"/\xfe-out"
+    result.save(out)
+    report = json.loads(open(out + b"/report.json", "rb").read())
+    assert report["params"]["out"].endswith("/\\xfe-out") and report["mesh"]["path"].endswith("/\\xff.off")
+    summary = mp.batch([name], folder + b"/\xfd-batch", n=2, no_cache=True, quiet=True)
+    assert summary["meshes"][0]["status"] == "ok" and summary["meshes"][0]["mesh"].endswith("/\\xff.off")
+    again = mp.batch([name], folder + b"/\xfd-batch", n=2, no_cache=True, quiet=True)
+    # Resumed: the escaped path in report.json is this mesh's (a rerun would time itself anew).
+    assert again["meshes"][0]["seconds_total"] == summary["meshes"][0]["seconds_total"], again
+
+
+def test_cancel_stops_a_run_on_another_thread(sphere):
+    # Ctrl-C reaches the main thread only: a run on another thread stops by its event.
+    import threading
+    event, outcome = threading.Event(), {}
+
+    def work():
+        started = time.monotonic()
+        try:
+            mp.run(sphere, n=1024, vertices_per_particle=400, quiet=True, no_cache=True, cancel=event)
+            outcome["result"] = "finished"
+        except mp.Cancelled as cancelled:
+            outcome["result"] = str(cancelled)
+        outcome["seconds"] = time.monotonic() - started
+
+    worker = threading.Thread(target=work, daemon=True)
+    worker.start()
+    time.sleep(1.0)
+    event.set()
+    worker.join(timeout=30)
+    assert not worker.is_alive() and "cancel" in outcome["result"], outcome
+    assert outcome["seconds"] < 10, outcome
+    with pytest.raises(TypeError, match=r"^cancel: expected a threading.Event"):
+        mp.run(sphere, n=2, cancel=True)
+    # A set event stops geodesics too, between its sources.
+    with pytest.raises(mp.Cancelled):
+        mp.geodesics(sphere, range(4000), cancel=event)
+
+
+def test_mesh_takes_lists_and_names_what_it_refuses():
+    mesh = mp.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    assert mesh.vertices.shape == (3, 3) and mesh.faces.tolist() == [[0, 1, 2]]
+    with pytest.raises(TypeError, match=r"^faces: expected integer vertex indices$"):
+        mp.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2.5]])
+    with pytest.raises(ValueError, match=r"^vertices: expected an array of shape \(V, 3\)$"):
+        mp.Mesh([[0, 0], [1, 0]], [[0, 1, 2]])
+    with pytest.raises(TypeError, match=r"^vertices: expected a \(V, 3\) array of numbers"):
+        mp.Mesh([["a", "b", "c"]] * 3, [[0, 1, 2]])
+
+
+def test_a_huge_unsigned_index_is_reported_as_given():
+    faces = np.array([[0, 1, 2**63 + 1]], dtype=np.uint64)
+    with pytest.raises(ValueError, match=r"face 0 refers to vertex 9223372036854775809, out of range"):
+        mp.Mesh(np.zeros((3, 3)), faces)
+
+
+def test_out_of_memory_while_building_a_mesh_names_the_stage():
+    # Under an address-space limit just above what the arrays take: the copy into the mesh fails.
+    script = (
+        "import resource, numpy as np, meshparticles as mp\n"
+        "count = 4_000_000\n"
+        "vertices = np.random.default_rng(1).random((count, 3))\n"
+        "faces = np.arange(3 * count, dtype=np.int64).reshape(count, 3) % count\n"
+        "used = int(open('/proc/self/statm').read().split()[0]) * resource.getpagesize()\n"
+        "resource.setrlimit(resource.RLIMIT_AS, (used + (64 << 20),) * 2)\n"
+        "try:\n"
+        "    mp.Mesh(vertices, faces)\n"
+        "except ValueError as e:\n"
+        "    print(e)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    assert "<arrays>: out of memory while building the mesh" in done.stdout, done.stdout + done.stderr
