@@ -9,9 +9,16 @@
 #   scripts/test.sh            everything (what CI runs)
 #   scripts/test.sh ARGS       ctest ARGS only, e.g. -L fast or -R Monotone
 set -euo pipefail
+# Each step's time on stderr (docs/PERFORMANCE.md records a clean clone's).
+step_started=$SECONDS
+step_done() {
+  echo "test.sh: $1 took $((SECONDS - step_started)) s (total $SECONDS s)" >&2
+  step_started=$SECONDS
+}
 # Warnings are errors here, so a change that adds one does not land.
 CMAKE_OPTIONS="-DMESHPARTICLES_STRICT=ON ${CMAKE_OPTIONS:-}"
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
+step_done "install and build"
 cd "$ROOT/build"
 # Tests run on PoCL whatever else the machine has, unless the caller chose.
 export MESHPARTICLES_DEVICE="${MESHPARTICLES_DEVICE:-Portable Computing Language}"
@@ -19,8 +26,13 @@ if (($#)); then
   exec ctest --output-on-failure --parallel "$(nproc)" "$@"
 fi
 ctest --output-on-failure --parallel "$(nproc)"
+step_done "ctest"
 "$ROOT/scripts/sanitize.sh" fast
+step_done "sanitizer build and fast tests"
 # Against build/meshparticles too: the module's particles are the program's.
 MESHPARTICLES_CLI="$ROOT/build/meshparticles" "$ROOT/scripts/test_python.sh"
+step_done "Python package build and tests"
 "$ROOT/scripts/fuzz.sh" 120
+step_done "fuzz build and run"
 "$ROOT/scripts/real_meshes.sh" --subset
+step_done "real meshes"
