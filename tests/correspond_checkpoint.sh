@@ -14,6 +14,8 @@
 #   lock     a second run into the --out of one in progress is refused in one
 #            line; the first ends with its own outputs
 set -euo pipefail
+# Under the sanitizer build, its runtime wants to come first; the shim only wraps rename().
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0"
 bin=$1 shim=$2 work=$3
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"

@@ -116,6 +116,7 @@ CorrespondCheckpoint::CorrespondCheckpoint(const std::filesystem::path& director
 }
 
 std::optional<nlohmann::json> CorrespondCheckpoint::read_values(const std::string& name) const {
+  if (removed_) return std::nullopt;
   const std::filesystem::path file = entry_file(folder_, name);
   std::error_code error;
   if (!std::filesystem::exists(file, error)) return std::nullopt;
@@ -125,13 +126,19 @@ std::optional<nlohmann::json> CorrespondCheckpoint::read_values(const std::strin
 }
 
 void CorrespondCheckpoint::refuse(const std::string& name, const std::string& why) const {
-  std::error_code error;
-  std::filesystem::remove_all(folder_, error);
+  {
+    const std::lock_guard lock(writing_);
+    removed_ = true;
+    std::error_code error;
+    std::filesystem::remove_all(folder_, error);
+  }
   throw UserError(entry_file(folder_, name).string() + " is damaged (" + why + "): removed " + folder_.string() +
                   "; run the command again to start anew");
 }
 
 void CorrespondCheckpoint::write(const std::string& name, const nlohmann::json& values) const {
+  const std::lock_guard lock(writing_);
+  if (removed_) return;
   const std::filesystem::path file = entry_file(folder_, name);
   create_directory_for(file.parent_path(), "checkpoint folder");
   const std::string values_text = json_text(values);

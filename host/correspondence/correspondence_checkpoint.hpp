@@ -16,7 +16,9 @@
 // checkpoint damaged, and the run removes it and starts anew. A decode that
 // finds values no run of this request could have written (an id past the
 // mesh, a row short) refuses in one line, after removing the checkpoint.
+#include <atomic>
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -62,6 +64,11 @@ class CorrespondCheckpoint {
 
   std::filesystem::path folder_;
   std::string request_digest_;
+  // Set once a damaged entry refused the run: the other threads of a stage
+  // neither read nor write the folder after it is removed (a write would
+  // make it again). Writes and the removal hold the mutex.
+  mutable std::atomic<bool> removed_{false};
+  mutable std::mutex writing_;
 };
 
 // "transfer/007": a stage's file for shape k.
