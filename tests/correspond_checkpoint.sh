@@ -17,19 +17,8 @@ set -euo pipefail
 # Under the sanitizer build, its runtime wants to come first; the shim only wraps rename().
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0"
 bin=$1 shim=$2 work=$3
-fail() { echo "FAIL: $*"; exit 1; }
-rm -rf "$work" && mkdir -p "$work"
-work=$(cd "$work" && pwd)
-"$bin" generate --population 5 --family ellipsoid --vertices 900 --seed 3 --out-dir "$work/shapes" 2> /dev/null
-options=("$work/shapes" -n 48 --samples 10 --refine-iterations 60)
-"$bin" correspond "${options[@]}" --out "$work/reference" > /dev/null 2> "$work/reference.log"
-[ -d "$work/reference/checkpoint" ] && fail "a finished run left its checkpoint"
+source "$(dirname "${BASH_SOURCE[0]}")/correspond_reference.sh"
 
-same() {  # same OUT WHAT: OUT's outputs are the reference's
-  diff -r "$work/reference" "$1" > "$work/diff.txt" || { head -5 "$work/diff.txt"; fail "$2: outputs differ from one uninterrupted run"; }
-  [ -d "$1/checkpoint" ] && fail "$2: the checkpoint was left"
-  echo "ok: $2"
-}
 # killed_at SUFFIX WHEN OUT: the run into OUT killed at the rename onto SUFFIX.
 # (Through a second bash, whose note of the kill goes to the log.)
 killed_at() {

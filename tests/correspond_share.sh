@@ -8,18 +8,7 @@
 #           then mpirun -n 2 killed after the packing, resumed by one process
 set -euo pipefail
 mode=$1 bin=$2 work=$3 mpiexec=${4:-}
-fail() { echo "FAIL: $*"; exit 1; }
-rm -rf "$work" && mkdir -p "$work"
-work=$(cd "$work" && pwd)
-"$bin" generate --population 5 --family ellipsoid --vertices 900 --seed 3 --out-dir "$work/shapes" 2> /dev/null
-options=("$work/shapes" -n 48 --samples 10 --refine-iterations 60)
-"$bin" correspond "${options[@]}" --out "$work/reference" > /dev/null 2> "$work/reference.log"
-[ -d "$work/reference/checkpoint" ] && fail "a finished run left its checkpoint"
-same() {  # same OUT WHAT: OUT's outputs are the reference's
-  diff -r "$work/reference" "$1" > "$work/diff.txt" || { head -5 "$work/diff.txt"; fail "$2: outputs differ from one uninterrupted process"; }
-  [ -d "$1/checkpoint" ] && fail "$2: the checkpoint was left"
-  echo "ok: $2"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/correspond_reference.sh"
 # kill_when FILE COMMAND...: starts COMMAND, kills it (and its children)
 # with SIGKILL as soon as FILE exists, or lets it finish.
 kill_when() {
