@@ -29,7 +29,10 @@ echo "ok: run"
 
 "$bin" batch "$odd" -n 2 --no-cache -q --out "$work/batch" >/dev/null || fail "batch: exit $?"
 valid_json "$work/batch/summary.json" '\\xff.off'
-echo "ok: batch"
+# Run again, the output is kept: the path it recorded (escaped) is the mesh's.
+"$bin" batch "$odd" -n 2 --no-cache --out "$work/batch" >/dev/null 2>"$work/batch_again.log" || fail "batch again: exit $?"
+grep -q "ok (kept: an earlier output" "$work/batch_again.log" || fail "batch again recomputed: $(cat "$work/batch_again.log")"
+echo "ok: batch, and again"
 
 errors=$("$bin" info "$work/"$'\xfd'-missing.off 2>&1 >/dev/null)
 code=$?
