@@ -37,7 +37,9 @@ EntryCheck check_entry(const std::filesystem::path& file, const std::string& nam
   const std::size_t header_end = text.find('\n');
   if (header_end == std::string::npos) return {std::nullopt, "it has no header line"};
   const nlohmann::json header = nlohmann::json::parse(text.substr(0, header_end), nullptr, false);
-  const auto field = [&](const char* key) { return header.is_object() ? header.value(key, nlohmann::json()) : nlohmann::json(); };
+  const auto field = [&](const char* key) {
+    return header.is_object() ? header.value(key, nlohmann::json()) : nlohmann::json();
+  };
   if (field("entry") != name) return {std::nullopt, "its header does not name it " + name};
   if (field("request") != request) return {std::nullopt, "its header names another request"};
   const std::string values_line = text.substr(header_end + 1);

@@ -142,7 +142,8 @@ std::vector<TemplateParticle> template_from_checkpoint(const nlohmann::json& kep
   for (std::size_t i = 0; i < message.size(); ++i) {
     const double value = message[i];
     const bool corner = i % 6 < 3;
-    const bool valid = corner ? value >= 0 && value < double(vertices) && value == std::floor(value) : std::isfinite(value);
+    const bool valid =
+        corner ? value >= 0 && value < double(vertices) && value == std::floor(value) : std::isfinite(value);
     if (!valid) throw std::invalid_argument((corner ? "vertex " : "weight ") + nlohmann::json(value).dump());
   }
   quality = quality_from_json(kept.at("quality"), message.size() / 6);
@@ -242,10 +243,11 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
     }
     const MeshAlignment::RunnerUp& runner_up = shape.alignment.runner_up;
     if (runner_up.rms_ratio < kAmbiguousPoseRatio) {
+      const double ratio = runner_up.rms_ratio;
       warn(shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
            " degrees from the one chosen fits the template " +
-           (runner_up.rms_ratio < 0.9995 ? format_number("%.1f%% better", 100 * (1 - runner_up.rms_ratio))
-                                         : format_number("within %.1f%%", std::max(0.0, 100 * (runner_up.rms_ratio - 1)))) +
+           (ratio < 0.9995 ? format_number("%.1f%% better", 100 * (1 - ratio))
+                           : format_number("within %.1f%%", std::max(0.0, 100 * (ratio - 1)))) +
            ": the shape's geometry barely tells them apart, and its particles may lie turned (fit_runner_up in "
            "summary.json)");
     }
@@ -292,10 +294,11 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   for_each_index(owned, share.threads(), [&](std::size_t k) {
     if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], request.quiet, {}));
     const SurfaceMesh& mesh = *meshes[k];
-    const auto kept = !checkpoint ? std::nullopt : checkpoint->read(shape_entry("transfer", k), [&](const nlohmann::json& values) {
+    const auto transferred = [&](const nlohmann::json& values) {
       return std::pair(alignment_from_json(values.at("alignment")),
                        locations_from_json(values.at("locations"), mesh.triangle_count(), particle_count));
-    });
+    };
+    const auto kept = checkpoint ? checkpoint->read(shape_entry("transfer", k), transferred) : std::nullopt;
     if (kept) {
       ShapeCorrespondence& shape = population.shapes[k];
       shape.mesh = request.meshes[k];
@@ -327,10 +330,11 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   const unsigned measure_threads = std::max(1u, share.threads() / unsigned(std::max<std::size_t>(owned.size(), 1)));
   std::vector<std::string> results(count);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
-    const auto kept = !checkpoint ? std::nullopt : checkpoint->read(shape_entry("settled", k), [&](const nlohmann::json& values) {
+    const auto settled = [&](const nlohmann::json& values) {
       check_shape_json(values, meshes[k]->vertex_count(), particle_count);
       return values;
-    });
+    };
+    const auto kept = checkpoint ? checkpoint->read(shape_entry("settled", k), settled) : std::nullopt;
     if (kept) {
       results[k] = json_text(*kept);
     } else {

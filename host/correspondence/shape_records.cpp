@@ -134,7 +134,8 @@ ShapeCorrespondence shape_from_json(const nlohmann::json& json) {
 
 void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::size_t particles) {
   if (json.at("vertices") != vertices) {
-    throw std::invalid_argument("a mesh of " + json.at("vertices").dump() + " vertices, not " + std::to_string(vertices));
+    throw std::invalid_argument("a mesh of " + json.at("vertices").dump() + " vertices, not " +
+                                std::to_string(vertices));
   }
   topology_from_json(json.at("topology"));
   const nlohmann::json& rows = json.at("locations");
