@@ -9,6 +9,7 @@
 #include <string>
 
 #include "backends/backend_descriptor.hpp"
+#include "backends/field_backend.hpp"
 #include "backends/update_kernel.hpp"
 #include "opencl/device_discovery.hpp"
 
@@ -17,7 +18,7 @@ namespace meshparticles {
 struct BackendRequest {
   // A backend of the table (backend_table.hpp). Empty in a RunRequest: the
   // default, which the run's distance store decides (plan_run).
-  std::string name = "field";
+  std::string name = field_backend().name;
   std::string device;                          // --device (device backends)
   std::optional<std::size_t> work_group_size;  // --wg
   std::optional<std::size_t> tile_size;        // --tile

@@ -11,7 +11,7 @@ class SerialBackend : public ParticleBackend {
  public:
   SerialBackend(const SurfaceMesh& mesh, const DistanceStore& distances, const EnergyParams& energy);
 
-  std::string device_name() const override { return "serial"; }
+  std::string device_name() const override { return kHostDevice; }
   void set_positions(std::span<const VertexId> positions) override;
   std::vector<VertexId> positions() override { return positions_; }
   IterationStats iterate(Scheme scheme, unsigned colors) override;

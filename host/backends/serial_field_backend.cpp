@@ -34,9 +34,10 @@ void SerialFieldBackend::field_after_move(std::size_t /*c*/, VertexId from, Vert
 }
 
 const BackendDescriptor& serial_field_backend() {
+  static constexpr const char* kName = "serial-field";
   static const BackendDescriptor descriptor = [] {
     BackendDescriptor d;
-    d.name = "serial-field";
+    d.name = kName;
     d.summary = "the field method in plain single-threaded C++, every scheme; the twin of field";
     d.field_method = true;
     d.default_scheme = Scheme::sequential;
@@ -47,7 +48,7 @@ const BackendDescriptor& serial_field_backend() {
         return std::make_unique<LocalFieldBackend>(inputs.mesh, *balls, inputs.energy, inputs.weights,
                                                    inputs.rebuild_every);
       }
-      return std::make_unique<SerialFieldBackend>(inputs.mesh, dense_table_for(inputs.distances, "serial-field"),
+      return std::make_unique<SerialFieldBackend>(inputs.mesh, dense_table_for(inputs.distances, kName),
                                                   inputs.energy, inputs.weights, inputs.rebuild_every);
     };
     return d;

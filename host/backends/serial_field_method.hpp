@@ -16,7 +16,7 @@ namespace meshparticles {
 
 class SerialFieldMethod : public ParticleBackend {
  public:
-  std::string device_name() const override { return "serial"; }
+  std::string device_name() const override { return kHostDevice; }
   void set_positions(std::span<const VertexId> positions) override;
   std::vector<VertexId> positions() override { return positions_; }
   IterationStats iterate(Scheme scheme, unsigned colors) override;

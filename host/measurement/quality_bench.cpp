@@ -1,5 +1,6 @@
 #include "measurement/quality_bench.hpp"
 
+#include "backends/serial_backend.hpp"
 #include "particles/initial_placement.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -44,11 +45,11 @@ QualityCase quality_case(const BenchRequest& bench, const PlannedCase& planned, 
   };
   add_start("random", Init::random);
   add_start("farthest", Init::farthest);
-  add_run("paper: v0 + sequential", "serial", Init::v0, Scheme::sequential);
+  add_run("paper: v0 + sequential", serial_backend().name, Init::v0, Scheme::sequential);
   std::optional<std::size_t> serial_default;  // an index: later rows may reallocate
   for (const CheckedBackend& checked : planned.backends) {
     add_run("default", checked.name(), Init::farthest, Scheme::monotone);
-    if (checked.name() == "serial") serial_default = result.rows.size() - 1;
+    if (checked.name() == serial_backend().name) serial_default = result.rows.size() - 1;
   }
   if (serial_default) {
     const double reference = result.rows[*serial_default].quality.energy;

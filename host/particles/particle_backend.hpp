@@ -30,10 +30,14 @@ struct DeviceTraffic {
   std::size_t host_waits = 0;
 };
 
+// The device a backend that runs on the host reports, in report.json and
+// bench tables, where an OpenCL backend reports its device's name.
+inline constexpr const char* kHostDevice = "serial";
+
 class ParticleBackend {
  public:
   virtual ~ParticleBackend() = default;
-  // "serial", or the OpenCL device's name.
+  // kHostDevice, or the OpenCL device's name.
   virtual std::string device_name() const = 0;
   virtual void set_positions(std::span<const VertexId> positions) = 0;
   virtual std::vector<VertexId> positions() = 0;

@@ -36,7 +36,7 @@ struct LocalBalls {
 };
 
 struct DefaultBackend {
-  std::string name;    // "field" or "serial-field"
+  std::string name;    // field_backend()'s or serial_field_backend()'s
   std::string reason;  // report.json's backend_from
   // On the table the same scheme on either, so the default run's particles
   // do not depend on which one the device picked (the twins make the same

@@ -13,6 +13,7 @@
 #include "mesh/point_insertion.hpp"
 #include "mesh/surface_walk.hpp"
 #include "particles/particle_file.hpp"
+#include "particles/particle_backend.hpp"
 #include "pipeline/default_backend.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
@@ -249,7 +250,7 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
 RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   RunResult result;
   result.plan = plan;
-  result.device = "serial";
+  result.device = kHostDevice;
   const RunRequest& request = plan.request;
   auto particles_started = std::chrono::steady_clock::now();
   const std::string& label = request.mesh_label;

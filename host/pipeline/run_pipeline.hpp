@@ -127,7 +127,7 @@ struct DistancesUsed {
 
 struct RunResult {
   RunPlan plan;
-  std::string device;      // "serial" or the OpenCL device's name
+  std::string device;      // kHostDevice or the OpenCL device's name
   DistancesUsed distances;
   // spread: the mesh the particles live on, the input refined; positions,
   // start and distance_to_nearest are on it. Null for paper (the input).

@@ -4,9 +4,11 @@
 #include <cstdio>
 
 #include "backends/backend_table.hpp"
+#include "backends/serial_backend.hpp"
 #include "common/atomic_file.hpp"
 #include "common/text_format.hpp"
 #include "measurement/paper_figures.hpp"
+#include "particles/particle_backend.hpp"
 
 namespace meshparticles {
 
@@ -31,13 +33,13 @@ const BenchRow* row_of(const BenchCase& bench, const std::string& backend) {
 }
 
 std::optional<double> our_speedup(const BenchCase& bench, const BenchRow& row) {
-  const BenchRow* serial = row_of(bench, "serial");
+  const BenchRow* serial = row_of(bench, serial_backend().name);
   if (!serial) return std::nullopt;
   return serial->mean_ms / row.mean_ms;
 }
 
 std::optional<double> paper_speedup(const BenchCase& bench, const std::string& backend) {
-  const auto cpu = paper_ms(bench, "serial"), ours = paper_ms(bench, backend);
+  const auto cpu = paper_ms(bench, serial_backend().name), ours = paper_ms(bench, backend);
   if (!cpu || !ours) return std::nullopt;
   return *cpu / *ours;
 }
@@ -208,7 +210,7 @@ void write_bench_csv(const std::filesystem::path& file, const std::string& devic
     auto optional = [](std::optional<double> value) { return value ? format_number("%.6g", *value) : std::string(); };
     for (const auto& bench : cases) {
       for (const auto& row : bench.rows) {
-        out << csv_field(row.kernel_ms ? device_name : "serial") << ',' << bench.mesh << ','
+        out << csv_field(row.kernel_ms ? device_name : kHostDevice) << ',' << bench.mesh << ','
             << bench.vertices << ',' << bench.particles << ',' << row.backend << ',' << scheme_name(row.scheme)
             << ',' << row.sizes << ',' << row.sizes_from << ',' << settings.iterations << ','
             << format_number("%.6g", row.mean_ms) << ',' << format_number("%.6g", row.timing.median_ms) << ','
