@@ -11,7 +11,7 @@ namespace meshparticles {
 
 // w(d); zero across components (d = +inf).
 inline double pair_weight(Potential potential, double d, double inv_two_sigma_sq) {
-  return potential == Potential::exp ? std::exp(-d * inv_two_sigma_sq) : std::exp(-d * d * inv_two_sigma_sq);
+  return std::exp(-distance_term(potential, d) * inv_two_sigma_sq);
 }
 
 // Candidate a comes before b: lower energy, then lower index (index 0 is the

@@ -18,7 +18,7 @@ inline constexpr std::size_t kMaxFieldParticles = std::size_t{1} << 22;
 
 // w(d) as the kernels compute it (particle_energy.h): in float.
 inline float pair_weight_float(Potential potential, float d, float inv_two_sigma_sq) {
-  return std::exp(-(potential == Potential::exp ? d : d * d) * inv_two_sigma_sq);
+  return std::exp(-distance_term(potential, d) * inv_two_sigma_sq);
 }
 
 // The weight as the table stores it: float32, or rounded to the nearest half

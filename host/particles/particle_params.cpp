@@ -43,7 +43,13 @@ WeightFormat parse_weight_format(const std::string& name) {
 
 std::string weight_format_name(WeightFormat format) { return format == WeightFormat::float32 ? "float" : "half"; }
 
-std::string potential_name(Potential potential) { return potential == Potential::exp ? "exp" : "gauss"; }
+std::string potential_name(Potential potential) {
+  switch (potential) {
+    case Potential::exp: return "exp";
+    case Potential::gauss: return "gauss";
+  }
+  return "?";
+}
 
 std::string scheme_name(Scheme scheme) {
   switch (scheme) {
@@ -70,7 +76,10 @@ double hexagonal_spacing(double area, std::size_t particle_count) {
 
 double default_sigma(Potential potential, double area, std::size_t particle_count) {
   const double d_hex = hexagonal_spacing(area, particle_count);
-  if (potential == Potential::exp) return std::sqrt(d_hex / 4.0);  // 2 sigma^2 = d_hex / 2
+  switch (potential) {
+    case Potential::exp: return std::sqrt(d_hex / 4.0);  // 2 sigma^2 = d_hex / 2
+    case Potential::gauss: return d_hex / 2.0;
+  }
   return d_hex / 2.0;
 }
 

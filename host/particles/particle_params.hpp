@@ -40,6 +40,19 @@ constexpr unsigned kDefaultColors = 16;
 // Whether the scheme splits particles into --colors groups.
 inline bool uses_colors(Scheme scheme) { return scheme == Scheme::colored || scheme == Scheme::monotone; }
 
+// The term of the distance in each potential's exponent, w(d) =
+// exp(-term(d) / (2 sigma^2)): d for exp, d^2 for gauss. The one place
+// the potentials differ in the energy; a switch without default, so that a
+// third potential does not compile (-Wswitch) until it says its term.
+template <typename Real>
+constexpr Real distance_term(Potential potential, Real d) {
+  switch (potential) {
+    case Potential::exp: return d;
+    case Potential::gauss: return d * d;
+  }
+  return d;
+}
+
 // The energy's parameters, shared by every backend.
 struct EnergyParams {
   Potential potential = Potential::exp;

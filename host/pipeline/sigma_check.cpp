@@ -27,7 +27,7 @@ void check_sigma_computable(const EnergyParams& energy) {
 }
 
 std::optional<std::string> degenerate_sigma_warning(const EnergyParams& energy, double d_hex) {
-  const double spacing = energy.potential == Potential::exp ? d_hex : d_hex * d_hex;
+  const double spacing = distance_term(energy.potential, d_hex);
   const double exponent = spacing * energy.inv_two_sigma_sq();
   const std::string given = "--sigma " + format_number("%g", energy.sigma) + " with d_hex " +
                             format_number("%.4g", d_hex) + ": two particles at that spacing weigh exp(-" +
