@@ -283,12 +283,10 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);
   const GeodesicMethod method = result.plan.march_method;
   const double cover_limit =
-      relax_rounds == 0 ? 0.0
-                        : kSpreadCoverShare * largest_finite(distance_to_nearest_particle(*solver, surface, result.start));
+      relax_rounds == 0 ? 0.0 : kSpreadCoverShare * geodesic_cover(*solver, surface, result.start);
   const std::vector<VertexId> swept_positions = result.outcome.positions;
   result.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
-    const double swept_cover =
-        relax_rounds == 0 ? 0.0 : largest_finite(distance_to_nearest_particle(*solver, surface, swept_positions));
+    const double swept_cover = relax_rounds == 0 ? 0.0 : geodesic_cover(*solver, surface, swept_positions);
     return relax_spacing(surface, swept_positions, d_hex, relax_rounds,
                          {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet);
   });

@@ -32,6 +32,10 @@ std::vector<float> distance_to_nearest_particle(const GeodesicSolver& solver, co
   return std::vector<float>(distances.begin(), distances.end());
 }
 
+double geodesic_cover(const GeodesicSolver& solver, const SurfaceMesh& mesh, std::span<const VertexId> positions) {
+  return largest_finite(distance_to_nearest_particle(solver, mesh, positions));
+}
+
 namespace {
 
 // Calls pair(i, j, d) once for every pair of particles within the store's

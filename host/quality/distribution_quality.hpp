@@ -40,6 +40,11 @@ std::vector<float> distance_to_nearest_particle(const SurfaceMesh& mesh, Geodesi
 std::vector<float> distance_to_nearest_particle(const GeodesicSolver& solver, const SurfaceMesh& mesh,
                                                 std::span<const VertexId> positions);
 
+// The geodesic covering radius of `positions`: the largest finite distance
+// from a vertex to its nearest particle (a component without particles
+// left out), by one solve of `solver`, built for `mesh`.
+double geodesic_cover(const GeodesicSolver& solver, const SurfaceMesh& mesh, std::span<const VertexId> positions);
+
 // `to_nearest`: distance_to_nearest_particle of these positions (the
 // covering radius comes from it). Nearest neighbours and the energy come
 // from `distances`: all pairs from a complete table, the pairs within reach
