@@ -36,7 +36,7 @@ BUILD_TYPE="${BUILD_TYPE:-Release}"
 # Extra -D options from the caller (scripts/test.sh builds with warnings as errors).
 read -r -a cmake_options <<< "${CMAKE_OPTIONS:-}"
 if [ ! -x "$ROOT/build/meshparticles" ]; then
-  echo "setup: building into $ROOT/build (the first build takes about 8 minutes on 2 cores)" >&2
+  echo "setup: building into $ROOT/build (the first build takes about 3 to 6 minutes on 2 cores)" >&2
 fi
 cmake -S "$ROOT" -B "$ROOT/build" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" "${cmake_options[@]}" >/dev/null
 # The build's own progress lines ([ 42%] Building ...) on stderr, so a long

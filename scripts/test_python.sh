@@ -5,7 +5,7 @@
 #   scripts/test_python.sh            build, install, test
 #   scripts/test_python.sh ARGS       pytest ARGS, e.g. -k geodesics
 # The wheel's CMake build is kept in build/python-wheel (git ignores build/);
-# a full build takes about 8 minutes on 2 cores.
+# a full build takes about 3 minutes on 2 cores.
 # Needs python3-venv, python3-dev and pybind11-dev (scripts/setup.sh lists
 # them). tests/python compares with build/meshparticles when it is there.
 set -euo pipefail
