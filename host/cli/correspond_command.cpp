@@ -174,7 +174,7 @@ void write_results(const CorrespondOptions& options, const std::vector<std::stri
                                                                {"correspondence_step", refinement.packing_correspondence_step}}}}},
                                   {"params", params},
                                   {"template", {{"mesh", names.front()},
-                                                {"topology", topology_json(population.template_topology)},
+                                                {"topology", topology_json(population.shapes.front().topology)},
                                                 {"quality", quality_json(population.template_quality)}}},
                                   {"warnings", population.warnings},
                                   {"shapes", shape_rows},

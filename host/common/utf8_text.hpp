@@ -9,11 +9,9 @@
 
 namespace meshparticles {
 
-// `text` unchanged when it is valid UTF-8; else with each stray byte as \xHH.
+// `text` unchanged when it is valid UTF-8 (no overlong forms, surrogates or
+// code points past U+10FFFF: what JSON writers refuse); else with each
+// stray byte as \xHH.
 std::string escaped_utf8(std::string_view text);
-
-// Whether `text` is valid UTF-8 (no overlong forms, surrogates or code
-// points past U+10FFFF: what JSON writers refuse).
-bool is_valid_utf8(std::string_view text);
 
 }  // namespace meshparticles

@@ -7,7 +7,6 @@
 
 #include "common/atomic_file.hpp"
 #include "common/json_text.hpp"
-#include "common/temporary_names.hpp"
 #include "common/user_error.hpp"
 #include "reports/file_digest.hpp"
 
@@ -56,7 +55,8 @@ EntryCheck check_entry(const std::filesystem::path& file, const std::string& nam
 
 // The first entry under `folder` that cannot be taken, as "transfer/002.json:
 // why"; empty when all can. Temporaries a killed write left (hidden names)
-// are not entries.
+// are not entries: the next write into their folder removes them, and the
+// folder goes with the outputs.
 std::string first_damaged_entry(const std::filesystem::path& folder, const std::string& request) {
   std::error_code error;
   for (auto it = std::filesystem::recursive_directory_iterator(folder, error);
@@ -72,15 +72,6 @@ std::string first_damaged_entry(const std::filesystem::path& folder, const std::
   }
   if (error) return "the folder cannot be read: " + error.message();
   return "";
-}
-
-void remove_stale_temporaries_under(const std::filesystem::path& folder) {
-  std::error_code error;
-  remove_stale_temporaries(folder);
-  for (auto it = std::filesystem::recursive_directory_iterator(folder, error);
-       !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
-    if (it->is_directory(error)) remove_stale_temporaries(it->path());
-  }
 }
 
 }  // namespace
@@ -100,7 +91,6 @@ CorrespondCheckpoint::CorrespondCheckpoint(const std::filesystem::path& director
     write(kRequestEntry, fingerprint);
     return;
   }
-  remove_stale_temporaries_under(folder_);
   const EntryCheck request = check_entry(entry_file(folder_, kRequestEntry), kRequestEntry, request_digest_);
   std::string why_anew;
   if (!request.values || *request.values != fingerprint) {

@@ -231,14 +231,15 @@ void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& par
 // torus's hole has no match on a sphere), and the model's modes describe
 // the mismatch; a shape whose pose another fits almost as well may lie turned.
 void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
+  const MeshTopology template_topology = population.shapes.front().topology;  // the template is shape 0
   const auto warn = [&](std::string line) {
     if (!quiet) std::cerr << "meshparticles: warning: " << line << "\n";
     population.warnings.push_back(std::move(line));
   };
   for (const ShapeCorrespondence& shape : population.shapes) {
-    if (shape.topology != population.template_topology) {
+    if (shape.topology != template_topology) {
       warn(shape.mesh.string() + " (" + describe(shape.topology) + ") is not of the template's topology (" +
-           describe(population.template_topology) +
+           describe(template_topology) +
            "): its particles cannot match the template's everywhere, and the model's modes describe the mismatch");
     }
     const MeshAlignment::RunnerUp& runner_up = shape.alignment.runner_up;
@@ -270,7 +271,6 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   std::vector<std::optional<SurfaceMesh>> meshes(count);
   meshes.front().emplace(load_mesh(request.meshes.front(), request.quiet, {}));
   const SurfaceMesh& template_mesh = *meshes.front();
-  population.template_topology = mesh_topology(template_mesh);
 
   // The leader samples the template and tells the others.
   std::vector<TemplateParticle> template_particles;

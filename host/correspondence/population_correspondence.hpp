@@ -45,13 +45,14 @@ struct ShapeCorrespondence {
   MeshTopology topology;                 // components, boundary loops, genus
   std::vector<ShapeLocation> locations;  // per particle: where it lies on this shape
   PointSet particles;                      // their positions, the shape's own coordinates
-  DistributionQuality quality;             // how evenly they cover the shape, as `quality` measures a file
+  DistributionQuality quality;             // how evenly they cover the shape, as `run` measures its own
 };
 
 struct PopulationCorrespondence {
   DistributionQuality template_quality;  // its own run's (on the leader)
-  MeshTopology template_topology;
-  // One line per shape whose topology is not the template's (on stderr too).
+  // What the result cannot promise, a line each (on stderr too): a shape of
+  // another topology than the template's (shapes.front()), a pose another fits
+  // almost as well.
   std::vector<std::string> warnings;
   std::vector<ShapeCorrespondence> shapes;
   JointRefinementRecord refinement;
