@@ -8,7 +8,7 @@
 #include <cstring>
 #include <string>
 
-#include "mesh/binary_values.hpp"
+#include "mesh/io/binary_values.hpp"
 
 namespace meshparticles::fuzzing {
 

@@ -9,7 +9,7 @@
 
 #include "common/user_error.hpp"
 #include "fuzz_checks.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "vtk_recipe_writers.hpp"
 
 namespace {

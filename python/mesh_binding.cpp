@@ -1,5 +1,5 @@
 // read_mesh and Mesh(vertices, faces): the command line's reader and checks
-// (mesh/mesh_reader.hpp, mesh/mesh_checks.hpp), so a mesh refused or warned
+// (mesh/io/mesh_reader.hpp, mesh/mesh_checks.hpp), so a mesh refused or warned
 // about there is refused or warned about here. Warnings go both to
 // Mesh.warnings and to Python's warnings module (meshparticles.MeshWarning).
 #include <cstdint>
@@ -13,8 +13,8 @@
 #include "common/memory_limits.hpp"
 #include "common/user_error.hpp"
 #include "common/utf8_text.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "mesh/mesh_checks.hpp"
-#include "mesh/mesh_reader.hpp"
 #include "mesh_object.hpp"
 
 namespace py = pybind11;

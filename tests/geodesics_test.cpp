@@ -12,8 +12,8 @@
 #include "geodesics/distance_table.hpp"
 #include "geodesics/geodesic_solver.hpp"
 #include "geodesics/memory_guard.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "mesh/mesh_generator.hpp"
-#include "mesh/mesh_reader.hpp"
 
 namespace meshparticles {
 namespace {

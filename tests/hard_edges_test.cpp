@@ -25,7 +25,7 @@
 #include "common/worker_threads.hpp"
 #include "geodesics/distance_table.hpp"
 #include "geodesics/memory_guard.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "opencl/runtime_environment.hpp"
 
 namespace meshparticles::testing {

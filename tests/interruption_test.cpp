@@ -15,7 +15,7 @@
 #include "common/interruption.hpp"
 #include "geodesics/distance_table.hpp"
 #include "geodesics/local_distances.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 
 namespace meshparticles::testing {
 namespace {

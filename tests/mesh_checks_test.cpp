@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/user_error.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 
 namespace meshparticles {
 namespace {

@@ -1,7 +1,7 @@
 // The readers, format by format: the dialects real files are written in, and
 // each class of broken file with its one-line message. Small cases are
 // written inline and read from memory, as the fuzz harness reads them.
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 
 #include <gtest/gtest.h>
 #include <zlib.h>
@@ -16,7 +16,7 @@
 #include <array>
 
 #include "common/user_error.hpp"
-#include "mesh/mesh_file.hpp"
+#include "mesh/io/mesh_file.hpp"
 
 namespace meshparticles {
 namespace {

@@ -11,7 +11,7 @@
 #include "backends/serial_backend.hpp"
 #include "geodesics/distance_table.hpp"
 #include "geodesics/local_distances.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "particles/particle_params.hpp"
 #include "pipeline/distances.hpp"
 

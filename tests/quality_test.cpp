@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "common/user_error.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "particle_test_support.hpp"
 #include "particles/particle_file.hpp"
 #include "quality/distribution_quality.hpp"

@@ -13,7 +13,7 @@
 
 #include "common/user_error.hpp"
 #include "common/version.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "particle_test_support.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "reports/run_outputs.hpp"

@@ -13,7 +13,7 @@
 #include <limits>
 
 #include "common/random.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "mesh/nearest_on_triangle.hpp"
 #include "mesh/point_insertion.hpp"
 #include "mesh/surface_walk.hpp"

@@ -11,7 +11,7 @@
 
 #include "common/random.hpp"
 #include "geodesics/local_distances.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "mesh/midpoint_refinement.hpp"
 #include "particles/particle_file.hpp"
 #include "particles/farthest_point_optimization.hpp"

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "mesh/io/mesh_reader.hpp"
 #include "mesh/mesh_generator.hpp"
-#include "mesh/mesh_reader.hpp"
 #include "mesh/mesh_topology.hpp"
 
 namespace meshparticles {

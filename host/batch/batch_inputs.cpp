@@ -7,7 +7,7 @@
 
 #include "common/input_file.hpp"
 #include "common/user_error.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 
 namespace meshparticles {
 

@@ -5,7 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "common/json_text.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "pipeline/mesh_input.hpp"
 
 namespace meshparticles {

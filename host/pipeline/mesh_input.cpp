@@ -3,8 +3,8 @@
 #include <iostream>
 
 #include "common/user_error.hpp"
+#include "mesh/io/mesh_reader.hpp"
 #include "mesh/mesh_generator.hpp"
-#include "mesh/mesh_reader.hpp"
 
 namespace meshparticles {
 

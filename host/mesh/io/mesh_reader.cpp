@@ -1,10 +1,10 @@
-#include "mesh/mesh_reader.hpp"
+#include "mesh/io/mesh_reader.hpp"
 
 #include <cctype>
 
 #include "common/user_error.hpp"
-#include "mesh/format_readers.hpp"
-#include "mesh/mesh_file.hpp"
+#include "mesh/io/format_readers.hpp"
+#include "mesh/io/mesh_file.hpp"
 
 namespace meshparticles {
 

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "common/user_error.hpp"
-#include "mesh/byte_cursor.hpp"
-#include "mesh/format_readers.hpp"
+#include "mesh/io/byte_cursor.hpp"
+#include "mesh/io/format_readers.hpp"
 #include "mesh/plural.hpp"
 
 namespace meshparticles {

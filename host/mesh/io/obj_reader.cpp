@@ -9,8 +9,8 @@
 #include <string>
 
 #include "common/user_error.hpp"
-#include "mesh/byte_cursor.hpp"
-#include "mesh/format_readers.hpp"
+#include "mesh/io/byte_cursor.hpp"
+#include "mesh/io/format_readers.hpp"
 
 namespace meshparticles {
 

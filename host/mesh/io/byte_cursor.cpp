@@ -1,4 +1,4 @@
-#include "mesh/byte_cursor.hpp"
+#include "mesh/io/byte_cursor.hpp"
 
 #include <charconv>
 
