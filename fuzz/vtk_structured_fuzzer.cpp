@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace meshparticles::fuzzing;
   const Recipe recipe = decode_recipe({data, size});
   const std::string file = write_recipe_file(recipe);
-  const MeshFormat format = is_legacy(recipe.encoding) ? MeshFormat::vtk : MeshFormat::vtp;
+  const MeshFormat& format = mesh_format_of(is_legacy(recipe.encoding) ? "recipe.vtk" : "recipe.vtp");
   check_reading([&] {
     PolygonSoup soup;
     try {

@@ -23,12 +23,12 @@ namespace {
 
 std::string data(const std::string& name) { return std::string(TEST_DATA_DIR) + "/" + name; }
 
-SurfaceMesh read_text(const std::string& text, MeshFormat format, std::vector<std::string>& warnings) {
+SurfaceMesh read_text(const std::string& text, const MeshFormat& format, std::vector<std::string>& warnings) {
   return build_checked_mesh(read_polygon_soup(std::span<const char>(text.data(), text.size()), format, "text"), "text",
                             warnings);
 }
 
-SurfaceMesh read_text(const std::string& text, MeshFormat format) {
+SurfaceMesh read_text(const std::string& text, const MeshFormat& format) {
   std::vector<std::string> warnings;
   SurfaceMesh mesh = read_text(text, format, warnings);
   EXPECT_TRUE(warnings.empty()) << warnings.front();
@@ -36,7 +36,7 @@ SurfaceMesh read_text(const std::string& text, MeshFormat format) {
 }
 
 // The message a refused text gives, or "accepted".
-std::string refusal(const std::string& text, MeshFormat format) {
+std::string refusal(const std::string& text, const MeshFormat& format) {
   try {
     read_text(text, format);
     return "accepted";
@@ -129,15 +129,15 @@ TEST(OffReader, EveryKeywordGeomviewAllowsAndNone) {
       {"", "0 0 0\n1 0 0\n0 1 0\n"},  // the keyword is optional
   };
   for (const auto& [keyword, vertices] : cases) {
-    const SurfaceMesh mesh = read_text(keyword + "3 1 0\n" + vertices + "3 0 1 2\n", MeshFormat::off);
+    const SurfaceMesh mesh = read_text(keyword + "3 1 0\n" + vertices + "3 0 1 2\n", mesh_format_of("text.off"));
     EXPECT_EQ(mesh.triangle_count(), 1u) << keyword;
     EXPECT_NEAR(mesh.area(), 0.5, 1e-12) << keyword;
   }
-  EXPECT_NEAR(read_text("OFF 3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", MeshFormat::off).area(), 0.5, 1e-12)
+  EXPECT_NEAR(read_text("OFF 3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", mesh_format_of("text.off")).area(), 0.5, 1e-12)
       << "counts on the keyword line, no edge count";
-  EXPECT_NEAR(read_text("OFF\r3 1 0\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2", MeshFormat::off).area(), 0.5, 1e-12)
+  EXPECT_NEAR(read_text("OFF\r3 1 0\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2", mesh_format_of("text.off")).area(), 0.5, 1e-12)
       << "old Mac line ends, no final line break";
-  EXPECT_NEAR(read_text("\xEF\xBB\xBFOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", MeshFormat::off).area(), 0.5, 1e-12)
+  EXPECT_NEAR(read_text("\xEF\xBB\xBFOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", mesh_format_of("text.off")).area(), 0.5, 1e-12)
       << "a UTF-8 byte order mark";
 }
 
@@ -151,7 +151,7 @@ TEST(OffReader, ContentAfterTheDeclaredFacesIsIgnoredWithAWarning) {
 }
 
 TEST(OffReader, RefusesWhatItCannotReadWithTheLine) {
-  const auto off = MeshFormat::off;
+  const MeshFormat& off = mesh_format_of("text.off");
   EXPECT_REFUSED("", off, "text: empty file");
   EXPECT_REFUSED("hello world\n", off, "text: line 1: expected an OFF keyword");
   EXPECT_REFUSED("OFF BINARY\n", off, "binary OFF is not supported");
@@ -202,12 +202,12 @@ TEST(PlyReader, AsciiVariants) {
   const SurfaceMesh mesh = read_text(header + vertices + "element material 1\r\nproperty list uint8 float names\r\n" +
                                          "element face 4\r\nproperty list uint8 int32 vertex_index\r\nend_header\r\n" +
                                          kTetrahedronPoints + "0\n" + kTetrahedronFaces,
-                                     MeshFormat::ply);
+                                     mesh_format_of("text.ply"));
   expect_tetrahedron(mesh, "ascii variants");
 }
 
 TEST(PlyReader, RefusesWhatItCannotRead) {
-  const auto ply = MeshFormat::ply;
+  const MeshFormat& ply = mesh_format_of("text.ply");
   const std::string start =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
   const std::string faces = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
@@ -255,9 +255,9 @@ TEST(PlyReader, RefusesWhatItCannotRead) {
 TEST(PlyReader, TruncatedBinaryAndDataAfterTheElements) {
   std::ifstream input(data("tetrahedron_binary_le.ply"), std::ios::binary);
   const std::string whole((std::istreambuf_iterator<char>(input)), std::istreambuf_iterator<char>());
-  EXPECT_REFUSED(whole.substr(0, whole.size() - 3), MeshFormat::ply, "text: file ends inside element 'face' record 3 of 4");
+  EXPECT_REFUSED(whole.substr(0, whole.size() - 3), mesh_format_of("text.ply"), "text: file ends inside element 'face' record 3 of 4");
   std::vector<std::string> warnings;
-  expect_tetrahedron(read_text(whole + "extra", MeshFormat::ply, warnings), "data after the elements");
+  expect_tetrahedron(read_text(whole + "extra", mesh_format_of("text.ply"), warnings), "data after the elements");
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0], "text: data after the elements the header declares ignored");
 }
@@ -318,7 +318,7 @@ TEST(VtkReader, ReadsPastBinaryStringArraysVtkWrote) {
 // Binary strings as vtkDataWriter writes them: each length big-endian in
 // 1, 2, 4 or 8 bytes, as the top two bits of its first byte say.
 TEST(VtkReader, ReadsPastBinaryStringsOfEveryLengthWidth) {
-  const auto vtk = MeshFormat::vtk;
+  const MeshFormat& vtk = mesh_format_of("text.vtk");
   const auto file = [](long long count, const std::string& strings) {
     // A triangle: three big-endian float points, one polygon of int.
     const std::string points("\0\0\0\0\0\0\0\0\0\0\0\0\x3f\x80\0\0\0\0\0\0\0\0\0\0"
@@ -342,7 +342,7 @@ TEST(VtkReader, ReadsPastBinaryStringsOfEveryLengthWidth) {
 }
 
 TEST(VtkReader, RefusesWhatItCannotRead) {
-  const auto vtk = MeshFormat::vtk;
+  const MeshFormat& vtk = mesh_format_of("text.vtk");
   const std::string head = "# vtk DataFile Version 3.0\ntitle\nASCII\nDATASET POLYDATA\n";
   const std::string points = "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
   EXPECT_EQ(refusal(head + points + "POLYGONS 1 4\n3 0 1 2\n", vtk), "accepted");
@@ -404,7 +404,7 @@ TEST(VtpReader, ReadsCompressedArraysOfOneBlockSmallerThanTheBlockSize) {
 }
 
 TEST(VtpReader, RefusesWhatItCannotRead) {
-  const auto vtp = MeshFormat::vtp;
+  const MeshFormat& vtp = mesh_format_of("text.vtp");
   const auto file = [](const std::string& attributes, const std::string& piece, const std::string& body) {
     return "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\"" +
            attributes + ">\n<PolyData>\n<Piece " + piece + ">\n" + body + "</Piece>\n</PolyData>\n</VTKFile>\n";
@@ -519,7 +519,7 @@ TEST(ObjReader, TextureAndNormalEntriesNegativeIndicesGroupsAndContinuations) {
 }
 
 TEST(ObjReader, RefusesWhatItCannotReadWithTheLine) {
-  const auto obj = MeshFormat::obj;
+  const MeshFormat& obj = mesh_format_of("text.obj");
   const std::string points = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   EXPECT_EQ(refusal(points + "f -3 -2 -1\n", obj), "accepted");
   EXPECT_REFUSED(points + "f -4 -2 -1\n", obj,
@@ -542,14 +542,14 @@ TEST(StlReader, MergesIdenticalCornersInFirstSeenOrder) {
       "solid two\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"
       "  endloop\n endfacet\n FACET NORMAL 0 0 1\n  OUTER LOOP\n   VERTEX 1 -0 0\n   VERTEX 1 1 0\n"
       "   VERTEX -0 1.0 0e0\n  ENDLOOP\n ENDFACET\nendsolid two\nsolid second_solid\nendsolid\n";
-  const SurfaceMesh mesh = read_text(text, MeshFormat::stl);
+  const SurfaceMesh mesh = read_text(text, mesh_format_of("text.stl"));
   EXPECT_EQ(mesh.vertex_count(), 4u);
   EXPECT_EQ(mesh.triangles()[1], (Triangle{1, 3, 2}));
   EXPECT_NEAR(mesh.area(), 1.0, 1e-12);
 }
 
 TEST(StlReader, RefusesWhatItCannotRead) {
-  const auto stl = MeshFormat::stl;
+  const MeshFormat& stl = mesh_format_of("text.stl");
   EXPECT_REFUSED("facet normal 0 0 1\n", stl, "text: not an STL file (too short for binary");
   EXPECT_REFUSED("solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 0\n", stl, "file ends inside a facet");
   EXPECT_REFUSED("solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 0\n vertex 1 0 0\n endloop\n endfacet\n", stl,
@@ -591,6 +591,19 @@ TEST(MeshFile, RefusesAFileOverTheSizeLimit) {
     ADD_FAILURE() << "a 70-byte file read under a 69-byte limit";
   } catch (const UserError& error) {
     EXPECT_EQ(std::string(error.what()), "t: 70 bytes, more than the 69 bytes a mesh file may have");
+  }
+}
+
+TEST(MeshReader, TheExtensionNamesTheFormatInAnyCase) {
+  EXPECT_EQ(mesh_extensions(), ".off, .obj, .ply, .stl, .vtk, .vtp");
+  EXPECT_EQ(std::string(mesh_format_of("a/Shape.VTP").extension), ".vtp");
+  EXPECT_EQ(mesh_format_of("shape.Off").read, mesh_format_of("shape.off").read);
+  try {
+    mesh_format_of("shape.xyz");
+    ADD_FAILURE() << ".xyz was taken for a mesh format";
+  } catch (const UserError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "shape.xyz: unknown mesh format '.xyz' (use .off, .obj, .ply, .stl, .vtk, .vtp)");
   }
 }
 

@@ -35,7 +35,7 @@ std::vector<std::filesystem::path> meshes_in_folder(const std::filesystem::path&
     if (entry.is_regular_file(error) && has_mesh_extension(entry.path())) meshes.push_back(entry.path());
   }
   if (error) throw UserError("cannot read folder " + folder.string() + ": " + error.message());
-  if (meshes.empty()) throw UserError("folder " + folder.string() + " holds no mesh file (" + kMeshExtensions + ")");
+  if (meshes.empty()) throw UserError("folder " + folder.string() + " holds no mesh file (" + mesh_extensions() + ")");
   std::sort(meshes.begin(), meshes.end());
   return meshes;
 }
@@ -56,7 +56,7 @@ std::vector<std::filesystem::path> meshes_in_list(const std::filesystem::path& l
     const std::filesystem::path mesh = list.parent_path() / entry;
     if (!has_mesh_extension(mesh)) {
       throw UserError(list.string() + ": line " + std::to_string(number) + ": '" + entry +
-                      "' is not a mesh file (" + kMeshExtensions + ")");
+                      "' is not a mesh file (" + mesh_extensions() + ")");
     }
     meshes.push_back(mesh.lexically_normal());
   }

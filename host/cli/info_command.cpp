@@ -61,7 +61,7 @@ void run_info(const InfoOptions& options) {
 void add_info_command(CLI::App& app) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* info = app.add_subcommand("info", "Print statistics of a mesh");
-  info->add_option("mesh", options->mesh, std::string("Mesh file (") + kMeshExtensions + ")")->required();
+  info->add_option("mesh", options->mesh, "Mesh file (" + mesh_extensions() + ")")->required();
   info->add_flag("--json", options->json, "Machine-readable output");
   add_strict_option(*info, options->read);
   info->callback([options] { run_info(*options); });

@@ -11,6 +11,7 @@
 
 namespace meshparticles {
 
+// A new format: its reader declared here, and its row in mesh_reader.cpp's table.
 PolygonSoup read_off(std::span<const char> bytes, const std::string& label);
 PolygonSoup read_ply(std::span<const char> bytes, const std::string& label);
 PolygonSoup read_obj(std::span<const char> bytes, const std::string& label);

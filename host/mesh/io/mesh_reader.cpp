@@ -1,5 +1,6 @@
 #include "mesh/io/mesh_reader.hpp"
 
+#include <array>
 #include <cctype>
 
 #include "common/user_error.hpp"
@@ -8,34 +9,36 @@
 
 namespace meshparticles {
 
-MeshFormat mesh_format_of(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".off") return MeshFormat::off;
-  if (ext == ".obj") return MeshFormat::obj;
-  if (ext == ".ply") return MeshFormat::ply;
-  if (ext == ".stl") return MeshFormat::stl;
-  if (ext == ".vtk") return MeshFormat::vtk;
-  if (ext == ".vtp") return MeshFormat::vtp;
-  throw UserError(file.string() + ": unknown mesh format '" + ext + "' (use " + kMeshExtensions + ")");
+namespace {
+
+// Every format read, in the order messages list them. A new format is its
+// reader's file and one row here.
+constexpr std::array kMeshFormats{
+    MeshFormat{".off", read_off}, MeshFormat{".obj", read_obj}, MeshFormat{".ply", read_ply},
+    MeshFormat{".stl", read_stl}, MeshFormat{".vtk", read_vtk}, MeshFormat{".vtp", read_vtp},
+};
+
+}  // namespace
+
+std::string mesh_extensions() {
+  std::string extensions;
+  for (const MeshFormat& format : kMeshFormats) {
+    extensions += (extensions.empty() ? "" : ", ") + std::string(format.extension);
+  }
+  return extensions;
 }
 
-PolygonSoup read_polygon_soup(std::span<const char> bytes, MeshFormat format, const std::string& label) {
-  switch (format) {
-    case MeshFormat::off:
-      return read_off(bytes, label);
-    case MeshFormat::obj:
-      return read_obj(bytes, label);
-    case MeshFormat::ply:
-      return read_ply(bytes, label);
-    case MeshFormat::stl:
-      return read_stl(bytes, label);
-    case MeshFormat::vtk:
-      return read_vtk(bytes, label);
-    case MeshFormat::vtp:
-      return read_vtp(bytes, label);
+const MeshFormat& mesh_format_of(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (const MeshFormat& format : kMeshFormats) {
+    if (ext == format.extension) return format;
   }
-  throw UserError(label + ": unknown mesh format");
+  throw UserError(file.string() + ": unknown mesh format '" + ext + "' (use " + mesh_extensions() + ")");
+}
+
+PolygonSoup read_polygon_soup(std::span<const char> bytes, const MeshFormat& format, const std::string& label) {
+  return format.read(bytes, label);
 }
 
 PolygonSoup read_polygon_soup(const std::filesystem::path& file) {

@@ -13,14 +13,19 @@
 
 namespace meshparticles {
 
-enum class MeshFormat { off, obj, ply, stl, vtk, vtp };
+// A format the program reads: the file extension that names it (lower case,
+// with its dot) and its reader. The formats are one table in mesh_reader.cpp.
+struct MeshFormat {
+  const char* extension;
+  PolygonSoup (*read)(std::span<const char> bytes, const std::string& label);
+};
 
-// The extensions of the formats read, for messages.
-inline constexpr const char* kMeshExtensions = ".off, .obj, .ply, .stl, .vtk, .vtp";
+// The extensions of the formats read, for messages: ".off, .obj, ...".
+std::string mesh_extensions();
 
 // The format a file name's extension (any case) names; throws UserError for
 // any other extension.
-MeshFormat mesh_format_of(const std::filesystem::path& file);
+const MeshFormat& mesh_format_of(const std::filesystem::path& file);
 
 // Reads and checks `file`. Throws UserError("FILE: problem") on anything the
 // program cannot use; appends one line per tolerated oddity to `warnings`.
@@ -30,6 +35,6 @@ SurfaceMesh read_mesh(const std::filesystem::path& file, std::vector<std::string
 // The parsing step alone, from a file (regular files up to
 // kMaxMeshFileBytes) or from bytes in memory; `label` starts every message.
 PolygonSoup read_polygon_soup(const std::filesystem::path& file);
-PolygonSoup read_polygon_soup(std::span<const char> bytes, MeshFormat format, const std::string& label);
+PolygonSoup read_polygon_soup(std::span<const char> bytes, const MeshFormat& format, const std::string& label);
 
 }  // namespace meshparticles
