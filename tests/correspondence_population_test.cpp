@@ -9,17 +9,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <numbers>
 #include <random>
 #include <set>
+#include <vector>
 
 #include "correspondence/mesh_alignment.hpp"
 #include "correspondence/population_correspondence.hpp"
-#include "correspondence/point_tree.hpp"
 #include "correspondence/template_deformation.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
+#include "mesh/point_cloud_tree.hpp"
 #include "particles/particle_params.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "shape_model/shape_model.hpp"
@@ -113,7 +115,7 @@ TEST(TemplateDeformation, FollowsAStretchedShapeBetterThanNearestPoints) {
   truth.array().rowwise() *= stretch.array();
 
   const PointSet deformed = deform_template(template_mesh, template_points, shape_points);
-  const PointTree shape_tree(shape_points);
+  const MatrixRowTree<PointSet> shape_tree(shape_points);
   double nearest_error = 0, deformed_error = 0;
   for (Eigen::Index v = 0; v < template_points.rows(); ++v) {
     nearest_error += (shape_points.row(shape_tree.nearest(template_points.row(v)).front()) - truth.row(v)).norm();
@@ -290,6 +292,28 @@ TEST_F(SmallPopulation, TheSamePopulationMovedGivesTheSameModel) {
   const ShapeModel b = build_shape_model(moved_sets, true, 10, 1, true);
   EXPECT_NEAR(a.quality.compactness[0], b.quality.compactness[0], 0.05);  // 0.94 and 0.97 here
   EXPECT_NEAR(a.quality.compactness[1], b.quality.compactness[1], 0.05);
+}
+
+// The one k-d tree over a PointSet's rows: the nearest rows, nearest first,
+// as a search of every row finds them.
+TEST(MatrixRowTree, FindsTheNearestRowsInOrder) {
+  std::mt19937_64 random(49);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  PointSet points(400, 3);
+  for (Eigen::Index i = 0; i < points.rows(); ++i) points.row(i) << uniform(random), uniform(random), uniform(random);
+  const MatrixRowTree<PointSet> tree(points);
+  for (int q = 0; q < 20; ++q) {
+    const Eigen::RowVector3d query(uniform(random), uniform(random), uniform(random));
+    std::vector<std::uint32_t> all(std::size_t(points.rows()));
+    for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+    std::sort(all.begin(), all.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return (points.row(a) - query).squaredNorm() < (points.row(b) - query).squaredNorm();
+    });
+    all.resize(8);
+    EXPECT_EQ(tree.nearest(query, 8), all);
+  }
+  EXPECT_EQ(tree.nearest(points.row(7)).front(), 7u);
+  EXPECT_EQ(tree.nearest(points.row(0), 1000).size(), 400u);  // no more than there are
 }
 
 }  // namespace

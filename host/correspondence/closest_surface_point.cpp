@@ -13,7 +13,8 @@ Vec3 as_vec3(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 }  // namespace
 
 SurfaceHit closest_surface_point(const SurfaceMesh& mesh, const VertexTriangles& around, const PointSet& points,
-                                 const PointTree& tree, const Eigen::RowVector3d& query, std::size_t candidates) {
+                                 const MatrixRowTree<PointSet>& tree, const Eigen::RowVector3d& query,
+                                 std::size_t candidates) {
   SurfaceHit best;
   best.distance = std::numeric_limits<double>::infinity();
   const Eigen::Vector3d p = query.transpose();

@@ -5,9 +5,10 @@
 // one of them).
 #include <array>
 
-#include "correspondence/point_tree.hpp"
+#include "mesh/point_cloud_tree.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/vertex_triangles.hpp"
+#include "shape_model/point_sets.hpp"
 
 namespace meshparticles {
 
@@ -22,6 +23,7 @@ struct SurfaceHit {
 // nearest vertices; `points` are the mesh's vertices in the query's frame
 // and `tree` their k-d tree. Ties: the first triangle met.
 SurfaceHit closest_surface_point(const SurfaceMesh& mesh, const VertexTriangles& around, const PointSet& points,
-                                 const PointTree& tree, const Eigen::RowVector3d& query, std::size_t candidates = 8);
+                                 const MatrixRowTree<PointSet>& tree, const Eigen::RowVector3d& query,
+                                 std::size_t candidates = 8);
 
 }  // namespace meshparticles

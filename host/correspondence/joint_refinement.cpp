@@ -8,7 +8,7 @@
 
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
-#include "correspondence/point_tree.hpp"
+#include "mesh/point_cloud_tree.hpp"
 #include "particles/packing_relaxation.hpp"
 #include "particles/particle_params.hpp"
 #include "particles/spacing_relaxation.hpp"
@@ -87,7 +87,7 @@ std::vector<double> population_spacings(const std::vector<ShapeParticles>& shape
 // apart, each by kPush of its overlap. Adds the mean overlap (in spacings) to `overlap`.
 PointSet sampling_step(const PointSet& points, double spacing, double& overlap) {
   PointSet step = PointSet::Zero(points.rows(), 3);
-  const PointTree tree(points);
+  const MatrixRowTree<PointSet> tree(points);
   double total = 0;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     for (const Eigen::Index j : tree.nearest(points.row(i), kNeighbours)) {

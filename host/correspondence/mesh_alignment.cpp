@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-#include "correspondence/point_tree.hpp"
+#include "mesh/point_cloud_tree.hpp"
 
 namespace meshparticles {
 
@@ -64,7 +64,7 @@ struct RigidFit {
 
 // Iterative closest points: `moving` (already in the common frame) onto the
 // tree's points, rotation and translation only (both are at unit area).
-RigidFit closest_point_fit(const PointSet& moving, const PointSet& target, const PointTree& tree,
+RigidFit closest_point_fit(const PointSet& moving, const PointSet& target, const MatrixRowTree<PointSet>& tree,
                            std::size_t max_iterations) {
   RigidFit fit;
   PointSet current = moving;
@@ -154,7 +154,7 @@ MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& templat
     starts.push_back(turned);
   }
   const PointSet world = fit_points(vertex_points(mesh));
-  const PointTree tree(template_points);
+  const MatrixRowTree<PointSet> tree(template_points);
   std::vector<RigidFit> trials;
   std::size_t chosen = 0;
   for (std::size_t k = 0; k < starts.size(); ++k) {

@@ -15,9 +15,9 @@
 #include "common/user_error.hpp"
 #include "correspondence/closest_surface_point.hpp"
 #include "correspondence/joint_refinement.hpp"
-#include "correspondence/point_tree.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
+#include "mesh/point_cloud_tree.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
 #include "pipeline/run_pipeline.hpp"
@@ -69,7 +69,7 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   shape.alignment = align_to_template(mesh, template_points, template_frame);
   const PointSet world = vertex_points(mesh);
   const PointSet common = shape.alignment.to_common.apply(world);
-  const PointTree tree(common);
+  const MatrixRowTree<PointSet> tree(common);
   const VertexTriangles around = vertex_triangles(mesh.triangles(), mesh.vertex_count());
   const PointSet deformed = deform_template(template_mesh, template_points, common);
   const SurfaceWalk walk(mesh);

@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "correspondence/point_tree.hpp"
+#include "mesh/point_cloud_tree.hpp"
 
 namespace meshparticles {
 
@@ -30,7 +30,7 @@ void smooth_over(const SurfaceMesh& mesh, PointSet& field, int rounds) {
 
 PointSet deform_template(const SurfaceMesh& template_mesh, const PointSet& template_points, const PointSet& shape_points) {
   PointSet moved = template_points;
-  const PointTree shape_tree(shape_points);
+  const MatrixRowTree<PointSet> shape_tree(shape_points);
   const Eigen::Index count = moved.rows();
   for (const int rounds : kSmoothingRounds) {
     for (int fit = 0; fit < kFitsPerStage; ++fit) {
@@ -42,7 +42,7 @@ PointSet deform_template(const SurfaceMesh& template_mesh, const PointSet& templ
       for (Eigen::Index v = 0; v < count; ++v) {
         pull.row(v) = shape_points.row(shape_tree.nearest(moved.row(v)).front()) - moved.row(v);
       }
-      const PointTree template_tree(moved);
+      const MatrixRowTree<PointSet> template_tree(moved);
       for (Eigen::Index w = 0; w < shape_points.rows(); ++w) {
         const Eigen::Index v = template_tree.nearest(shape_points.row(w)).front();
         pull.row(v) += shape_points.row(w) - moved.row(v);

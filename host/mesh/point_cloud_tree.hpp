@@ -1,6 +1,10 @@
 #pragma once
-// nanoflann's k-d tree over a vector of points (mesh vertices, particles):
-// nearest-point and radius searches.
+// nanoflann's k-d tree over a set of points: a vector of points (mesh
+// vertices, particles) or the rows of a three-column matrix (an Eigen
+// PointSet, as correspondence holds its shapes): nearest-point and radius
+// searches.
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -24,7 +28,49 @@ struct PointCloud {
   }
 };
 
-using PointCloudTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3, std::uint32_t>;
+// The rows of a matrix of three columns as nanoflann's adaptor reads them
+// (the matrix must outlive the tree).
+template <typename Matrix>
+struct MatrixRows {
+  const Matrix& points;
+  std::size_t kdtree_get_point_count() const { return std::size_t(points.rows()); }
+  double kdtree_get_pt(std::size_t i, std::size_t axis) const {
+    return points(typename Matrix::Index(i), typename Matrix::Index(axis));
+  }
+  template <typename Box>
+  bool kdtree_get_bbox(Box& /*unused*/) const {
+    return false;
+  }
+};
+
+template <typename Cloud>
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3, std::uint32_t>;
+using PointCloudTree = KdTree<PointCloud>;
+
+// A tree over the rows of a matrix, holding its adaptor, with the one
+// search correspondence asks of it.
+template <typename Matrix>
+class MatrixRowTree {
+ public:
+  explicit MatrixRowTree(const Matrix& points) : rows_{points}, tree_(3, rows_) {}
+  MatrixRowTree(const MatrixRowTree&) = delete;  // the tree reads rows_ where it is
+  MatrixRowTree& operator=(const MatrixRowTree&) = delete;
+
+  // The `count` nearest rows to `query` (nearest first; ties: as the tree
+  // returns them, which is deterministic for the same points).
+  template <typename Row>
+  std::vector<std::uint32_t> nearest(const Row& query, std::size_t count = 1) const {
+    count = std::min(count, rows_.kdtree_get_point_count());
+    std::vector<std::uint32_t> indices(count);
+    std::vector<double> squared(count);
+    const double at[3] = {query(0), query(1), query(2)};
+    const std::size_t found = tree_.knnSearch(at, count, indices.data(), squared.data());
+    return std::vector<std::uint32_t>(indices.begin(), indices.begin() + std::ptrdiff_t(found));
+  }
+
+ private:
+  MatrixRows<Matrix> rows_;
+  KdTree<MatrixRows<Matrix>> tree_;
+};
 
 }  // namespace meshparticles
