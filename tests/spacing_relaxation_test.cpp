@@ -83,12 +83,12 @@ TEST(PointInsertion, PointsBecomeVerticesWhereTheyWere) {
   const SurfaceMesh input = committed("torus.off");
   const RefinedMesh refined = refine_by_midpoints(input, 1);
   const SurfaceMesh& mesh = refined.mesh;
-  std::vector<TrianglePoint> points = {
-      {0, {0.2, 0.3, 0.5}},       // inside
-      {0, {0.6, 0.3, 0.1}},       // inside the same triangle, after the first split it
-      {5, {0.5, 0.495, 0.005}},   // within the snap of an edge: split there
-      {9, {0.995, 0.003, 0.002}}, // within the snap of a corner: that corner
-      {12, {1.0 / 3, 1.0 / 3, 1.0 / 3}},
+  std::vector<SurfaceLocation> points = {
+      {0, {0.2, 0.3, 0.5}, {}},       // inside
+      {0, {0.6, 0.3, 0.1}, {}},       // inside the same triangle, after the first split it
+      {5, {0.5, 0.495, 0.005}, {}},   // within the snap of an edge: split there
+      {9, {0.995, 0.003, 0.002}, {}}, // within the snap of a corner: that corner
+      {12, {1.0 / 3, 1.0 / 3, 1.0 / 3}, {}},
   };
   const auto& x = mesh.positions();
   const InsertedPoints inserted = insert_points(refined, input, points);

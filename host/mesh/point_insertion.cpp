@@ -34,7 +34,7 @@ class Inserter {
     }
   }
 
-  VertexId insert(const TrianglePoint& point, double snap) {
+  VertexId insert(const SurfaceLocation& point, double snap) {
     const Triangle& first = original_[point.triangle];
     const Vec3 x = at_weights(point.weights, positions_[first[0]], positions_[first[1]], positions_[first[2]]);
     // The piece of the original triangle that holds x now.
@@ -180,12 +180,12 @@ class Inserter {
 
 }  // namespace
 
-InsertedPoints insert_points(const RefinedMesh& mesh, const SurfaceMesh& input, const std::vector<TrianglePoint>& points,
+InsertedPoints insert_points(const RefinedMesh& mesh, const SurfaceMesh& input, const std::vector<SurfaceLocation>& points,
                              double snap) {
   Inserter inserter(mesh, input);
   std::vector<VertexId> vertices;
   vertices.reserve(points.size());
-  for (const TrianglePoint& point : points) vertices.push_back(inserter.insert(point, snap));
+  for (const SurfaceLocation& point : points) vertices.push_back(inserter.insert(point, snap));
   return {inserter.finish(mesh.levels), std::move(vertices)};
 }
 

@@ -10,15 +10,9 @@
 #include <vector>
 
 #include "mesh/midpoint_refinement.hpp"
+#include "mesh/surface_location.hpp"
 
 namespace meshparticles {
-
-// A point of a triangle of a mesh: weights of its corners, non-negative,
-// summing to 1.
-struct TrianglePoint {
-  std::uint32_t triangle = 0;
-  std::array<double, 3> weights{};
-};
 
 // A point within this barycentric weight of an edge is moved onto the edge
 // (and within it of a corner, onto the corner): no triangle thinner than
@@ -32,11 +26,12 @@ struct InsertedPoints {
   std::vector<VertexId> vertices;  // per point, in order
 };
 
-// `points` lie on triangles of `mesh.mesh`, which refines `input`. The
-// mesh's vertices keep their ids; new vertices follow, one per point that
-// is not a corner. Two points at one place give one vertex. Each new
-// vertex's on_input is the input triangle holding it, with its weights.
-InsertedPoints insert_points(const RefinedMesh& mesh, const SurfaceMesh& input, const std::vector<TrianglePoint>& points,
-                             double snap = kInsertionSnap);
+// `points` lie on triangles of `mesh.mesh`, which refines `input` (their
+// triangles and weights are read). The mesh's vertices keep their ids; new
+// vertices follow, one per point that is not a corner. Two points at one
+// place give one vertex. Each new vertex's on_input is the input triangle
+// holding it, with its weights.
+InsertedPoints insert_points(const RefinedMesh& mesh, const SurfaceMesh& input,
+                             const std::vector<SurfaceLocation>& points, double snap = kInsertionSnap);
 
 }  // namespace meshparticles

@@ -8,16 +8,11 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/vertex_triangles.hpp"
 
 namespace meshparticles {
-
-struct SurfaceLocation {
-  std::uint32_t triangle = 0;
-  std::array<double, 3> weights{};
-  Vec3 at;
-};
 
 class SurfaceWalk {
  public:

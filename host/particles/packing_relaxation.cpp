@@ -170,11 +170,13 @@ std::vector<Vec3> PackingRelaxation::normals() const {
   return normals;
 }
 
-std::vector<std::optional<TrianglePoint>> PackingRelaxation::points() const {
-  std::vector<std::optional<TrianglePoint>> points(particles_.size());
+std::vector<std::optional<SurfaceLocation>> PackingRelaxation::points() const {
+  std::vector<std::optional<SurfaceLocation>> points(particles_.size());
   for (std::size_t k = 0; k < particles_.size(); ++k) {
     const Particle& p = particles_[k];
-    if (!p.fixed) points[order_[k]] = TrianglePoint{p.triangle, walk_.walk(p.triangle, p.at).weights};
+    if (p.fixed) continue;
+    const SurfaceLocation reached = walk_.walk(p.triangle, p.at);
+    points[order_[k]] = SurfaceLocation{p.triangle, reached.weights, reached.at};
   }
   return points;
 }

@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-#include "mesh/point_insertion.hpp"
+#include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/surface_walk.hpp"
 
@@ -56,7 +56,7 @@ class PackingRelaxation {
   std::vector<Vec3> normals() const;  // zero for a fixed particle
 
   // In the caller's order: none for a fixed particle.
-  std::vector<std::optional<TrianglePoint>> points() const;
+  std::vector<std::optional<SurfaceLocation>> points() const;
   std::vector<SurfaceLocation> locations() const;  // fixed ones: their start
 
   const std::vector<Particle>& particles() const { return particles_; }

@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-#include "mesh/point_insertion.hpp"
+#include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "particles/packing_relaxation.hpp"
 
@@ -22,7 +22,7 @@ namespace meshparticles {
 // A state the relaxation passed: the most spread one within a cover limit.
 struct RelaxationCandidate {
   // None for a particle on a vertex in no triangle, which stays where it is.
-  std::vector<std::optional<TrianglePoint>> points;
+  std::vector<std::optional<SurfaceLocation>> points;
   double spacing = 0;      // the smallest straight-line spacing
   double cover = 0;        // straight_cover, scaled as at the start (relax_spacing)
   std::size_t round = 0;   // 0: the start (then `points` are its vertices)

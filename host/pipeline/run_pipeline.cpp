@@ -236,11 +236,7 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
   result.evening = naming_memory_failures(request.mesh_label, "evening the spacing", [&] {
     return even_out(surface, solver, std::move(from), limits, request.quiet);
   });
-  std::vector<TrianglePoint> points;
-  for (const SurfaceLocation& location : result.evening->points) {
-    points.push_back({location.triangle, location.weights});
-  }
-  InsertedPoints inserted = insert_points(*working, mesh, points);
+  InsertedPoints inserted = insert_points(*working, mesh, result.evening->points);
   result.outcome.positions = std::move(inserted.vertices);
   working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
 }
@@ -295,7 +291,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   for (std::size_t k = 0; k < relaxation.candidates.size() && relaxation.kept == relaxation.candidates.size(); ++k) {
     const RelaxationCandidate& candidate = relaxation.candidates[k];
     if (candidate.round == 0 || (k > 0 && candidate.round == relaxation.candidates[k - 1].round)) continue;
-    std::vector<TrianglePoint> moving;
+    std::vector<SurfaceLocation> moving;
     std::vector<std::size_t> movers;
     for (std::size_t i = 0; i < candidate.points.size(); ++i) {
       if (!candidate.points[i]) continue;

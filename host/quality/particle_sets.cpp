@@ -73,7 +73,7 @@ std::vector<SnappedParticles> place_on_vertices(RefinedMesh& measuring, const Su
   const SurfaceMesh& mesh = measuring.mesh;
   const NearestSurfacePoint nearest_point(mesh);
   std::vector<SnappedParticles> placed;
-  std::vector<TrianglePoint> off_vertices;
+  std::vector<SurfaceLocation> off_vertices;
   std::vector<std::pair<std::size_t, std::size_t>> which;  // (set, point) of each in off_vertices
   for (std::size_t k = 0; k < sets.size(); ++k) {
     placed.push_back(snap_to_vertices(mesh, sets[k]));
@@ -82,7 +82,7 @@ std::vector<SnappedParticles> place_on_vertices(RefinedMesh& measuring, const Su
       if (distance(mesh.positions()[nearest], sets[k][i]) <= kOnVertexExactly * mesh.mean_edge_length()) continue;
       const std::optional<SurfaceLocation> location = nearest_point.find(sets[k][i]);
       if (!location) continue;
-      off_vertices.push_back({location->triangle, location->weights});
+      off_vertices.push_back(*location);
       which.emplace_back(k, i);
     }
   }

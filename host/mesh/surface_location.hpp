@@ -1,0 +1,21 @@
+#pragma once
+// Where a point lies on a surface, in the two vocabularies the program uses:
+// on a mesh it holds (a triangle of that SurfaceMesh, its weights and the
+// point), and in a file's terms (a triangle's corners as the mesh file
+// numbers its vertices, and their weights) for what is written or kept.
+#include <array>
+#include <cstdint>
+
+#include "mesh/surface_mesh.hpp"
+
+namespace meshparticles {
+
+// A point of a triangle of a mesh: weights of its corners, non-negative and
+// summing to 1, and the point they give.
+struct SurfaceLocation {
+  std::uint32_t triangle = 0;
+  std::array<double, 3> weights{};
+  Vec3 at;
+};
+
+}  // namespace meshparticles
