@@ -73,7 +73,7 @@ py::array_t<std::int64_t> triangles(const RunOutput& output) {
   py::array_t<std::int64_t> out({py::ssize_t(output.locations.size()), py::ssize_t(3)});
   auto o = out.mutable_unchecked<2>();
   for (std::size_t i = 0; i < output.locations.size(); ++i) {
-    for (py::ssize_t k = 0; k < 3; ++k) o(i, k) = output.locations[i].corners[std::size_t(k)];
+    for (py::ssize_t k = 0; k < 3; ++k) o(i, k) = output.locations[i].on_input.corners[std::size_t(k)];
   }
   return out;
 }
@@ -82,7 +82,7 @@ py::array_t<double> weights(const RunOutput& output) {
   py::array_t<double> out({py::ssize_t(output.locations.size()), py::ssize_t(3)});
   auto o = out.mutable_unchecked<2>();
   for (std::size_t i = 0; i < output.locations.size(); ++i) {
-    for (py::ssize_t k = 0; k < 3; ++k) o(i, k) = output.locations[i].weights[std::size_t(k)];
+    for (py::ssize_t k = 0; k < 3; ++k) o(i, k) = output.locations[i].on_input.weights[std::size_t(k)];
   }
   return out;
 }

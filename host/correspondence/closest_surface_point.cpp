@@ -27,7 +27,7 @@ SurfaceHit closest_surface_point(const SurfaceMesh& mesh, const VertexTriangles&
       const Eigen::Vector3d at = weights[0] * a + weights[1] * b + weights[2] * c;
       const double distance = (at - p).norm();
       if (distance < best.distance) {
-        best = {corners, weights, at.transpose(), distance};
+        best = {{t, weights, as_vec3(at)}, distance};
       }
     }
   }

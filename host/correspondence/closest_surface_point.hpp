@@ -3,9 +3,8 @@
 // barycentric weights, found among the triangles around the query's nearest
 // vertices (on a mesh of well-shaped triangles the nearest point lies in
 // one of them).
-#include <array>
-
 #include "mesh/point_cloud_tree.hpp"
+#include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/vertex_triangles.hpp"
 #include "shape_model/point_sets.hpp"
@@ -13,9 +12,7 @@
 namespace meshparticles {
 
 struct SurfaceHit {
-  Triangle corners{};                 // surface vertex ids
-  std::array<double, 3> weights{};    // non-negative, summing to 1
-  Eigen::RowVector3d at;              // in the coordinates of `points`
+  SurfaceLocation location;  // `at` in the coordinates of `points`
   double distance = 0;
 };
 

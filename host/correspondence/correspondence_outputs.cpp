@@ -61,11 +61,11 @@ void write_correspondence(const std::filesystem::path& directory, const Populati
       write_new_file(staging / (stems[s] + ".csv"), [&](std::ostream& out) {
         out << "particle,vertex,x,y,z,corner_a,corner_b,corner_c,weight_a,weight_b,weight_c\n";
         for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
-          const ShapeLocation& at = shape.locations[std::size_t(i)];
+          const InputLocation& at = shape.locations[std::size_t(i)];
           std::snprintf(line, sizeof line, "%lld,%u,%.9g,%.9g,%.9g,%u,%u,%u,%.17g,%.17g,%.17g\n",
-                        static_cast<long long>(i), unsigned(at.vertex), shape.particles(i, 0), shape.particles(i, 1),
-                        shape.particles(i, 2), unsigned(at.corners[0]), unsigned(at.corners[1]),
-                        unsigned(at.corners[2]), at.weights[0], at.weights[1], at.weights[2]);
+                        static_cast<long long>(i), unsigned(at.heaviest_corner()), shape.particles(i, 0),
+                        shape.particles(i, 1), shape.particles(i, 2), unsigned(at.corners[0]),
+                        unsigned(at.corners[1]), unsigned(at.corners[2]), at.weights[0], at.weights[1], at.weights[2]);
           out << line;
         }
       });

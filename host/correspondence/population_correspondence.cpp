@@ -17,6 +17,7 @@
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
+#include "mesh/midpoint_refinement.hpp"
 #include "mesh/point_cloud_tree.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
@@ -51,17 +52,13 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
   return measure_point_sets(mesh, request).sets.front().quality;
 }
 
-// The template's particles as its vertices' weights, so that they follow the template as it deforms.
-struct TemplateParticle {
-  Triangle corners{};  // template vertex ids
-  std::array<double, 3> weights{};
-};
-
 // A shape aligned onto the template, and the template's particles carried
-// onto its surface (the deformed template's, each to the nearest surface point).
+// onto its surface (the deformed template's, each to the nearest surface
+// point). The template's particles are points of it by its vertices'
+// weights (SurfacePoint), so that they follow it as it deforms.
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const SurfaceMesh& template_mesh,
                              const PointSet& template_points, const Similarity& template_frame,
-                             const std::vector<TemplateParticle>& template_particles, ShapeParticles& carried) {
+                             const std::vector<SurfacePoint>& template_particles, ShapeParticles& carried) {
   ShapeCorrespondence shape;
   shape.mesh = file;
   shape.vertices = mesh.vertex_count();
@@ -74,16 +71,17 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   const PointSet deformed = deform_template(template_mesh, template_points, common);
   const SurfaceWalk walk(mesh);
   carried.mesh = &mesh;
-  for (const TemplateParticle& particle : template_particles) {
+  for (const SurfacePoint& particle : template_particles) {
     Eigen::RowVector3d query = Eigen::RowVector3d::Zero();
     for (std::size_t k = 0; k < 3; ++k) query += particle.weights[k] * deformed.row(Eigen::Index(particle.corners[k]));
-    const SurfaceHit hit = closest_surface_point(mesh, around, common, tree, query);
+    const SurfaceLocation hit = closest_surface_point(mesh, around, common, tree, query).location;
     // The same weights of the corners in the shape's own coordinates, reached
     // from a triangle of the first corner (the hit's triangle is next to it).
-    const Eigen::RowVector3d at = hit.weights[0] * world.row(hit.corners[0]) + hit.weights[1] * world.row(hit.corners[1]) +
-                                  hit.weights[2] * world.row(hit.corners[2]);
+    const Triangle& corners = mesh.triangles()[hit.triangle];
+    const Eigen::RowVector3d at = hit.weights[0] * world.row(corners[0]) + hit.weights[1] * world.row(corners[1]) +
+                                  hit.weights[2] * world.row(corners[2]);
     std::uint32_t triangle = 0;
-    walk.first_triangle(hit.corners[0], triangle);
+    walk.first_triangle(corners[0], triangle);
     carried.at.push_back(walk.walk(triangle, {at(0), at(1), at(2)}));
   }
   return shape;
@@ -96,14 +94,11 @@ void settle(ShapeCorrespondence& shape, const SurfaceMesh& mesh, const ShapePart
   for (std::size_t i = 0; i < particles.at.size(); ++i) {
     const SurfaceLocation& at = particles.at[i];
     const Triangle& corners = mesh.triangles()[at.triangle];
-    ShapeLocation location;
-    std::size_t heaviest = 0;
+    InputLocation location;
     for (std::size_t k = 0; k < 3; ++k) {
       location.corners[k] = mesh.input_id(corners[k]);
       location.weights[k] = at.weights[k];
-      if (at.weights[k] > at.weights[heaviest]) heaviest = k;
     }
-    location.vertex = location.corners[heaviest];
     shape.locations.push_back(location);
     shape.particles.row(Eigen::Index(i)) << at.at.x, at.at.y, at.at.z;
   }
@@ -111,17 +106,17 @@ void settle(ShapeCorrespondence& shape, const SurfaceMesh& mesh, const ShapePart
 }
 
 // The template's particles as doubles (corners, then weights), for the other processes.
-std::vector<double> template_message(const std::vector<TemplateParticle>& particles) {
+std::vector<double> template_message(const std::vector<SurfacePoint>& particles) {
   std::vector<double> message;
-  for (const TemplateParticle& particle : particles) {
+  for (const SurfacePoint& particle : particles) {
     for (const VertexId corner : particle.corners) message.push_back(double(corner));
     message.insert(message.end(), particle.weights.begin(), particle.weights.end());
   }
   return message;
 }
 
-std::vector<TemplateParticle> template_from_message(const std::vector<double>& message) {
-  std::vector<TemplateParticle> particles(message.size() / 6);
+std::vector<SurfacePoint> template_from_message(const std::vector<double>& message) {
+  std::vector<SurfacePoint> particles(message.size() / 6);
   for (std::size_t i = 0; i < particles.size(); ++i) {
     for (std::size_t k = 0; k < 3; ++k) {
       particles[i].corners[k] = VertexId(message[6 * i + k]);
@@ -133,8 +128,8 @@ std::vector<TemplateParticle> template_from_message(const std::vector<double>& m
 
 // The template's particles as a checkpoint keeps them, checked against the
 // template's `vertices` before they are used (std::invalid_argument).
-std::vector<TemplateParticle> template_from_checkpoint(const nlohmann::json& kept, std::size_t vertices,
-                                                       DistributionQuality& quality) {
+std::vector<SurfacePoint> template_from_checkpoint(const nlohmann::json& kept, std::size_t vertices,
+                                                   DistributionQuality& quality) {
   const std::vector<double> message = kept.at("particles").get<std::vector<double>>();
   if (message.empty() || message.size() % 6 != 0) {
     throw std::invalid_argument(std::to_string(message.size()) + " numbers, not 6 per particle");
@@ -152,8 +147,8 @@ std::vector<TemplateParticle> template_from_checkpoint(const nlohmann::json& kep
 
 // The template's run (or the checkpoint's), on the leader: its particles as
 // the template's vertices' weights, and its quality.
-std::vector<TemplateParticle> sample_template(const SurfaceMesh& template_mesh, const CorrespondRequest& request,
-                                              const CorrespondCheckpoint* checkpoint, DistributionQuality& quality) {
+std::vector<SurfacePoint> sample_template(const SurfaceMesh& template_mesh, const CorrespondRequest& request,
+                                          const CorrespondCheckpoint* checkpoint, DistributionQuality& quality) {
   if (checkpoint) {
     const auto kept = checkpoint->read("template", [&](const nlohmann::json& values) {
       return template_from_checkpoint(values, template_mesh.vertex_count(), quality);
@@ -165,12 +160,12 @@ std::vector<TemplateParticle> sample_template(const SurfaceMesh& template_mesh, 
   run.quiet = request.quiet;
   const RunResult result = run_pipeline(template_mesh, run);
   quality = result.quality;
-  std::vector<TemplateParticle> particles;
+  std::vector<SurfacePoint> particles;
   for (const ParticleLocation& location : particle_locations(template_mesh, result)) {
-    TemplateParticle particle;
+    SurfacePoint particle;
     for (std::size_t k = 0; k < 3; ++k) {
-      particle.corners[k] = *template_mesh.vertex_of_input_id(location.corners[k]);
-      particle.weights[k] = location.weights[k];
+      particle.corners[k] = *template_mesh.vertex_of_input_id(location.on_input.corners[k]);
+      particle.weights[k] = location.on_input.weights[k];
     }
     particles.push_back(particle);
   }
@@ -273,7 +268,7 @@ PopulationCorrespondence correspond_population(const CorrespondRequest& request,
   const SurfaceMesh& template_mesh = *meshes.front();
 
   // The leader samples the template and tells the others.
-  std::vector<TemplateParticle> template_particles;
+  std::vector<SurfacePoint> template_particles;
   if (share.leads()) {
     template_particles = sample_template(template_mesh, request, checkpoint, population.template_quality);
   }

@@ -18,6 +18,7 @@
 #include "correspondence/mesh_alignment.hpp"
 #include "correspondence/shape_share.hpp"
 #include "mesh/mesh_topology.hpp"
+#include "mesh/surface_location.hpp"
 #include "quality/distribution_quality.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -30,20 +31,12 @@ struct CorrespondRequest {
   bool quiet = false;
 };
 
-// A point of a shape's surface: a triangle (corner ids as in the file) and
-// barycentric weights, and the corner with the largest weight.
-struct ShapeLocation {
-  std::array<VertexId, 3> corners{};
-  std::array<double, 3> weights{};
-  VertexId vertex = 0;
-};
-
 struct ShapeCorrespondence {
   std::filesystem::path mesh;
   std::size_t vertices = 0;
   MeshAlignment alignment;
   MeshTopology topology;                 // components, boundary loops, genus
-  std::vector<ShapeLocation> locations;  // per particle: where it lies on this shape
+  std::vector<InputLocation> locations;  // per particle: where it lies on this shape
   PointSet particles;                      // their positions, the shape's own coordinates
   DistributionQuality quality;             // how evenly they cover the shape, as `run` measures its own
 };

@@ -96,10 +96,11 @@ MeshAlignment alignment_from_json(const nlohmann::json& json) {
 nlohmann::json shape_json(const ShapeCorrespondence& shape) {
   nlohmann::json locations = nlohmann::json::array();
   for (std::size_t i = 0; i < shape.locations.size(); ++i) {
-    const ShapeLocation& at = shape.locations[i];
+    const InputLocation& at = shape.locations[i];
     const Eigen::Index row = Eigen::Index(i);
     locations.push_back({at.corners[0], at.corners[1], at.corners[2], at.weights[0], at.weights[1], at.weights[2],
-                         at.vertex, shape.particles(row, 0), shape.particles(row, 1), shape.particles(row, 2)});
+                         at.heaviest_corner(), shape.particles(row, 0), shape.particles(row, 1),
+                         shape.particles(row, 2)});
   }
   return {{"mesh", shape.mesh.string()},
           {"vertices", shape.vertices},
@@ -119,13 +120,12 @@ ShapeCorrespondence shape_from_json(const nlohmann::json& json) {
   shape.particles.resize(Eigen::Index(rows.size()), 3);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const nlohmann::json& row = rows[i];
-    ShapeLocation at;
+    InputLocation at;  // column 6, its heaviest corner, follows from the weights
     for (std::size_t k = 0; k < 3; ++k) {
       at.corners[k] = row.at(k).get<VertexId>();
       at.weights[k] = row.at(3 + k).get<double>();
       shape.particles(Eigen::Index(i), Eigen::Index(k)) = row.at(7 + k).get<double>();
     }
-    at.vertex = row.at(6).get<VertexId>();
     shape.locations.push_back(at);
   }
   shape.quality = quality_from_json(json.at("quality"), rows.size());

@@ -4,6 +4,7 @@
 // point), and in a file's terms (a triangle's corners as the mesh file
 // numbers its vertices, and their weights) for what is written or kept.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "mesh/surface_mesh.hpp"
@@ -16,6 +17,22 @@ struct SurfaceLocation {
   std::uint32_t triangle = 0;
   std::array<double, 3> weights{};
   Vec3 at;
+};
+
+// A point of a mesh's surface as the mesh file numbers its vertices: a
+// triangle by its corners' input ids (SurfaceMesh::input_id) and their
+// weights, non-negative and summing to 1.
+struct InputLocation {
+  std::array<VertexId, 3> corners{};
+  std::array<double, 3> weights{};
+  // The corner with the largest weight (ties: the first).
+  VertexId heaviest_corner() const {
+    std::size_t heaviest = 0;
+    for (std::size_t k = 1; k < 3; ++k) {
+      if (weights[k] > weights[heaviest]) heaviest = k;
+    }
+    return corners[heaviest];
+  }
 };
 
 }  // namespace meshparticles

@@ -15,8 +15,8 @@ std::vector<ParticleLocation> particle_locations(const SurfaceMesh& input, const
     location.at = surface.positions()[positions[i]];
     location.input_vertex = input.input_id(result.working ? point.nearest_corner(input) : positions[i]);
     for (int k = 0; k < 3; ++k) {
-      location.corners[k] = input.input_id(point.corners[k]);
-      location.weights[k] = point.weights[k];
+      location.on_input.corners[k] = input.input_id(point.corners[k]);
+      location.on_input.weights[k] = point.weights[k];
     }
   }
   return locations;

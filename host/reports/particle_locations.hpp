@@ -3,9 +3,9 @@
 // files give it: its point, the nearest input vertex, and a triangle of the
 // input with barycentric weights - whether the run moved particles on the
 // input's vertices (paper) or on a refined copy of the surface (spread).
-#include <array>
 #include <vector>
 
+#include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -13,9 +13,8 @@ namespace meshparticles {
 
 struct ParticleLocation {
   Vec3 at;
-  VertexId input_vertex = 0;          // the nearest vertex of the input (a paper run's own), its file id
-  std::array<VertexId, 3> corners{};  // the triangle's vertices, file ids
-  std::array<double, 3> weights{};    // at = the weighted sum of the corners, up to rounding
+  VertexId input_vertex = 0;  // the nearest vertex of the input (a paper run's own), its file id
+  InputLocation on_input;     // at = the weighted sum of its corners, up to rounding
 };
 
 std::vector<ParticleLocation> particle_locations(const SurfaceMesh& input, const RunResult& result);

@@ -26,8 +26,8 @@ void write_csv(std::ostream& out, const std::vector<ParticleLocation>& locations
   for (std::size_t i = 0; i < locations.size(); ++i) {
     const ParticleLocation& l = locations[i];
     std::snprintf(line, sizeof line, "%zu,%u,%.9g,%.9g,%.9g,%u,%u,%u,%.17g,%.17g,%.17g\n", i, unsigned(l.input_vertex),
-                  l.at.x, l.at.y, l.at.z, unsigned(l.corners[0]), unsigned(l.corners[1]), unsigned(l.corners[2]),
-                  l.weights[0], l.weights[1], l.weights[2]);
+                  l.at.x, l.at.y, l.at.z, unsigned(l.on_input.corners[0]), unsigned(l.on_input.corners[1]),
+                  unsigned(l.on_input.corners[2]), l.on_input.weights[0], l.on_input.weights[1], l.on_input.weights[2]);
     out << line;
   }
 }
