@@ -13,12 +13,11 @@
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
 #include "common/user_error.hpp"
-#include "correspondence/closest_surface_point.hpp"
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
 #include "mesh/midpoint_refinement.hpp"
-#include "mesh/point_cloud_tree.hpp"
+#include "mesh/nearest_surface_point.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
 #include "pipeline/run_pipeline.hpp"
@@ -53,9 +52,11 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
 }
 
 // A shape aligned onto the template, and the template's particles carried
-// onto its surface (the deformed template's, each to the nearest surface
-// point). The template's particles are points of it by its vertices'
-// weights (SurfacePoint), so that they follow it as it deforms.
+// onto its surface (the deformed template's, each to the nearest point of
+// the surface, found exactly in the shape's own coordinates: a similarity
+// keeps the nearest point nearest). The template's particles are points of
+// it by its vertices' weights (SurfacePoint), so that they follow it as it
+// deforms.
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const SurfaceMesh& template_mesh,
                              const PointSet& template_points, const Similarity& template_frame,
                              const std::vector<SurfacePoint>& template_particles, ShapeParticles& carried) {
@@ -64,25 +65,16 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   shape.vertices = mesh.vertex_count();
   shape.topology = mesh_topology(mesh);
   shape.alignment = align_to_template(mesh, template_points, template_frame);
-  const PointSet world = vertex_points(mesh);
-  const PointSet common = shape.alignment.to_common.apply(world);
-  const MatrixRowTree<PointSet> tree(common);
-  const VertexTriangles around = vertex_triangles(mesh.triangles(), mesh.vertex_count());
-  const PointSet deformed = deform_template(template_mesh, template_points, common);
-  const SurfaceWalk walk(mesh);
+  const Similarity& to_common = shape.alignment.to_common;
+  const PointSet deformed = deform_template(template_mesh, template_points, to_common.apply(vertex_points(mesh)));
+  const NearestSurfacePoint nearest(mesh);
   carried.mesh = &mesh;
   for (const SurfacePoint& particle : template_particles) {
     Eigen::RowVector3d query = Eigen::RowVector3d::Zero();
     for (std::size_t k = 0; k < 3; ++k) query += particle.weights[k] * deformed.row(Eigen::Index(particle.corners[k]));
-    const SurfaceLocation hit = closest_surface_point(mesh, around, common, tree, query).location;
-    // The same weights of the corners in the shape's own coordinates, reached
-    // from a triangle of the first corner (the hit's triangle is next to it).
-    const Triangle& corners = mesh.triangles()[hit.triangle];
-    const Eigen::RowVector3d at = hit.weights[0] * world.row(corners[0]) + hit.weights[1] * world.row(corners[1]) +
-                                  hit.weights[2] * world.row(corners[2]);
-    std::uint32_t triangle = 0;
-    walk.first_triangle(corners[0], triangle);
-    carried.at.push_back(walk.walk(triangle, {at(0), at(1), at(2)}));
+    const Eigen::RowVector3d own = (query - to_common.translation.transpose()) * to_common.rotation / to_common.scale;
+    // A loaded mesh has triangles (mesh_checks refuses one without area).
+    carried.at.push_back(nearest.find({own(0), own(1), own(2)}).value());
   }
   return shape;
 }
