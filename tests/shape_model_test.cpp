@@ -1,7 +1,9 @@
 // The shape model (host/shape_model) on populations whose answer is known:
 // one shape in random poses (Procrustes must undo them exactly), and a
 // shape plus known multiples of one displacement (PCA must find that one
-// mode with that variance, and a model of it must rebuild left-out shapes).
+// mode with that variance, and a model of it must rebuild left-out shapes);
+// and shapes moved along known directions, whose measures as ShapeWorks
+// computes them follow by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -155,6 +157,105 @@ TEST(ModelQuality, TheSameInputsAndSeedGiveTheSameBits) {
               b.generalization.empty() ? 0.0 : b.generalization[0].mean);
   }
   EXPECT_NE(a.specificity[0].mean, c.specificity[0].mean);
+}
+
+// Shapes measured directly (as if aligned): the base plus a_k of one
+// displacement and b_k of another. Each displacement moves point i by w_i
+// (1 or 3, alternately), along x for the first and y for the second, so the
+// two are orthogonal and equally long, and a shape at coefficients (a, b)
+// lies |(a, b) - (a', b')| * mean(w) from one at (a', b'), point by point.
+std::vector<PointSet> moved_shapes(const std::vector<Eigen::Vector2d>& coefficients) {
+  const PointSet base = random_points(8, 13);
+  std::vector<PointSet> shapes;
+  for (const Eigen::Vector2d& c : coefficients) {
+    PointSet shape = base;
+    for (Eigen::Index i = 0; i < shape.rows(); ++i) {
+      const double w = i % 2 == 0 ? 1.0 : 3.0;
+      shape(i, 0) += w * c.x();
+      shape(i, 1) += w * c.y();
+    }
+    shapes.push_back(shape);
+  }
+  return shapes;
+}
+constexpr double kMeanWeight = 2;       // mean of w over the points
+constexpr double kSquaredWeights = 40;  // sum of w^2 over the 8 points: each displacement's squared length
+
+TEST(ShapeWorksMeasures, CompactnessAndGeneralizationOfATriangleOfShapes) {
+  // Coefficients (0, 0), (2, 0), (0, 2): centred, their scatter has
+  // eigenvalues 4 and 4/3, so one mode holds 3/4. Left out, each shape is
+  // rebuilt from the line through the other two: it is off by its distance
+  // to that line, sqrt(2), 2 and 2, in coefficients.
+  const std::vector<PointSet> shapes = moved_shapes({{0, 0}, {2, 0}, {0, 2}});
+  const ShapeModes model = principal_modes(shapes);
+  const ModelQuality quality = measure_model(shapes, model, 10, 1);
+  const ShapeWorksMeasures& shapeworks = quality.shapeworks;
+  ASSERT_EQ(shapeworks.compactness.size(), 2u);  // M = 1 .. S - 1
+  EXPECT_NEAR(shapeworks.compactness[0], 0.75, 1e-12);
+  EXPECT_NEAR(shapeworks.compactness[1], 1.0, 1e-12);
+  const double expected = kMeanWeight * (std::sqrt(2.0) + 2 + 2) / 3;
+  ASSERT_EQ(shapeworks.generalization.size(), 2u);
+  EXPECT_NEAR(shapeworks.generalization[0], expected, 1e-12);
+  // A model of two shapes has one mode: M = 2 rebuilds as M = 1 does.
+  EXPECT_NEAR(shapeworks.generalization[1], expected, 1e-12);
+  ASSERT_EQ(quality.generalization.size(), 1u);  // ours: M = 1 .. S - 2
+  EXPECT_NEAR(quality.generalization[0].mean, expected, 1e-12);
+}
+
+// E| |X| - h | for X normal with standard deviation s (trapezoids over
+// [0, h + 12 s]): the mean distance, in coefficients, of a drawn shape to
+// the nearer of two shapes at -h and +h.
+double expected_nearest(double s, double h) {
+  const int steps = 200000;
+  const double end = h + 12 * s, step = end / steps;
+  double sum = 0;
+  for (int k = 0; k <= steps; ++k) {
+    const double x = k * step;
+    const double f = std::abs(x - h) * 2 * std::exp(-x * x / (2 * s * s)) / (s * std::sqrt(2 * std::numbers::pi));
+    sum += (k == 0 || k == steps ? 0.5 : 1.0) * f;
+  }
+  return sum * step;
+}
+
+TEST(ShapeWorksMeasures, SpecificityDrawsWithTheSingularValueAsVariance) {
+  // Two shapes at a = -h and +h: one mode of variance 2 h^2 |D|^2 (S - 1 = 1),
+  // singular value sigma = h sqrt(2 |D|^2). Ours draws the mode's weight with
+  // that variance; ShapeWorks with sigma as its variance. In coefficients a
+  // drawn shape is normal with sd sqrt(variance / |D|^2).
+  const double h = 0.3;
+  const std::vector<PointSet> shapes = moved_shapes({{-h, 0}, {h, 0}});
+  const ShapeModes model = principal_modes(shapes);
+  ASSERT_EQ(model.variances.size(), 1);
+  const double variance = 2 * h * h * kSquaredWeights;
+  EXPECT_NEAR(model.variances(0), variance, 1e-12 * variance);
+  const ModelQuality quality = measure_model(shapes, model, ShapeWorksMeasures::kSamples, 7);
+  const double ours = kMeanWeight * expected_nearest(std::sqrt(variance / kSquaredWeights), h);
+  const double shapeworks = kMeanWeight * expected_nearest(std::sqrt(std::sqrt(variance) / kSquaredWeights), h);
+  ASSERT_GT(ours / shapeworks, 1.2);  // the two conventions apart, well beyond the draws' noise
+  // 1,000 draws: a standard error of about 2%.
+  ASSERT_EQ(quality.specificity.size(), 1u);
+  EXPECT_NEAR(quality.specificity[0].mean, ours, 0.06 * ours);
+  ASSERT_EQ(quality.shapeworks.specificity.size(), 1u);
+  EXPECT_NEAR(quality.shapeworks.specificity[0], shapeworks, 0.06 * shapeworks);
+}
+
+TEST(ShapeWorksMeasures, SeededApartFromOurs) {
+  const std::vector<PointSet> shapes = moved_shapes({{0, 0}, {2, 0}, {0, 2}, {1, 1.5}});
+  const ShapeModes model = principal_modes(shapes);
+  const ModelQuality a = measure_model(shapes, model, 50, 3), b = measure_model(shapes, model, 80, 3),
+                     c = measure_model(shapes, model, 50, 4);
+  ASSERT_EQ(a.shapeworks.specificity.size(), 3u);
+  // The same seed, whatever --samples: the same bits.
+  EXPECT_EQ(a.shapeworks.specificity, b.shapeworks.specificity);
+  EXPECT_NE(a.shapeworks.specificity, c.shapeworks.specificity);
+}
+
+TEST(ShapeWorksMeasures, NoneForShapesThatAreOneShape) {
+  const std::vector<PointSet> shapes = moved_shapes({{1, 1}, {1, 1}, {1, 1}});
+  const ModelQuality quality = measure_model(shapes, principal_modes(shapes), 10, 1);
+  EXPECT_TRUE(quality.shapeworks.compactness.empty());
+  EXPECT_TRUE(quality.shapeworks.generalization.empty());
+  EXPECT_TRUE(quality.shapeworks.specificity.empty());
 }
 
 }  // namespace

@@ -69,8 +69,12 @@ void run_model(const ModelOptions& options) {
     std::printf("measures    with 1 mode: generalization %.4g, specificity %.4g (mean point distances)\n",
                 quality.generalization.front().mean, quality.specificity.front().mean);
   }
-  std::printf("output      %s/{mean.particles, modes.csv, modes.json, transforms.json, evaluation.csv, model.json, "
-              "NNN_NAME.aligned.particles}\n",
+  if (!quality.shapeworks.generalization.empty()) {
+    std::printf("shapeworks  with 1 mode: generalization %.4g, specificity %.4g (as ShapeWorks computes them)\n",
+                quality.shapeworks.generalization.front(), quality.shapeworks.specificity.front());
+  }
+  std::printf("output      %s/{mean.particles, modes.csv, modes.json, transforms.json, evaluation.csv, "
+              "evaluation_shapeworks.csv, model.json, NNN_NAME.aligned.particles}\n",
               options.out.c_str());
 }
 

@@ -14,7 +14,7 @@ namespace meshparticles {
 namespace {
 
 const char* const kFixedFiles[] = {"mean.particles", "modes.csv", "modes.json", "transforms.json",
-                                   "evaluation.csv", "model.json"};
+                                   "evaluation.csv", "evaluation_shapeworks.csv", "model.json"};
 
 std::vector<std::string> aligned_file_names(const std::vector<std::string>& shapes) {
   std::vector<std::string> names = indexed_stems(shapes);
@@ -51,6 +51,29 @@ nlohmann::json measures_json(const std::vector<ModelMeasure>& measures) {
   return {{"mean", means}, {"sd", sds}};
 }
 
+nlohmann::json shapeworks_json(const ShapeWorksMeasures& measures) {
+  return {{"compactness", measures.compactness},
+          {"generalization", measures.generalization},
+          {"specificity", measures.specificity},
+          {"specificity_samples", ShapeWorksMeasures::kSamples}};
+}
+
+// The curves as ShapeWorks computes them, one row per M (an empty cell
+// where a curve is shorter).
+void write_shapeworks_evaluation(std::ostream& out, const ShapeWorksMeasures& measures) {
+  out << "modes,compactness,generalization,specificity\n";
+  const auto cell = [&](const std::vector<double>& curve, std::size_t m, const char* format) {
+    out << "," << (m < curve.size() ? format_number(format, curve[m]) : "");
+  };
+  for (std::size_t m = 0; m < measures.compactness.size(); ++m) {
+    out << m + 1;
+    cell(measures.compactness, m, "%.6f");
+    cell(measures.generalization, m, "%.9g");
+    cell(measures.specificity, m, "%.9g");
+    out << "\n";
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> indexed_stems(const std::vector<std::string>& shapes) {
@@ -83,7 +106,8 @@ nlohmann::json shape_model_summary(const ShapeModelOutputs& outputs) {
           {"compactness", outputs.model->quality.compactness},
           {"generalization", measures_json(outputs.model->quality.generalization)},
           {"specificity", measures_json(outputs.model->quality.specificity)},
-          {"specificity_samples", outputs.model->quality.samples}};
+          {"specificity_samples", outputs.model->quality.samples},
+          {"shapeworks", shapeworks_json(outputs.model->quality.shapeworks)}};
 }
 
 void write_shape_model(const std::filesystem::path& directory, const ShapeModelOutputs& outputs) {
@@ -139,6 +163,8 @@ void write_shape_model(const std::filesystem::path& directory, const ShapeModelO
             << format_number("%.9g", quality.specificity[m].sd) << "\n";
       }
     });
+    write_new_file(staging / "evaluation_shapeworks.csv",
+                   [&](std::ostream& out) { write_shapeworks_evaluation(out, quality.shapeworks); });
     write_new_file(staging / "model.json", [&](std::ostream& out) { out << json_text(shape_model_summary(outputs), 2) << "\n"; });
   });
 }

@@ -2,7 +2,7 @@
 // The files of a statistical shape model, written as one set
 // (common/atomic_directory): the aligned shapes, the mean, the modes and
 // their variances (CSV and JSON), the alignment transforms and the model
-// measures. docs/CORRESPONDENCE.md lists each file.
+// measures (ours, and ShapeWorks' beside them). docs/CORRESPONDENCE.md lists each file.
 #include <filesystem>
 #include <string>
 #include <vector>
