@@ -27,7 +27,7 @@ pymeshlab's (the JSON's `loader` says which).
 
 The peers and the Python module live in a virtual environment made on first use:
 $MESHPARTICLES_PEER_VENV, default ${XDG_CACHE_HOME:-~/.cache}/meshparticles/peer-venv (pip install
-pymeshlab open3d point-cloud-utils trimesh; Open3D needs Debian's libusb-1.0-0, installed with apt-
+pymeshlab open3d point-cloud-utils trimesh pycpd; Open3D needs Debian's libusb-1.0-0, installed with apt-
 get if missing). Unless `--no-python`, the module is built into it from `--module-source` (default:
 this checkout) on every start, with pip as scripts/test_python.sh does but without build isolation
 (scikit-build-core and ninja installed in the venv), its CMake build kept in the venv (module-
@@ -101,8 +101,9 @@ PEERS = [(MESHLAB_VERTEX, "MeshLab vertex", "pymeshlab"),
          ("meshlab-surface", "MeshLab surface", "pymeshlab"),
          ("open3d", "Open3D", "open3d"),
          ("pcu", "pcu", "point-cloud-utils")]
+# pycpd: scripts/cpd_baseline.py's registrations, in this venv too.
 PEER_PACKAGES = {"pymeshlab": "pymeshlab", "open3d": "open3d", "point-cloud-utils": "point_cloud_utils",
-                 "trimesh": "trimesh"}  # pip name -> import name
+                 "trimesh": "trimesh", "pycpd": "pycpd"}  # pip name -> import name
 # What building the Python module in the venv needs (pip name -> import name).
 MODULE_BUILD_PACKAGES = {"scikit-build-core": "scikit_build_core", "ninja": "ninja", "numpy": "numpy"}
 LABELS = dict([(OURS, "ours"), (IN_PROCESS, "ours in-process")] + [(key, label) for key, label, _ in PEERS])

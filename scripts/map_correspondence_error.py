@@ -1,0 +1,126 @@
+#!/usr/bin/python3
+"""How far apart particle i lands across real shapes whose vertex map is known.
+
+    scripts/map_correspondence_error.py MAP_POPULATION.json PARTICLES... [--json FILE]
+
+The sibling of scripts/correspondence_error.py for populations that are not generated: shapes
+each remeshed on their own, with a known map given as vertex lists (FAUST-like .vts files: line k
+holds the vertex of this shape that is sample k, the same sample on every shape).
+MAP_POPULATION.json (what scripts/real_population.sh writes):
+
+    {"one_based": true, "reference": 0,
+     "shapes": [{"mesh": "shapes/tr_reg_000.off", "map": "maps/tr_reg_000.vts"}, ...]}
+
+Paths are relative to the JSON's folder. Each particle is put at the sample whose vertex on its
+own shape is nearest it, and that sample's place on the reference shape stands for it (the mean
+place of all the samples the map sends to that vertex, where it sends several). The spread
+of particle i is the mean straight-line distance of its places on the reference shape from their
+centroid, in particle spacings of the reference shape (sqrt(2 A / (sqrt(3) n)), A its area):
+0 is a perfect correspondence. Straight lines, not geodesics: parts that touch through the air
+(an arm against the body) read closer than they are. Prints the median, mean and 90th percentile
+over the particles, and the largest distance from a particle to its sample's vertex (the map's
+own resolution on the shape). Files are matched to shapes by stem, as correspondence_error.py
+matches them. Uses Debian's python3-numpy.
+"""
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+
+def off_mesh(path):
+    """Vertices and triangles of an OFF file."""
+    words = Path(path).read_text().split()
+    if not words or words[0] != "OFF":
+        sys.exit(f"map_correspondence_error: {path}: not an OFF file")
+    vertices, faces = int(words[1]), int(words[2])
+    points = np.array(words[4:4 + 3 * vertices], dtype=float).reshape(vertices, 3)
+    rest, triangles, at = words[4 + 3 * vertices:], [], 0
+    for _ in range(faces):
+        corners = int(rest[at])
+        ids = [int(v) for v in rest[at + 1:at + 1 + corners]]
+        triangles += [(ids[0], ids[k], ids[k + 1]) for k in range(1, corners - 1)]
+        at += 1 + corners
+    return points, np.array(triangles, dtype=int)
+
+
+def area(points, triangles):
+    a, b, c = (points[triangles[:, k]] for k in range(3))
+    return 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1).sum()
+
+
+def reference_places(points, sample_places, reference_samples):
+    """For each of POINTS, the mean reference place of the samples nearest it, and the distance to them.
+
+    A map may send several samples to one vertex; each point takes them all, averaged.
+    """
+    places, distance = np.empty((len(points), 3)), np.empty(len(points))
+    for start in range(0, len(points), 256):
+        squared = ((points[start:start + 256, None, :] - sample_places[None, :, :]) ** 2).sum(axis=2)
+        least = squared.min(axis=1, keepdims=True)
+        ties = squared <= least * (1 + 1e-9) + 1e-300
+        places[start:start + 256] = (ties @ reference_samples) / ties.sum(axis=1, keepdims=True)
+        distance[start:start + 256] = np.sqrt(least[:, 0])
+    return places, distance
+
+
+def shape_of(file, shapes):
+    path = Path(file)
+    for shape in shapes:
+        stem = Path(shape["mesh"]).stem
+        if path.stem == stem or path.stem.endswith("_" + stem) or path.parent.name == stem:
+            return shape
+    sys.exit(f"map_correspondence_error: {file}: no shape of the population is named like it")
+
+
+def spread(population, folder, files):
+    base = 1 if population.get("one_based", True) else 0
+    shapes = population["shapes"]
+    sample_vertices = {}
+    for shape in shapes:
+        sample_vertices[shape["mesh"]] = np.loadtxt(folder / shape["map"], dtype=int, ndmin=1) - base
+    reference = shapes[population.get("reference", 0)]
+    reference_points, reference_triangles = off_mesh(folder / reference["mesh"])
+    reference_samples = reference_points[sample_vertices[reference["mesh"]]]
+    places, off_map = [], 0.0
+    for file in files:
+        shape = shape_of(file, shapes)
+        points, _ = off_mesh(folder / shape["mesh"])
+        place, distance = reference_places(np.loadtxt(file, ndmin=2), points[sample_vertices[shape["mesh"]]],
+                                           reference_samples)
+        places.append(place)
+        off_map = max(off_map, float(distance.max()))
+    counts = {len(p) for p in places}
+    if len(counts) != 1:
+        sys.exit(f"map_correspondence_error: the files hold different numbers of particles: {sorted(counts)}")
+    places = np.stack(places)  # shapes x particles x 3
+    n = places.shape[1]
+    spacing = math.sqrt(2 * area(reference_points, reference_triangles) / (math.sqrt(3) * n))
+    per_particle = np.linalg.norm(places - places.mean(axis=0), axis=2).mean(axis=0) / spacing
+    return {"shapes": len(files), "particles": n, "median": float(np.median(per_particle)),
+            "mean": float(per_particle.mean()), "p90": float(np.percentile(per_particle, 90)),
+            "largest_off_map": off_map, "spacing": spacing}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("population", type=Path)
+    parser.add_argument("particles", nargs="+", type=Path)
+    parser.add_argument("--json", type=Path, help="also write the figures here")
+    args = parser.parse_args()
+    if len(args.particles) < 2:
+        sys.exit("map_correspondence_error: give the particle files of at least 2 shapes")
+    population = json.loads(args.population.read_text())
+    result = spread(population, args.population.parent, args.particles)
+    print(f"spread of particle i across {result['shapes']} shapes, in particle spacings of the reference shape "
+          f"(n = {result['particles']}): median {result['median']:.3f}, mean {result['mean']:.3f}, "
+          f"90th percentile {result['p90']:.3f}; largest distance to a mapped vertex {result['largest_off_map']:.2g}")
+    if args.json:
+        args.json.write_text(json.dumps(result, indent=2) + "\n")
+
+
+if __name__ == "__main__":
+    main()
