@@ -4,7 +4,9 @@
     scripts/correspondence_error.py POPULATION.json PARTICLES... [--json FILE]
 
 POPULATION.json is what `meshparticles generate --population N --family ellipsoid`
-(or radii) writes beside its meshes: each shape's parameters and pose. PARTICLES are
+(or radii) writes beside its meshes: each shape's parameters and pose; or a population of
+real shapes with a known vertex map, scored by scripts/map_correspondence_error.py (which
+says how). PARTICLES are
 "x y z" rows in the shapes' own (world) coordinates, row i the same particle
 on every shape: `correspond`'s shapes/NNN_STEM.particles, `batch`'s
 STEM/particles.particles, or any tool's file named after its mesh's stem.
@@ -52,6 +54,14 @@ def parameters(points, shape, population):
     return u, np.linalg.norm(unposed - on_surface, axis=1)
 
 
+def stacked(per_shape):
+    """The files' points as one array, shapes x particles x 3; refused unless every file has as many."""
+    counts = {len(points) for points in per_shape}
+    if len(counts) != 1:
+        sys.exit(f"correspondence_error: the files hold different numbers of particles: {sorted(counts)}")
+    return np.stack(per_shape)
+
+
 def spread(population, files):
     shapes = population["shapes"]
     per_shape, off_surface = [], 0.0
@@ -60,10 +70,7 @@ def spread(population, files):
         u, off = parameters(points, shape_of(file, shapes), population)
         per_shape.append(u)
         off_surface = max(off_surface, float(off.max()))
-    counts = {len(u) for u in per_shape}
-    if len(counts) != 1:
-        sys.exit(f"correspondence_error: the files hold different numbers of particles: {sorted(counts)}")
-    u = np.stack(per_shape)  # shapes x particles x 3
+    u = stacked(per_shape)
     mean = u.sum(axis=0)
     mean /= np.linalg.norm(mean, axis=1, keepdims=True)
     angle = np.arccos(np.clip(np.einsum("spk,pk->sp", u, mean), -1, 1))
@@ -88,10 +95,17 @@ def main():
     args = parser.parse_args()
     if len(args.particles) < 2:
         sys.exit("correspondence_error: give the particle files of at least 2 shapes")
-    result = spread(json.loads(args.population.read_text()), args.particles)
-    print(f"spread of particle i across {result['shapes']} shapes, in particle spacings (n = {result['particles']}): "
+    population = json.loads(args.population.read_text())
+    if "map" in population["shapes"][0]:  # real shapes with a known vertex map
+        from map_correspondence_error import spread as spread_by_map
+        result = spread_by_map(population, args.population.parent, args.particles)
+        spacings, off = "particle spacings of the reference shape", ("a mapped vertex", result["largest_off_map"])
+    else:
+        result = spread(population, args.particles)
+        spacings, off = "particle spacings", ("a surface", result["largest_off_surface"])
+    print(f"spread of particle i across {result['shapes']} shapes, in {spacings} (n = {result['particles']}): "
           f"median {result['median']:.3f}, mean {result['mean']:.3f}, 90th percentile {result['p90']:.3f}; "
-          f"largest distance off a surface {result['largest_off_surface']:.2g}")
+          f"largest distance off {off[0]} {off[1]:.2g}")
     if args.json:
         args.json.write_text(json.dumps(result, indent=2) + "\n")
 

@@ -150,12 +150,10 @@ def run(command, **options):
 
 
 def spread(population_json, files):
-    """The yardstick's figures: correspondence_error.py for a generated population, its sibling for a map."""
-    shapes = json.loads(Path(population_json).read_text())["shapes"]
-    yardstick = "map_correspondence_error.py" if "map" in shapes[0] else "correspondence_error.py"
+    """The yardstick's figures (scripts/correspondence_error.py, for a generated population or a map)."""
     with tempfile.TemporaryDirectory() as scratch:
         figures = Path(scratch) / "spread.json"
-        run([sys.executable, ROOT / "scripts" / yardstick, population_json, *files, "--json", figures])
+        run([sys.executable, ROOT / "scripts/correspondence_error.py", population_json, *files, "--json", figures])
         return json.loads(figures.read_text())
 
 
@@ -188,7 +186,7 @@ def main():
     parser.add_argument("--binary", type=Path, default=ROOT / "build/meshparticles")
     parser.add_argument("--json", type=Path, help="also write the figures here")
     parser.add_argument("--map-population", type=Path,
-                        help="score by this map population (scripts/map_correspondence_error.py) instead of "
+                        help="score by this map population (scripts/map_correspondence_error.py's measure) instead of "
                              "POPULATION_DIR/population.json")
     args = parser.parse_args()
     if args.worker:

@@ -1,11 +1,11 @@
-#!/usr/bin/python3
 """How far apart particle i lands across real shapes whose vertex map is known.
 
-    scripts/map_correspondence_error.py MAP_POPULATION.json PARTICLES... [--json FILE]
+    scripts/correspondence_error.py MAP_POPULATION.json PARTICLES... [--json FILE]
 
-The sibling of scripts/correspondence_error.py for populations that are not generated: shapes
-each remeshed on their own, with a known map given as vertex lists (FAUST-like .vts files: line k
-holds the vertex of this shape that is sample k, the same sample on every shape).
+correspondence_error.py's measure for populations that are not generated (it calls spread()
+here for a population whose shapes name a map): shapes each remeshed on their own, with a known
+map given as vertex lists (FAUST-like .vts files: line k holds the vertex of this shape that is
+sample k, the same sample on every shape).
 MAP_POPULATION.json (what scripts/real_population.sh writes):
 
     {"one_based": true, "reference": 0,
@@ -22,13 +22,13 @@ over the particles, and the largest distance from a particle to its sample's ver
 own resolution on the shape). Files are matched to shapes by stem, as correspondence_error.py
 matches them. Uses Debian's python3-numpy.
 """
-import argparse
-import json
 import math
 import sys
 from pathlib import Path
 
 import numpy as np
+
+from correspondence_error import shape_of, stacked  # files matched to shapes by their mesh's stem
 
 
 def off_mesh(path):
@@ -67,15 +67,6 @@ def reference_places(points, sample_places, reference_samples):
     return places, distance
 
 
-def shape_of(file, shapes):
-    path = Path(file)
-    for shape in shapes:
-        stem = Path(shape["mesh"]).stem
-        if path.stem == stem or path.stem.endswith("_" + stem) or path.parent.name == stem:
-            return shape
-    sys.exit(f"map_correspondence_error: {file}: no shape of the population is named like it")
-
-
 def spread(population, folder, files):
     base = 1 if population.get("one_based", True) else 0
     shapes = population["shapes"]
@@ -93,34 +84,10 @@ def spread(population, folder, files):
                                            reference_samples)
         places.append(place)
         off_map = max(off_map, float(distance.max()))
-    counts = {len(p) for p in places}
-    if len(counts) != 1:
-        sys.exit(f"map_correspondence_error: the files hold different numbers of particles: {sorted(counts)}")
-    places = np.stack(places)  # shapes x particles x 3
+    places = stacked(places)
     n = places.shape[1]
     spacing = math.sqrt(2 * area(reference_points, reference_triangles) / (math.sqrt(3) * n))
     per_particle = np.linalg.norm(places - places.mean(axis=0), axis=2).mean(axis=0) / spacing
     return {"shapes": len(files), "particles": n, "median": float(np.median(per_particle)),
             "mean": float(per_particle.mean()), "p90": float(np.percentile(per_particle, 90)),
             "largest_off_map": off_map, "spacing": spacing}
-
-
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("population", type=Path)
-    parser.add_argument("particles", nargs="+", type=Path)
-    parser.add_argument("--json", type=Path, help="also write the figures here")
-    args = parser.parse_args()
-    if len(args.particles) < 2:
-        sys.exit("map_correspondence_error: give the particle files of at least 2 shapes")
-    population = json.loads(args.population.read_text())
-    result = spread(population, args.population.parent, args.particles)
-    print(f"spread of particle i across {result['shapes']} shapes, in particle spacings of the reference shape "
-          f"(n = {result['particles']}): median {result['median']:.3f}, mean {result['mean']:.3f}, "
-          f"90th percentile {result['p90']:.3f}; largest distance to a mapped vertex {result['largest_off_map']:.2g}")
-    if args.json:
-        args.json.write_text(json.dumps(result, indent=2) + "\n")
-
-
-if __name__ == "__main__":
-    main()

@@ -9,8 +9,8 @@
 # Its files are FAUST's (MPI's licence: research only, no redistribution):
 # they are copied under OUT_DIR and never into this repository.
 # Takes pose 0 of the first SHAPES (default 10) of FAUST's 10 people
-# (tr_reg_000, 010, ...), writes OUT_DIR/population_map.json for
-# scripts/map_correspondence_error.py, runs `correspond -n N` (default 256)
+# (tr_reg_000, 010, ...), writes OUT_DIR/population_map.json (which
+# scripts/correspondence_error.py scores), runs `correspond -n N` (default 256)
 # and scripts/cpd_baseline.py on them and prints both rows.
 # Why: issue 48's real population, scored by its known map.
 set -euo pipefail
