@@ -15,9 +15,11 @@ namespace {
 constexpr std::size_t kMaxIterations = 60;
 constexpr double kSettled = 1e-9;            // rms change, unit-area units
 constexpr Eigen::Index kMaxFitPoints = 4000;  // vertices fitted, evenly strided beyond
-// A start from the principal axes replaces the given pose when it fits at
-// least this much better (rms ratio) after kTrialIterations.
-constexpr double kClearlyBetter = 0.8;
+// The given pose is kept when its trial ends in the best start's pose, or
+// fits within this ratio of it: shapes of one scanner often arrive roughly
+// aligned, and where the geometry barely tells poses apart, the pose as
+// given is the better guess.
+constexpr double kGivenPoseKept = 1.02;
 constexpr std::size_t kTrialIterations = 8;
 // Trials that end this far from the chosen pose are another pose.
 constexpr double kOtherPoseDegrees = 30;
@@ -55,18 +57,23 @@ PointSet fit_points(const PointSet& points) {
   return chosen;
 }
 
-struct RigidFit {
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+using PointsTree = MatrixRowTree<PointSet>;
+
+// A closest-point fit's map (x -> linear x + translation), the rms distance
+// to the nearest points before its last step, and its iterations.
+struct ClosestPointFit {
+  Eigen::Matrix3d linear = Eigen::Matrix3d::Identity();
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
   double rms = std::numeric_limits<double>::infinity();
   std::size_t iterations = 0;
 };
 
-// Iterative closest points: `moving` (already in the common frame) onto the
-// tree's points, rotation and translation only (both are at unit area).
-RigidFit closest_point_fit(const PointSet& moving, const PointSet& target, const MatrixRowTree<PointSet>& tree,
-                           std::size_t max_iterations) {
-  RigidFit fit;
+// Iterative closest points: `moving` onto the tree's points, each step
+// `refit(current, matched)` (which updates fit's map and returns the points
+// moved by it), until the rms distance to the nearest settles.
+template <typename Refit>
+ClosestPointFit iterate_closest_points(const PointSet& moving, const PointSet& target, const PointsTree& tree,
+                                       std::size_t max_iterations, ClosestPointFit& fit, Refit&& refit) {
   PointSet current = moving;
   PointSet matched(moving.rows(), 3);
   for (fit.iterations = 1; fit.iterations <= max_iterations; ++fit.iterations) {
@@ -79,14 +86,48 @@ RigidFit closest_point_fit(const PointSet& moving, const PointSet& target, const
     const bool settled = std::abs(fit.rms - rms) < kSettled;
     fit.rms = rms;
     if (settled) break;
-    const Eigen::RowVector3d from = current.colwise().mean(), to = matched.colwise().mean();
-    const Eigen::Matrix3d step = best_rotation(current.rowwise() - from, matched.rowwise() - to);
-    current = ((current.rowwise() - from) * step.transpose()).rowwise() + to;
-    fit.rotation = step * fit.rotation;
-    fit.translation = step * (fit.translation - from.transpose()) + to.transpose();
+    current = refit(current, matched);
   }
   fit.iterations = std::min(fit.iterations, max_iterations);
   return fit;
+}
+
+// `moving` (already in the common frame) onto the tree's points, rotation
+// and translation only (both are at unit area).
+ClosestPointFit closest_point_fit(const PointSet& moving, const PointSet& target, const PointsTree& tree,
+                                  std::size_t max_iterations) {
+  ClosestPointFit fit;
+  return iterate_closest_points(moving, target, tree, max_iterations, fit, [&](const PointSet& current, const PointSet& matched) {
+    const Eigen::RowVector3d from = current.colwise().mean(), to = matched.colwise().mean();
+    const Eigen::Matrix3d step = best_rotation(current.rowwise() - from, matched.rowwise() - to);
+    fit.linear = step * fit.linear;
+    fit.translation = step * (fit.translation - from.transpose()) + to.transpose();
+    return PointSet(((current.rowwise() - from) * step.transpose()).rowwise() + to);
+  });
+}
+
+// `moving` onto the tree's points by an affine map, each step the least-squares one onto the nearest points.
+ClosestPointFit affine_closest_point_fit(const PointSet& moving, const PointSet& target, const PointsTree& tree,
+                                         std::size_t max_iterations) {
+  Eigen::MatrixXd homogeneous(moving.rows(), 4);
+  homogeneous.leftCols(3) = moving;
+  homogeneous.col(3).setOnes();
+  const Eigen::LDLT<Eigen::Matrix4d> solver(homogeneous.transpose() * homogeneous);
+  ClosestPointFit fit;
+  return iterate_closest_points(moving, target, tree, max_iterations, fit, [&](const PointSet&, const PointSet& matched) {
+    const Eigen::Matrix<double, 4, 3> map = solver.solve(homogeneous.transpose() * matched);
+    fit.linear = map.topRows(3).transpose();
+    fit.translation = map.row(3).transpose();
+    return PointSet((moving * fit.linear.transpose()).rowwise() + fit.translation.transpose());
+  });
+}
+
+// The rotation nearest a linear map (its polar factor).
+Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& linear) {
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(linear, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d u = svd.matrixU();
+  if ((u * svd.matrixV().transpose()).determinant() < 0) u.col(2) *= -1;
+  return u * svd.matrixV().transpose();
 }
 
 }  // namespace
@@ -154,34 +195,43 @@ MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& templat
     starts.push_back(turned);
   }
   const PointSet world = fit_points(vertex_points(mesh));
-  const MatrixRowTree<PointSet> tree(template_points);
-  std::vector<RigidFit> trials;
+  const PointsTree tree(template_points);
+  // Each start is judged by an affine fit: a stretch of the whole shape
+  // costs nothing, so the radii, which vary from shape to shape, do not
+  // outvote the features that say which way round it is.
+  std::vector<ClosestPointFit> trials;
+  std::vector<Eigen::Matrix3d> turns;  // the pose each trial ends in: its map's nearest rotation, after the start
   std::size_t chosen = 0;
   for (std::size_t k = 0; k < starts.size(); ++k) {
     Similarity& start = starts[k];
     start.translation = -start.scale * (start.rotation * world.colwise().mean().transpose());
-    trials.push_back(closest_point_fit(start.apply(world), template_points, tree, kTrialIterations));
-    // The given pose, or the first start in order, is kept unless another fits clearly better.
-    if (trials[k].rms < kClearlyBetter * trials[chosen].rms) chosen = k;
+    trials.push_back(affine_closest_point_fit(start.apply(world), template_points, tree, kTrialIterations));
+    turns.push_back(nearest_rotation(trials[k].linear) * start.rotation);
+    if (trials[k].rms < trials[chosen].rms) chosen = k;
   }
-  const RigidFit& best = trials[chosen];
-  const PointSet started = (starts[chosen].apply(world) * best.rotation.transpose()).rowwise() + best.translation.transpose();
-  const RigidFit finish = closest_point_fit(started, template_points, tree, kMaxIterations);
+  if (turn_angle(turns.front(), turns[chosen]) < kOtherPoseDegrees ||
+      trials.front().rms <= kGivenPoseKept * trials[chosen].rms) {
+    chosen = 0;
+  }
+  // The pose itself: rigid, from the chosen start (a short fit, then to the end).
+  const PointSet started = starts[chosen].apply(world);
+  const ClosestPointFit first = closest_point_fit(started, template_points, tree, kTrialIterations);
+  const PointSet placed = (started * first.linear.transpose()).rowwise() + first.translation.transpose();
+  const ClosestPointFit finish = closest_point_fit(placed, template_points, tree, kMaxIterations);
 
   MeshAlignment alignment;
   alignment.from_principal_axes = chosen != 0;
   alignment.to_common.scale = starts[chosen].scale;
-  alignment.to_common.rotation = finish.rotation * best.rotation * starts[chosen].rotation;
+  alignment.to_common.rotation = finish.linear * first.linear * starts[chosen].rotation;
   alignment.to_common.translation =
-      finish.rotation * (best.rotation * starts[chosen].translation + best.translation) + finish.translation;
+      finish.linear * (first.linear * starts[chosen].translation + first.translation) + finish.translation;
   alignment.rms = finish.rms;
-  alignment.iterations = best.iterations + finish.iterations;
+  alignment.iterations = first.iterations + finish.iterations;
   // The runner-up: the best trial that ended in another pose.
-  const Eigen::Matrix3d chosen_turn = best.rotation * starts[chosen].rotation;
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    const double angle = turn_angle(chosen_turn, trials[k].rotation * starts[k].rotation);
+    const double angle = turn_angle(turns[chosen], turns[k]);
     if (angle < kOtherPoseDegrees || trials[k].rms >= alignment.runner_up.rms) continue;
-    alignment.runner_up = {trials[k].rms / best.rms, angle, trials[k].rms};
+    alignment.runner_up = {trials[k].rms / trials[chosen].rms, angle, trials[k].rms};
   }
   return alignment;
 }

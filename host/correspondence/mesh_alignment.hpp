@@ -3,11 +3,14 @@
 // matched: each mesh scaled to unit area and centred, then iterative closest
 // points onto the template, from the pose as given and from the shape's own
 // principal axes (area-weighted second moments, signed by the third moments)
-// onto the template's in each of the 24 proper ways (signs and orders); the
-// given pose is kept unless a principal-axes start fits clearly better.
-// Shapes may arrive in any position, size and orientation. The best start
-// that ends in another pose is reported: where it fits almost as well, the
-// shape's geometry cannot tell the two poses apart.
+// onto the template's in each of the 24 proper ways (signs and orders). Each
+// start is judged by a short affine fit, so that radii which vary from shape
+// to shape do not outvote the features that place it; the best start's pose
+// is then fitted rigidly. The given pose is kept where it ends in the best
+// start's pose or fits almost as well. Shapes may arrive in any position,
+// size and orientation. The best start that ends in another pose is
+// reported: where it fits almost as well, the shape's geometry cannot tell
+// the two poses apart.
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -31,8 +34,8 @@ struct MeshAlignment {
   std::size_t iterations = 0;
   bool from_principal_axes = false;  // else from the pose as given
   // The best start that ended at least 30 degrees from the chosen pose,
-  // after the same short fit: its rms over the chosen's (infinite: none),
-  // and the angle between the two poses.
+  // after the same short affine fit: its rms over the chosen's (infinite:
+  // none), and the angle between the two poses.
   struct RunnerUp {
     double rms_ratio = std::numeric_limits<double>::infinity();
     double degrees = 0;
@@ -43,8 +46,9 @@ struct MeshAlignment {
 // A runner-up within this rms ratio of the chosen pose: the shape's geometry
 // barely tells the two apart, and its particles may lie turned by the
 // runner-up's angle. It warns, it does not judge: on 12 shapes of the
-// ellipsoid family, all aligned right, the margins are 1.009 to 1.22 (2 under
-// this); on 12 of the radii family, 10 aligned wrong, 0.85 to 1.41 (9 under).
+// ellipsoid family, all aligned right, the margins are 1.13 to 1.26 (none
+// under this); on 12 of the radii family, 1 aligned wrong, 1.02 to 1.48 (one
+// under, aligned right; the wrong one's is 1.07).
 inline constexpr double kAmbiguousPoseRatio = 1.02;
 
 // `template_points`: the template's vertices in the common frame, which
