@@ -18,8 +18,12 @@ their mean direction, in particle spacings of the parameter sphere
 (sqrt(8 pi / (sqrt(3) n)), the hexagonal spacing of n points on it). 0 is a
 perfect correspondence; particles placed at random spread about 5 spacings
 at n = 256. Prints the median, mean and 90th percentile over the particles,
-and the largest distance of a particle from its shape's surface (a particle
-off the surface maps to a wrong parameter). Uses Debian's python3-numpy.
+the largest distance of a particle from its shape's surface (a particle
+off the surface maps to a wrong parameter), and per shape (in --json's
+per_shape) how far its particles lie from particle i's mean place on
+average, and by what angle its particles are turned from those places as a
+whole (a shape posed wrongly is turned by tens of degrees). Uses Debian's
+python3-numpy.
 """
 import argparse
 import json
@@ -84,7 +88,18 @@ def spread(population, files):
         "mean": float(per_particle.mean()),
         "p90": float(np.percentile(per_particle, 90)),
         "largest_off_surface": off_surface,
+        "per_shape": [{"file": str(file), "mean": float(angle[s].mean() / spacing), "turn_degrees": turn_degrees(u[s], mean)}
+                      for s, file in enumerate(files)],
     }
+
+
+def turn_degrees(u, mean):
+    """The angle of the rotation that best takes the particles' mean directions onto one shape's: a shape
+    posed wrongly (turned, or upside down) is turned as a whole."""
+    left, _, right = np.linalg.svd(mean.T @ u)
+    proper = np.diag([1, 1, np.sign(np.linalg.det(right.T @ left.T))])
+    turn = right.T @ proper @ left.T
+    return math.degrees(math.acos(np.clip((np.trace(turn) - 1) / 2, -1, 1)))
 
 
 def main():
@@ -106,6 +121,12 @@ def main():
     print(f"spread of particle i across {result['shapes']} shapes, in {spacings} (n = {result['particles']}): "
           f"median {result['median']:.3f}, mean {result['mean']:.3f}, 90th percentile {result['p90']:.3f}; "
           f"largest distance off {off[0]} {off[1]:.2g}")
+    if "per_shape" in result:
+        worst = max(result["per_shape"], key=lambda shape: shape["mean"])
+        turned = max(result["per_shape"], key=lambda shape: shape["turn_degrees"])
+        print(f"furthest shape from the others: {Path(worst['file']).name}, its particles {worst['mean']:.3f} spacings "
+              f"from particle i's mean place on average; most turned: {Path(turned['file']).name}, "
+              f"{turned['turn_degrees']:.0f} degrees")
     if args.json:
         args.json.write_text(json.dumps(result, indent=2) + "\n")
 
