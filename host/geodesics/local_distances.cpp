@@ -11,6 +11,7 @@
 #include "common/elapsed.hpp"
 #include "common/progress.hpp"
 #include "common/worker_threads.hpp"
+#include "geodesics/solver_factory.hpp"
 
 namespace meshparticles {
 
