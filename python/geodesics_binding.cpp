@@ -12,6 +12,7 @@
 #include "common/interruption.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/geodesic_solver.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "mesh_object.hpp"
 #include "pipeline/mesh_input.hpp"
 

@@ -15,6 +15,7 @@
 
 #include "common/random.hpp"
 #include "geodesics/geodesic_solver.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "particles/farthest_point_optimization.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/local_farthest_points.hpp"

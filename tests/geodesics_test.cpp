@@ -12,6 +12,7 @@
 #include "geodesics/distance_table.hpp"
 #include "geodesics/geodesic_solver.hpp"
 #include "geodesics/memory_guard.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "mesh/io/mesh_reader.hpp"
 #include "mesh/mesh_generator.hpp"
 

@@ -11,6 +11,7 @@
 
 #include "common/random.hpp"
 #include "geodesics/local_distances.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "mesh/io/mesh_reader.hpp"
 #include "mesh/midpoint_refinement.hpp"
 #include "particles/particle_file.hpp"

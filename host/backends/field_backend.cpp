@@ -100,10 +100,7 @@ void FieldBackend::compute_weight_table(const cl::Program& program, const Distan
 
 void FieldBackend::positions_changed(bool resized) {
   if (resized) {
-    if (particle_count_ > kMaxFieldParticles) {
-      throw UserError("the field backend takes at most " + std::to_string(kMaxFieldParticles) + " particles (" +
-                      std::to_string(particle_count_) + " asked): its 64-bit field would overflow");
-    }
+    check_field_particle_count(particle_count_);
     energies_ = allocate(CL_MEM_READ_WRITE, particle_count_ * sizeof(cl_long), "the particle energies");
     update_.setArg(kPositions, positions_);
     update_.setArg(kParticleCount, particle_count_);

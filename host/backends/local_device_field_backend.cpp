@@ -46,15 +46,19 @@ std::uint64_t pool_limit_entries(const DeviceDescription& device, std::uint64_t 
   return std::min(left / kEntryBytes, std::uint64_t(device.max_allocation_bytes) / sizeof(VertexId));
 }
 
+// The refusal when the candidates' balls need more than `device` can give
+// (`needed`: the bytes in words, estimated or counted).
+UserError balls_beyond_device(const std::string& needed, std::uint64_t limit_bytes, const std::string& device) {
+  return UserError("the field backend on local distances needs " + needed + " of distance balls on " + device +
+                   ", which can give them " + gibibytes(double(limit_bytes)) +
+                   ": more particles (smaller balls), a smaller --cutoff, or --backend serial-field");
+}
+
 }  // namespace
 
 void check_local_field_device(const DeviceDescription& device, std::uint64_t ball_bytes) {
   const std::uint64_t limit = pool_limit_entries(device, 0) * kEntryBytes;
-  if (ball_bytes > limit) {
-    throw UserError("the field backend on local distances needs about " + gibibytes(double(ball_bytes)) +
-                    " of distance balls on " + device.name + ", which can give them " + gibibytes(double(limit)) +
-                    ": more particles (smaller balls), a smaller --cutoff, or --backend serial-field");
-  }
+  if (ball_bytes > limit) throw balls_beyond_device("about " + gibibytes(double(ball_bytes)), limit, device.name);
 }
 
 LocalDeviceFieldBackend::LocalDeviceFieldBackend(const DeviceDescription& device, const UpdateKernel& kernel,
@@ -69,8 +73,7 @@ LocalDeviceFieldBackend::LocalDeviceFieldBackend(const DeviceDescription& device
           pool_limit_entries(device, fixed_device_bytes(vertex_count_, inputs.mesh.edge_count(), 0))),
       pool_headroom_(pool_headroom),
       upload_piece_(upload_piece),
-      candidate_count_(inputs.mesh.vertex_count(), 0),
-      held_(inputs.mesh.vertex_count()),
+      candidates_(inputs.mesh, balls),
       row_start_host_(inputs.mesh.vertex_count(), kNoRow) {
   if (kernel.weights != WeightFormat::float32) {
     throw UserError("--weights half applies to the field backend on the dense table; on local distances its "
@@ -120,33 +123,14 @@ void LocalDeviceFieldBackend::set_row_args(cl::Kernel& kernel, cl_uint first) {
   kernel.setArg(first + 3, row_distances_);
 }
 
-void LocalDeviceFieldBackend::count_candidates(VertexId vertex, int delta, std::vector<VertexId>& changed) {
-  const auto count = [&](VertexId v) {
-    if (delta > 0 && candidate_count_[v]++ == 0) changed.push_back(v);
-    if (delta < 0 && --candidate_count_[v] == 0) changed.push_back(v);
-  };
-  count(vertex);
-  for (const VertexId v : mesh_.one_ring(vertex)) count(v);
-}
-
-std::vector<VertexId> LocalDeviceFieldBackend::candidates() const {
-  std::vector<VertexId> list;
-  for (VertexId v = 0; v < candidate_count_.size(); ++v) {
-    if (candidate_count_[v] > 0) list.push_back(v);
-  }
-  return list;
-}
-
 void LocalDeviceFieldBackend::repack() {
   std::uint64_t entries_needed = 0;
   for (VertexId v = 0; v < vertex_count_; ++v) {
-    if (candidate_count_[v] > 0) entries_needed += held_[v]->vertices.size();
+    if (candidates_.is_candidate(v)) entries_needed += candidates_.ball(v)->vertices.size();
   }
   if (entries_needed > pool_limit_entries_) {
-    throw UserError("the field backend on local distances needs " + gibibytes(double(entries_needed * kEntryBytes)) +
-                    " of distance balls on " + device_.name + ", which can give them " +
-                    gibibytes(double(pool_limit_entries_ * kEntryBytes)) +
-                    ": more particles (smaller balls), a smaller --cutoff, or --backend serial-field");
+    throw balls_beyond_device(gibibytes(double(entries_needed * kEntryBytes)), pool_limit_entries_ * kEntryBytes,
+                              device_.name);
   }
   // Room to grow: the candidates change as the particles move.
   const auto roomy = std::uint64_t(double(entries_needed) * (1 + pool_headroom_)) + 1;
@@ -164,13 +148,13 @@ void LocalDeviceFieldBackend::repack() {
   std::vector<cl_uint> starts(vertex_count_, 0), lengths(vertex_count_, 0);
   std::vector<cl_uchar> flags(vertex_count_, 0);
   for (VertexId v = 0; v < vertex_count_; ++v) {
-    if (candidate_count_[v] == 0) {
-      held_[v].reset();
+    if (!candidates_.is_candidate(v)) {
+      candidates_.release(v);
       row_start_host_[v] = kNoRow;
       continue;
     }
     kept.push_back(v);
-    lengths[v] = cl_uint(held_[v]->vertices.size());
+    lengths[v] = cl_uint(candidates_.ball(v)->vertices.size());
     flags[v] = 1;
   }
   pool_used_ = upload_rows(kept, 0);
@@ -198,7 +182,7 @@ std::uint64_t LocalDeviceFieldBackend::upload_rows(const std::vector<VertexId>& 
     distances.clear();
   };
   for (const VertexId v : rows) {
-    const Ball& ball = *held_[v];
+    const Ball& ball = *candidates_.ball(v);
     row_start_host_[v] = std::uint32_t(at + vertices.size());
     vertices.insert(vertices.end(), ball.vertices.begin(), ball.vertices.end());
     distances.insert(distances.end(), ball.distances.begin(), ball.distances.end());
@@ -238,13 +222,13 @@ void LocalDeviceFieldBackend::place_rows(const std::vector<VertexId>& arrivals,
                                          const std::vector<VertexId>& departures) {
   std::vector<VertexId> missing;
   for (const VertexId v : arrivals) {
-    if (!held_[v]) missing.push_back(v);
+    if (!candidates_.ball(v)) missing.push_back(v);
   }
   balls_.prefetch(missing);  // on all cores
   std::uint64_t entries = 0;
   for (const VertexId v : missing) {
-    held_[v] = balls_.ball(v);
-    entries += held_[v]->vertices.size();
+    candidates_.hold(v);
+    entries += candidates_.ball(v)->vertices.size();
   }
   if (pool_used_ + entries > pool_capacity_) {  // rewrite with the current candidates' rows only
     repack();
@@ -253,7 +237,7 @@ void LocalDeviceFieldBackend::place_rows(const std::vector<VertexId>& arrivals,
   pool_used_ = upload_rows(missing, pool_used_);
   std::vector<cl_uint4> changes;
   const auto change = [&](VertexId v, cl_uint candidate) {
-    changes.push_back({{v, row_start_host_[v], cl_uint(held_[v]->vertices.size()), candidate}});
+    changes.push_back({{v, row_start_host_[v], cl_uint(candidates_.ball(v)->vertices.size()), candidate}});
   };
   for (const VertexId v : arrivals) change(v, 1);
   for (const VertexId v : departures) change(v, 0);  // the row stays until the next repack
@@ -262,10 +246,7 @@ void LocalDeviceFieldBackend::place_rows(const std::vector<VertexId>& arrivals,
 
 void LocalDeviceFieldBackend::positions_changed(bool resized) {
   if (resized) {
-    if (particle_count_ > kMaxFieldParticles) {
-      throw UserError("the field backend takes at most " + std::to_string(kMaxFieldParticles) + " particles (" +
-                      std::to_string(particle_count_) + " asked): its 64-bit field would overflow");
-    }
+    check_field_particle_count(particle_count_);
     energies_ = allocate(CL_MEM_READ_WRITE, std::max<std::size_t>(1, particle_count_) * sizeof(cl_long),
                          "the particle energies");
     update_.setArg(kUpdatePositions, positions_);
@@ -284,18 +265,16 @@ void LocalDeviceFieldBackend::positions_changed(bool resized) {
 // a fresh pool, the occupancy and F at every candidate.
 void LocalDeviceFieldBackend::rebuild_field() {
   const std::vector<VertexId> now = positions();
-  std::fill(candidate_count_.begin(), candidate_count_.end(), 0);
+  candidates_.clear_counts();
   std::vector<VertexId> ignored;
   std::vector<cl_uint> occupancy(vertex_count_, 0);
   for (const VertexId p : now) {
-    count_candidates(p, +1, ignored);
+    candidates_.arrive(p, ignored);
     ++occupancy[p];
   }
-  const std::vector<VertexId> all = candidates();
+  const std::vector<VertexId> all = candidates_.list();
   balls_.prefetch(all);
-  for (const VertexId v : all) {
-    if (!held_[v]) held_[v] = balls_.ball(v);
-  }
+  for (const VertexId v : all) candidates_.hold(v);
   repack();
   write_blocking(occupancy_, 0, occupancy.size() * sizeof(cl_uint), occupancy.data());
   enqueue_sums(all);
@@ -353,8 +332,8 @@ void LocalDeviceFieldBackend::apply_moves(cl_uint first, std::span<const cl_uint
   // Every arrival first, then every departure: a vertex that stays a
   // candidate is never dropped and re-added, so its F stays the scattered one.
   std::vector<VertexId> arrivals, departures;
-  for (const cl_uint2& move : moves) count_candidates(move.s[1], +1, arrivals);
-  for (const cl_uint2& move : moves) count_candidates(move.s[0], -1, departures);
+  for (const cl_uint2& move : moves) candidates_.arrive(move.s[1], arrivals);
+  for (const cl_uint2& move : moves) candidates_.depart(move.s[0], departures);
   place_rows(arrivals, departures);
   enqueue_sums(arrivals);
 }

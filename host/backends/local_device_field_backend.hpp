@@ -11,6 +11,7 @@
 // repacked, down to the current candidates, when the pool is full. The pool
 // is sized from what the candidates need, never more than the device's
 // memory allows (checked before allocation, a UserError naming the bytes).
+#include "backends/candidate_balls.hpp"
 #include "backends/device_backend.hpp"
 #include "geodesics/local_distances.hpp"
 
@@ -34,7 +35,7 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
 
   // For tests: F at every candidate (in increasing vertex id) in field
   // units, and a rebuild of F from the current positions.
-  std::vector<VertexId> candidates() const;
+  std::vector<VertexId> candidates() const { return candidates_.list(); }
   std::vector<std::int64_t> candidate_field();
   void rebuild_field();
   // For tests: how often the pool was rewritten (the first fill included),
@@ -52,9 +53,6 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   // the host): F scattered at the old candidates, rows and sums for the new.
   void apply_moves(cl_uint first, std::span<const cl_uint2> moves, std::vector<cl::Event>& events);
 
-  // Counts `vertex` and its one-ring as candidates once more or less; notes
-  // the vertices that become or stop being candidates.
-  void count_candidates(VertexId vertex, int delta, std::vector<VertexId>& changed);
   // Puts the rows of `arrivals` (new candidates) into the pool, repacking it
   // when they do not fit, and tells the device which vertices are candidates.
   void place_rows(const std::vector<VertexId>& arrivals, const std::vector<VertexId>& departures);
@@ -91,9 +89,10 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   ListBuffer marks_list_{{}, 0, "the candidate changes"};  // of one colour
   ListBuffer sums_list_{{}, 0, "the new candidates"};
 
-  // The host's mirror of the pool: where each vertex's row lives, if it does.
-  std::vector<std::uint32_t> candidate_count_;
-  std::vector<std::shared_ptr<const Ball>> held_;  // the balls whose rows are in the pool
+  // The host's mirror of the pool: the balls whose rows are in it (those
+  // of candidates and of former ones until the next repack), and where
+  // each vertex's row lives, if it does.
+  CandidateBalls candidates_;
   std::vector<std::uint32_t> row_start_host_;
   std::uint64_t pool_used_ = 0, pool_capacity_ = 0;
   std::size_t repacks_ = 0, rebuilds_ = 0;

@@ -17,8 +17,7 @@ LocalFieldBackend::LocalFieldBackend(const SurfaceMesh& mesh, const LocalDistanc
       inv_two_sigma_sq_(float(energy.inv_two_sigma_sq())),
       weights_(weights),
       field_(mesh.vertex_count(), 0),
-      candidate_count_(mesh.vertex_count(), 0),
-      held_(mesh.vertex_count()),
+      candidates_(mesh, balls),
       ring_units_(mesh.ring_neighbors().size(), kNotYet),
       spread_weights_(mesh.vertex_count()),
       units_at_zero_(units_of_distance(0.0f)) {}
@@ -44,19 +43,19 @@ std::int64_t LocalFieldBackend::weight_units(VertexId u, VertexId v) const {
   if (u == v) return units_at_zero_;
   const auto ring = mesh_.one_ring(u);
   const auto at = std::find(ring.begin(), ring.end(), v);
-  if (at == ring.end()) return units_between(*held_[u], u, *held_[v], v);
+  if (at == ring.end()) return units_between(*candidates_.ball(u), u, *candidates_.ball(v), v);
   std::int64_t& units = ring_units_[mesh_.ring_offsets()[u] + std::size_t(at - ring.begin())];
-  if (units == kNotYet) units = units_between(*held_[u], u, *held_[v], v);
+  if (units == kNotYet) units = units_between(*candidates_.ball(u), u, *candidates_.ball(v), v);
   return units;
 }
 
 // Every particle's vertex is a candidate (its index 0), so its ball is held.
 std::int64_t LocalFieldBackend::field_from_scratch(VertexId x) const {
-  const Ball& from_x = *held_[x];
+  const Ball& from_x = *candidates_.ball(x);
   std::int64_t sum = 0;
   for_each_distance_to(
       x, from_x.vertices.size(),
-      [&](std::size_t k) { return occupancy_[from_x.vertices[k]] > 0 ? held_[from_x.vertices[k]].get() : nullptr; },
+      [&](std::size_t k) { return occupancy_[from_x.vertices[k]] > 0 ? candidates_.ball(from_x.vertices[k]) : nullptr; },
       [&](std::size_t k, float back) {
         sum += std::int64_t(occupancy_[from_x.vertices[k]]) * field_units(weight_of_pair(from_x.distances[k], back));
       });
@@ -64,12 +63,12 @@ std::int64_t LocalFieldBackend::field_from_scratch(VertexId x) const {
 }
 
 void LocalFieldBackend::learn_spread_weights(VertexId u) {
-  const Ball& from_u = *held_[u];
+  const Ball& from_u = *candidates_.ball(u);
   std::vector<float>& weights = spread_weights_[u];
   if (weights.empty()) weights.assign(from_u.vertices.size(), kUnknown);
   for_each_distance_to(
       u, from_u.vertices.size(),
-      [&](std::size_t k) { return weights[k] == kUnknown ? held_[from_u.vertices[k]].get() : nullptr; },
+      [&](std::size_t k) { return weights[k] == kUnknown ? candidates_.ball(from_u.vertices[k]) : nullptr; },
       [&](std::size_t k, float back) { weights[k] = weight_of_pair(from_u.distances[k], back); });
 }
 
@@ -77,29 +76,18 @@ void LocalFieldBackend::spread_weight(VertexId from, int delta) {
   // from is a candidate of the moving particle either side of the move, so
   // its ball is held; a candidate not ready yet gets its whole F when it is.
   learn_spread_weights(from);
-  const Ball& from_ball = *held_[from];
+  const Ball& from_ball = *candidates_.ball(from);
   const std::vector<float>& weights = spread_weights_[from];
   for (std::size_t k = 0; k < from_ball.vertices.size(); ++k) {
     const VertexId x = from_ball.vertices[k];
-    if (held_[x]) field_[x] += delta * field_units(weights[k]);
+    if (candidates_.ball(x)) field_[x] += delta * field_units(weights[k]);
   }
   if (occupancy_[from] == 0) std::vector<float>().swap(spread_weights_[from]);
 }
 
-void LocalFieldBackend::count_candidates(VertexId vertex, int delta) {
-  std::vector<VertexId> new_candidates;
-  const auto count = [&](VertexId v) {
-    if (delta > 0 && candidate_count_[v]++ == 0) new_candidates.push_back(v);
-    if (delta < 0 && --candidate_count_[v] == 0) held_[v].reset();
-  };
-  count(vertex);
-  for (const VertexId v : mesh_.one_ring(vertex)) count(v);
-  balls_.request(new_candidates);
-}
-
 void LocalFieldBackend::make_ready(VertexId v) {
-  if (held_[v] || candidate_count_[v] == 0) return;
-  held_[v] = balls_.ball(v);
+  if (candidates_.ball(v) || !candidates_.is_candidate(v)) return;
+  candidates_.hold(v);
   field_[v] = field_from_scratch(v);  // reads the balls of the particles' vertices, all ready
 }
 
@@ -110,12 +98,16 @@ void LocalFieldBackend::before_choice(VertexId vertex) {
 
 // The particle already stands at `to` in positions_ and occupancy_: its
 // weight moves from `from` to `to` at every candidate, then its own
-// candidates follow it (new ones see the particle at `to`).
+// candidates follow it (new ones see the particle at `to`): the balls of
+// the new ones are asked of the store's helpers, those of the old let go.
 void LocalFieldBackend::field_after_move(std::size_t /*c*/, VertexId from, VertexId to) {
   spread_weight(from, -1);
   spread_weight(to, +1);
-  count_candidates(to, +1);
-  count_candidates(from, -1);
+  std::vector<VertexId> arrivals, departures;
+  candidates_.arrive(to, arrivals);
+  balls_.request(arrivals);
+  candidates_.depart(from, departures);
+  for (const VertexId v : departures) candidates_.release(v);
 }
 
 void LocalFieldBackend::before_moves(std::span<const VertexId> targets) {
@@ -128,20 +120,17 @@ void LocalFieldBackend::before_moves(std::span<const VertexId> targets) {
 }
 
 void LocalFieldBackend::rebuild_field() {
-  std::fill(candidate_count_.begin(), candidate_count_.end(), 0);
-  std::fill(held_.begin(), held_.end(), nullptr);
-  std::vector<VertexId> wanted;
+  candidates_.clear_counts();
+  candidates_.release_all();
+  std::vector<VertexId> wanted, arrivals;
   for (const VertexId p : positions_) {
-    ++candidate_count_[p];
+    candidates_.arrive(p, arrivals);
     wanted.push_back(p);
-    for (const VertexId v : mesh_.one_ring(p)) {
-      ++candidate_count_[v];
-      wanted.push_back(v);
-    }
+    for (const VertexId v : mesh_.one_ring(p)) wanted.push_back(v);
   }
   balls_.prefetch(wanted);  // on all cores, before the sums read them one by one
-  const std::vector<VertexId> all = candidates();
-  for (const VertexId x : all) held_[x] = balls_.ball(x);
+  const std::vector<VertexId> all = candidates_.list();
+  for (const VertexId x : all) candidates_.hold(x);
   // F is the sum of every occupied vertex's weights, spread. Learning those
   // weights is the costly part (a search in each candidate's ball) and
   // writes only the vertex's own list: they are shared out among the
@@ -161,14 +150,6 @@ void LocalFieldBackend::rebuild_field() {
   helpers.join();
   for (const VertexId x : all) field_[x] = 0;
   for (const VertexId u : occupied) spread_weight(u, int(occupancy_[u]));
-}
-
-std::vector<VertexId> LocalFieldBackend::candidates() const {
-  std::vector<VertexId> list;
-  for (VertexId v = 0; v < candidate_count_.size(); ++v) {
-    if (candidate_count_[v] > 0) list.push_back(v);
-  }
-  return list;
 }
 
 }  // namespace meshparticles

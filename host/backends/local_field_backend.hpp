@@ -14,6 +14,7 @@
 // All sums are in the same fixed-point units as the dense field, so they
 // are exact: following the moves leaves exactly what a rebuild gives,
 // whenever each sum is made.
+#include "backends/candidate_balls.hpp"
 #include "backends/serial_field_method.hpp"
 #include "geodesics/local_distances.hpp"
 #include "particles/particle_params.hpp"
@@ -32,7 +33,7 @@ class LocalFieldBackend final : public SerialFieldMethod {
     return field_at(v);
   }
   // For tests: the vertices where F is kept (each particle's vertex and one-ring).
-  std::vector<VertexId> candidates() const;
+  std::vector<VertexId> candidates() const { return candidates_.list(); }
 
  private:
   std::int64_t field_at(VertexId v) const override { return field_[v]; }
@@ -54,9 +55,6 @@ class LocalFieldBackend final : public SerialFieldMethod {
   void spread_weight(VertexId from, int delta);
   // Fills spread_weights_[u] at every candidate in u's ball not known yet.
   void learn_spread_weights(VertexId u);
-  // Counts `vertex` and its one-ring as candidates once more (+1) or less
-  // (-1); the balls of new ones are requested from the store's helpers.
-  void count_candidates(VertexId vertex, int delta);
   // Holds candidate v's ball and sums F(v), if not done since v became one.
   void make_ready(VertexId v);
 
@@ -64,14 +62,12 @@ class LocalFieldBackend final : public SerialFieldMethod {
   Potential potential_;
   float inv_two_sigma_sq_;  // in float, as the device computes weights
   WeightFormat weights_;
-  std::vector<std::int64_t> field_;             // F(v) in field units, where candidate_count_[v] > 0
-  std::vector<std::uint32_t> candidate_count_;  // particles that have v among their candidates
-  // The balls of the candidates, held while they are candidates, from the
-  // time they are ready (a new candidate's is null until make_ready): every
-  // ball the field reads is one of these (a particle's vertex is its own
-  // first candidate, ready before the particle moves there), so the hot
-  // loops need neither the store's lock nor its cache.
-  std::vector<std::shared_ptr<const Ball>> held_;
+  std::vector<std::int64_t> field_;  // F(v) in field units, at the candidates
+  // The candidates' balls, held while they are candidates, from the time
+  // they are ready (a new candidate's is null until make_ready): every ball
+  // the field reads is one of these (a particle's vertex is its own first
+  // candidate, ready before the particle moves there).
+  CandidateBalls candidates_;
   // The weights the candidate rule reads on every decision, from a vertex
   // to each of its one-ring neighbours, in field units, parallel to
   // mesh.ring_neighbors(); each is read from the two balls the first time

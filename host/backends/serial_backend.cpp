@@ -81,12 +81,9 @@ std::size_t SerialBackend::synchronous_step(unsigned color, unsigned colors) {
 
 IterationStats SerialBackend::iterate(Scheme scheme, unsigned colors) {
   IterationStats stats;
-  if (scheme == Scheme::sequential) {
-    stats.moved = sequential_sweep();
-  } else {
-    const unsigned groups = sub_steps(scheme, colors);
-    for (unsigned color = 0; color < groups; ++color) stats.moved += synchronous_step(color, groups);
-  }
+  stats.moved = host_iteration_moves(
+      scheme, colors, [&] { return sequential_sweep(); },
+      [&](unsigned color, unsigned groups) { return synchronous_step(color, groups); });
   stats.energy = total_energy();
   return stats;
 }

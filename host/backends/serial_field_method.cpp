@@ -1,7 +1,6 @@
 #include "backends/serial_field_method.hpp"
 
 #include "backends/host_collisions.hpp"
-#include "common/user_error.hpp"
 #include "particles/energy.hpp"
 #include "particles/field_units.hpp"
 
@@ -11,10 +10,7 @@ SerialFieldMethod::SerialFieldMethod(const SurfaceMesh& mesh, std::size_t rebuil
     : mesh_(mesh), occupancy_(mesh.vertex_count(), 0), rebuild_every_(rebuild_every) {}
 
 void SerialFieldMethod::set_positions(std::span<const VertexId> positions) {
-  if (positions.size() > kMaxFieldParticles) {
-    throw UserError("the field backends take at most " + std::to_string(kMaxFieldParticles) +
-                    " particles: the 64-bit field would overflow");
-  }
+  check_field_particle_count(positions.size());
   positions_.assign(positions.begin(), positions.end());
   std::fill(occupancy_.begin(), occupancy_.end(), 0);
   for (const VertexId p : positions_) ++occupancy_[p];
@@ -86,12 +82,9 @@ std::size_t SerialFieldMethod::synchronous_step(unsigned color, unsigned colors)
 
 IterationStats SerialFieldMethod::iterate(Scheme scheme, unsigned colors) {
   IterationStats stats;
-  if (scheme == Scheme::sequential) {
-    stats.moved = sequential_sweep();
-  } else {
-    const unsigned groups = sub_steps(scheme, colors);
-    for (unsigned color = 0; color < groups; ++color) stats.moved += synchronous_step(color, groups);
-  }
+  stats.moved = host_iteration_moves(
+      scheme, colors, [&] { return sequential_sweep(); },
+      [&](unsigned color, unsigned groups) { return synchronous_step(color, groups); });
   if (rebuild_every_ > 0 && ++iterations_ % rebuild_every_ == 0) rebuild_field();
   stats.energy = total_energy();
   return stats;

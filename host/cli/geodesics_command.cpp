@@ -14,6 +14,7 @@
 #include "geodesics/device_balls.hpp"
 #include "geodesics/distance_cache.hpp"
 #include "geodesics/local_distances.hpp"
+#include "geodesics/solver_factory.hpp"
 
 namespace meshparticles {
 

@@ -10,6 +10,7 @@
 #include "common/progress.hpp"
 #include "common/worker_threads.hpp"
 #include "geodesics/memory_guard.hpp"
+#include "geodesics/solver_factory.hpp"
 
 namespace meshparticles {
 

@@ -8,9 +8,6 @@
 #include <utility>
 
 #include "common/user_error.hpp"
-#include "geodesics/dijkstra.hpp"
-#include "geodesics/fast_iterative.hpp"
-#include "geodesics/fast_marching.hpp"
 
 namespace meshparticles {
 
@@ -187,12 +184,6 @@ double largest_finite(std::span<const float> distances) {
     if (std::isfinite(d)) largest = std::max(largest, double(d));
   }
   return largest;
-}
-
-std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {
-  if (method == GeodesicMethod::dijkstra) return std::make_unique<EdgeDijkstra>(mesh);
-  if (method == GeodesicMethod::fast_iterative) return std::make_unique<FastIterativeMethod>(mesh);
-  return std::make_unique<FastMarching>(mesh);
 }
 
 GeodesicMethod host_march_method(GeodesicMethod method) {

@@ -126,8 +126,6 @@ double largest_finite(std::span<const float> distances);
 // the edge updates both solvers make.
 std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh);
 
-std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method);
-
 // The solver of the host's marches one at a time (farthest-point starts,
 // the distance to the nearest particle, the spread's covers) in a run that
 // asked for `method`. The fast iterative method pays where many balls are

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <exception>
 #include <limits>
@@ -10,6 +11,7 @@
 #include "common/elapsed.hpp"
 #include "common/progress.hpp"
 #include "common/worker_threads.hpp"
+#include "geodesics/solver_factory.hpp"
 
 namespace meshparticles {
 
@@ -83,18 +85,10 @@ LocalDistances::LocalDistances(const SurfaceMesh& mesh, const Settings& settings
                         ? std::make_unique<DeviceBallSolver>(
                               mesh, static_cast<const FastIterativeMethod&>(*solver_), *settings.device)
                         : nullptr),
-      balls_(mesh.vertex_count()),
-      last_used_(mesh.vertex_count(), 0),
-      queued_(mesh.vertex_count(), Queued::no) {}
+      cache_(mesh.vertex_count(), settings.cache_bytes),
+      queue_(mesh.vertex_count()) {}
 
-LocalDistances::~LocalDistances() {
-  {
-    const std::lock_guard lock(mutex_);
-    stopping_ = true;
-  }
-  work_ready_.notify_all();
-  for (auto& helper : helpers_) helper.join();
-}
+LocalDistances::~LocalDistances() { queue_.stop(mutex_); }
 
 float LocalDistances::distance(VertexId u, VertexId v) const {
   const auto from_u = ball(u);
@@ -137,41 +131,26 @@ void LocalDistances::for_each_marked_within(VertexId u, float radius, std::span<
 
 std::shared_ptr<const Ball> LocalDistances::ball(VertexId u) const {
   std::unique_lock lock(mutex_);
-  last_used_[u] = ++clock_;
-  if (balls_[u]) return balls_[u];
+  cache_.touch(u);
+  if (const auto& held = cache_.held(u)) return held;
   const auto started = std::chrono::steady_clock::now();
   // A helper is solving u: rather than wait idle, solve what is queued after it.
-  while (queued_[u] == Queued::solving) {
-    if (const auto other = take_waiting()) {
+  while (queue_.being_solved(u)) {
+    if (const auto other = queue_.take(cache_)) {
       const VertexId taken[] = {*other};
       solve_taken(taken, lock, scratch_, &scratch_mutex_);
     } else {
-      ball_ready_.wait(lock);
+      queue_.wait_for_ball(lock);
     }
   }
-  std::shared_ptr<const Ball> found = balls_[u];
+  std::shared_ptr<const Ball> found = cache_.held(u);
   if (!found) {
-    queued_[u] = Queued::solving;  // a waiting u is ours now: the helpers pass it by
+    queue_.claim(u);  // a waiting u is ours now: the helpers pass it by
     const VertexId taken[] = {u};
     found = solve_taken(taken, lock, scratch_, &scratch_mutex_).front();
   }
   statistics_.seconds += seconds_since(started);
   return found;
-}
-
-std::optional<VertexId> LocalDistances::take_waiting() const {
-  while (!waiting_.empty()) {
-    const VertexId v = waiting_.front();
-    waiting_.pop_front();
-    if (queued_[v] != Queued::waiting) continue;  // ball() took it
-    if (balls_[v]) {  // a prefetch solved it meanwhile
-      queued_[v] = Queued::no;
-      continue;
-    }
-    queued_[v] = Queued::solving;
-    return v;
-  }
-  return std::nullopt;
 }
 
 std::vector<std::shared_ptr<const Ball>> LocalDistances::solve_taken(std::span<const VertexId> taken,
@@ -186,20 +165,18 @@ std::vector<std::shared_ptr<const Ball>> LocalDistances::solve_taken(std::span<c
     solved = solve_now(taken, scratch);
   } catch (...) {  // out of memory: nobody may wait for them forever
     lock.lock();
-    for (const VertexId v : taken) queued_[v] = Queued::no;
-    ball_ready_.notify_all();
+    queue_.finish(taken);
     throw;
   }
   lock.lock();
   std::vector<std::shared_ptr<const Ball>> computed;
   for (std::size_t k = 0; k < taken.size(); ++k) {
-    queued_[taken[k]] = Queued::no;
     computed.push_back(std::make_shared<const Ball>(std::move(solved.balls[k])));
-    insert(taken[k], computed.back());
+    keep(taken[k], computed.back());
   }
   statistics_.balls_on_device += solved.on_device;
-  evict_to_budget();
-  ball_ready_.notify_all();
+  evict();
+  queue_.finish(taken);
   return computed;
 }
 
@@ -225,31 +202,22 @@ void LocalDistances::request(std::span<const VertexId> vertices) const {
   {
     const std::lock_guard lock(mutex_);
     for (const VertexId v : vertices) {
-      if (balls_[v] || queued_[v] != Queued::no) continue;
-      queued_[v] = Queued::waiting;
-      waiting_.push_back(v);
+      if (!cache_.held(v) && queue_.idle(v)) queue_.add(v);
     }
-    try {
-      // With a device one helper keeps it busy, a batch at a time; more would queue for it.
-      const std::size_t helpers = device_balls_ ? 1 : threads() - 1;
-      while (helpers_.size() < helpers) helpers_.emplace_back([this] { help(); });
-    } catch (const std::system_error&) {
-      // No room for another thread (ulimit -v): ball() solves what no helper takes.
-    }
+    // With a device one helper keeps it busy, a batch at a time; more would queue for it.
+    queue_.start_helpers(device_balls_ ? 1 : threads() - 1, [this] { help(); });
   }
-  work_ready_.notify_all();
+  queue_.work_added();
 }
 
 void LocalDistances::help() const {
   SolverScratch scratch;
   std::unique_lock lock(mutex_);
-  for (;;) {
-    work_ready_.wait(lock, [&] { return stopping_ || !waiting_.empty(); });
-    if (stopping_) return;
+  while (queue_.wait_for_work(lock)) {
     // The device solves many balls in the time of one: a helper takes a batch to it.
     std::vector<VertexId> taken;
     while (taken.size() < (device_balls_ ? kDeviceBatch : 1)) {
-      const auto v = take_waiting();
+      const auto v = queue_.take(cache_);
       if (!v) break;
       taken.push_back(*v);
     }
@@ -268,8 +236,8 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   {
     const std::lock_guard lock(mutex_);
     for (const VertexId v : vertices) {
-      last_used_[v] = ++clock_;  // wanted now: not the next to go
-      if (!balls_[v]) missing.push_back(v);
+      cache_.touch(v);  // wanted now: not the next to go
+      if (!cache_.held(v)) missing.push_back(v);
     }
   }
   std::sort(missing.begin(), missing.end());
@@ -282,7 +250,7 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
     progress.finish();
     const std::lock_guard lock(mutex_);
     statistics_.seconds += seconds_since(started);
-    evict_to_budget();
+    evict();
     return;
   }
   const unsigned threads = missing.size() < kParallelBatch ? 1 : this->threads();
@@ -294,7 +262,7 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
       for (std::size_t k = next++; k < missing.size(); k = next++) {
         auto computed = std::make_shared<const Ball>(solver_->solve_ball(missing[k], settings_.radius, scratch));
         const std::lock_guard lock(mutex_);
-        insert(missing[k], std::move(computed));
+        keep(missing[k], std::move(computed));
         ++done;
       }
     } catch (...) {  // out of memory: rethrown on the calling thread, the others stop
@@ -324,7 +292,7 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   if (failure) std::rethrow_exception(failure);
   const std::lock_guard lock(mutex_);
   statistics_.seconds += seconds_since(started);
-  evict_to_budget();
+  evict();
 }
 
 void LocalDistances::solve_on_device(std::span<const VertexId> missing, ProgressLine& progress) const {
@@ -335,42 +303,26 @@ void LocalDistances::solve_on_device(std::span<const VertexId> missing, Progress
     Solved solved = solve_now(piece, unused);
     const std::lock_guard lock(mutex_);
     for (std::size_t k = 0; k < piece.size(); ++k) {
-      insert(piece[k], std::make_shared<const Ball>(std::move(solved.balls[k])));
+      keep(piece[k], std::make_shared<const Ball>(std::move(solved.balls[k])));
     }
     statistics_.balls_on_device += solved.on_device;
     progress.update(first + piece.size());
   }
 }
 
-void LocalDistances::insert(VertexId u, std::shared_ptr<const Ball> ball) const {
+void LocalDistances::keep(VertexId u, std::shared_ptr<const Ball> ball) const {
   ++statistics_.balls_computed;  // every solve, one made twice too: the work done
   statistics_.entries_computed += ball->vertices.size();
-  if (balls_[u]) return;  // a prefetch solved it beside a helper: the first stays
-  cached_bytes_ += ball->bytes();
-  statistics_.peak_bytes = std::max(statistics_.peak_bytes, cached_bytes_);
-  balls_[u] = std::move(ball);
-  cached_.push_back(u);
+  cache_.insert(u, std::move(ball));  // a prefetch solved it beside a helper: the first stays
 }
 
-// Evicts the least recently used balls until the cache is a quarter under
-// its budget, so that evictions come in batches rather than one per ball.
-void LocalDistances::evict_to_budget() const {
-  if (cached_bytes_ <= settings_.cache_bytes) return;
-  std::sort(cached_.begin(), cached_.end(), [&](VertexId a, VertexId b) { return last_used_[a] < last_used_[b]; });
-  const std::uint64_t target = settings_.cache_bytes / 4 * 3;
-  std::size_t evicted = 0;
-  while (evicted < cached_.size() && cached_bytes_ > target) {
-    const VertexId u = cached_[evicted++];
-    cached_bytes_ -= balls_[u]->bytes();
-    balls_[u].reset();
-  }
-  cached_.erase(cached_.begin(), cached_.begin() + std::ptrdiff_t(evicted));
-  statistics_.balls_evicted += evicted;
-}
+void LocalDistances::evict() const { statistics_.balls_evicted += cache_.evict_to_budget(); }
 
 LocalDistances::Statistics LocalDistances::statistics() const {
   const std::lock_guard lock(mutex_);
-  return statistics_;
+  Statistics statistics = statistics_;
+  statistics.peak_bytes = cache_.peak_bytes();
+  return statistics;
 }
 
 }  // namespace meshparticles

@@ -2,8 +2,9 @@
 // The local store: distances only between vertices near each other, for
 // meshes whose V x V table would not fit. Each vertex's ball - the vertices
 // within the store's radius and their distances from it - is computed on
-// demand by a solve stopped at the radius, on all cores, and kept in a
-// cache bounded in bytes.
+// demand by a solve stopped at the radius, on all cores or the device, and
+// kept in a cache bounded in bytes (ball_cache); balls asked for ahead of
+// need are solved by helper threads (ball_queue).
 //
 // The distance between two vertices is the mean of the two one-sided
 // values, each read from the other's ball: exactly what the dense table
@@ -11,16 +12,14 @@
 // vertex lies in the other's ball. Beyond that the store answers +inf:
 // symmetric, like every distance the particle system reads.
 #include <array>
-#include <atomic>
-#include <condition_variable>
-#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 #include <vector>
 
 #include "common/progress.hpp"
+#include "geodesics/ball_cache.hpp"
+#include "geodesics/ball_queue.hpp"
 #include "geodesics/device_balls.hpp"
 #include "geodesics/distance_store.hpp"
 #include "geodesics/geodesic_solver.hpp"
@@ -93,18 +92,6 @@ class LocalDistances final : public DistanceStore {
   Statistics statistics() const;
 
  private:
-  void insert(VertexId u, std::shared_ptr<const Ball> ball) const;  // with the mutex held
-  void evict_to_budget() const;                                      // with the mutex held
-  void help() const;                                                 // a helper thread of request()
-  // With mutex_ held: the next queued vertex nobody has begun, now marked
-  // as being solved by the caller.
-  std::optional<VertexId> take_waiting() const;
-  // Solves `taken` (marked as being solved) with `lock` on mutex_ released
-  // meanwhile, under `scratch_guard` if given, and keeps them; `lock` is
-  // held again on return, also when the solve throws.
-  std::vector<std::shared_ptr<const Ball>> solve_taken(std::span<const VertexId> taken,
-                                                       std::unique_lock<std::mutex>& lock, SolverScratch& scratch,
-                                                       std::mutex* scratch_guard) const;
   struct Solved {
     std::vector<Ball> balls;
     std::size_t on_device = 0;
@@ -112,11 +99,18 @@ class LocalDistances final : public DistanceStore {
   // The balls of `vertices`, in their order, without mutex_: on the device
   // when the store has one (all in one call), else one by one on this thread.
   Solved solve_now(std::span<const VertexId> vertices, SolverScratch& scratch) const;
-
-  // prefetch()'s balls on the device, inserted as they come, with `done` counting them.
+  // prefetch()'s balls on the device, kept as they come.
   void solve_on_device(std::span<const VertexId> missing, ProgressLine& progress) const;
-
-  enum class Queued : std::uint8_t { no, waiting, solving };
+  // Solves `taken` (claimed from the queue) with `lock` on mutex_ released
+  // meanwhile, under `scratch_guard` if given, and keeps them; `lock` is
+  // held again on return, also when the solve throws.
+  std::vector<std::shared_ptr<const Ball>> solve_taken(std::span<const VertexId> taken,
+                                                       std::unique_lock<std::mutex>& lock, SolverScratch& scratch,
+                                                       std::mutex* scratch_guard) const;
+  void help() const;  // a helper thread of request()
+  // With mutex_ held: counts a solve and caches its ball; evicts to the budget.
+  void keep(VertexId u, std::shared_ptr<const Ball> ball) const;
+  void evict() const;
 
   std::size_t vertex_count_;
   Settings settings_;
@@ -124,22 +118,13 @@ class LocalDistances final : public DistanceStore {
   mutable std::mutex device_mutex_;
   std::unique_ptr<DeviceBallSolver> device_balls_;  // under device_mutex_
 
+  // Guards the cache, the queue and the statistics together.
   mutable std::mutex mutex_;
-  mutable std::vector<std::shared_ptr<const Ball>> balls_;  // per vertex; null when not held
-  mutable std::vector<std::uint64_t> last_used_;            // per vertex: the access clock when last read
-  mutable std::uint64_t clock_ = 0;
-  mutable std::uint64_t cached_bytes_ = 0;
-  mutable std::vector<VertexId> cached_;  // the vertices whose ball is held
+  mutable BallCache cache_;
+  mutable BallQueue queue_;  // helpers start with the first request and stop with the store
+  mutable Statistics statistics_;  // but peak_bytes, which the cache keeps
   mutable std::mutex scratch_mutex_;
   mutable SolverScratch scratch_;  // for balls computed one at a time, outside mutex_
-  mutable Statistics statistics_;
-
-  // request()'s queue: helpers start with the first request and stop with the store.
-  mutable std::vector<Queued> queued_;  // per vertex
-  mutable std::deque<VertexId> waiting_;
-  mutable std::condition_variable work_ready_, ball_ready_;
-  mutable std::vector<std::thread> helpers_;
-  mutable bool stopping_ = false;
 };
 
 // The one-sided distance from the ball's source to v, if v is in the ball.

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <string>
 
+#include "common/user_error.hpp"
 #include "particles/particle_params.hpp"
 
 namespace meshparticles {
@@ -15,6 +17,14 @@ inline constexpr float kFieldUnitsPerWeight = 0x1p40f;
 
 // F <= n * 2^40 must stay below 2^63.
 inline constexpr std::size_t kMaxFieldParticles = std::size_t{1} << 22;
+
+// Refuses more particles than that (UserError), for every field backend.
+inline void check_field_particle_count(std::size_t particles) {
+  if (particles > kMaxFieldParticles) {
+    throw UserError("the field backend takes at most " + std::to_string(kMaxFieldParticles) + " particles (" +
+                    std::to_string(particles) + " asked): its 64-bit field would overflow");
+  }
+}
 
 // w(d) as the kernels compute it (particle_energy.h): in float.
 inline float pair_weight_float(Potential potential, float d, float inv_two_sigma_sq) {

@@ -6,6 +6,7 @@
 
 #include "common/progress.hpp"
 #include "common/random.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "particles/farthest_vertex.hpp"
 
 namespace meshparticles {

@@ -62,4 +62,15 @@ class ParticleBackend {
 // The number of colour groups a scheme updates one after the other.
 inline unsigned sub_steps(Scheme scheme, unsigned colors) { return scheme == Scheme::colored ? colors : 1; }
 
+// The particles one iteration on the host moves: `sequential_sweep()`, or
+// `synchronous_step(color, groups)` for each colour group in turn.
+template <typename Sweep, typename Step>
+std::size_t host_iteration_moves(Scheme scheme, unsigned colors, Sweep sequential_sweep, Step synchronous_step) {
+  if (scheme == Scheme::sequential) return sequential_sweep();
+  const unsigned groups = sub_steps(scheme, colors);
+  std::size_t moved = 0;
+  for (unsigned color = 0; color < groups; ++color) moved += synchronous_step(color, groups);
+  return moved;
+}
+
 }  // namespace meshparticles

@@ -10,6 +10,7 @@
 #include "common/elapsed.hpp"
 #include "common/memory_limits.hpp"
 #include "common/user_error.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "mesh/point_insertion.hpp"
 #include "mesh/surface_walk.hpp"
 #include "particles/particle_file.hpp"

@@ -7,6 +7,7 @@
 
 #include "common/progress.hpp"
 #include "geodesics/local_distances.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "particles/energy.hpp"
 
 namespace meshparticles {
