@@ -14,11 +14,11 @@
 #include <string>
 #include <thread>
 
-#include "batch/failure.hpp"
 #include "batch/mesh_queue.hpp"
 #include "batch/node_share.hpp"
 #include "common/json_text.hpp"
 #include "common/user_error.hpp"
+#include "launch/failure.hpp"
 
 namespace meshparticles {
 

@@ -9,9 +9,6 @@
 #include <optional>
 #include <string>
 
-#include "batch/batch_inputs.hpp"
-#include "batch/failure.hpp"
-#include "batch/launch_environment.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
 #include "common/directory_lock.hpp"
@@ -20,6 +17,9 @@
 #include "correspondence/correspondence_checkpoint.hpp"
 #include "correspondence/correspondence_outputs.hpp"
 #include "correspondence/shape_records.hpp"
+#include "launch/batch_inputs.hpp"
+#include "launch/failure.hpp"
+#include "launch/launch_environment.hpp"
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {

@@ -1,4 +1,4 @@
-#include "batch/launch_environment.hpp"
+#include "launch/launch_environment.hpp"
 
 #include <cstdlib>
 #include <optional>
