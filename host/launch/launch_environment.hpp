@@ -13,4 +13,7 @@ struct MpiLaunch {
 
 MpiLaunch mpi_launch_from_environment();
 
+// The node's cores divided among the `node_ranks` ranks on it, at least one each.
+unsigned cores_per_rank(int node_ranks);
+
 }  // namespace meshparticles
