@@ -24,7 +24,7 @@
 
 namespace meshparticles {
 
-struct CorrespondRequest {
+struct PopulationRequest {
   std::vector<std::filesystem::path> meshes;  // the first is the template
   RunRequest run;                             // the template's run (-n, seed, method, ...)
   JointRefinementOptions refinement;
@@ -57,9 +57,9 @@ struct PopulationCorrespondence {
 // taken from it instead of done again: the result is the same to the bit.
 // Throws UserError for a mesh that cannot be read (naming it), and for -n
 // above the template's vertices.
-PopulationCorrespondence correspond_population(const CorrespondRequest& request, ShapeShare& share,
+PopulationCorrespondence correspond_population(const PopulationRequest& request, ShapeShare& share,
                                                const CorrespondCheckpoint* checkpoint);
 // One process, all cores, no checkpoint.
-PopulationCorrespondence correspond_population(const CorrespondRequest& request);
+PopulationCorrespondence correspond_population(const PopulationRequest& request);
 
 }  // namespace meshparticles
