@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <initializer_list>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
@@ -49,19 +49,6 @@ PointSet positions(const std::vector<SurfaceLocation>& at) {
   PointSet points(Eigen::Index(at.size()), 3);
   for (std::size_t i = 0; i < at.size(); ++i) points.row(Eigen::Index(i)) << at[i].at.x, at[i].at.y, at[i].at.z;
   return points;
-}
-
-// What a process tells the others of each of its shapes: its particles'
-// places (row-major), then a few numbers of the step.
-std::vector<double> shape_message(const PointSet& points, std::initializer_list<double> numbers) {
-  const Eigen::VectorXd flat = flattened(points);
-  std::vector<double> message(flat.begin(), flat.end());
-  message.insert(message.end(), numbers);
-  return message;
-}
-
-PointSet message_points(const std::vector<double>& message, std::size_t particles) {
-  return unflattened(Eigen::Map<const Eigen::VectorXd>(message.data(), Eigen::Index(3 * particles)));
 }
 
 // Every shape's hexagonal spacing, on every process.
@@ -108,7 +95,7 @@ void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet
       weight > 0 ? term.steps(points, spacings)
                  : CorrespondenceSteps{std::vector<PointSet>(shapes.size(), PointSet::Zero(Eigen::Index(particles), 3))};
   const std::vector<PointSet>& pulls = pull.steps;
-  std::vector<std::vector<double>> messages(shapes.size());
+  std::vector<ShapePoints> moved(shapes.size());
   for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
     double overlap = 0;
     const PointSet push = sampling_step(points[k], spacings[k], overlap);
@@ -122,13 +109,13 @@ void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet
       if (length > largest) move = (largest / length) * move;
       if (length > 0) at = walks[k]->walk(at.triangle, at.at + move);
     }
-    messages[k] = shape_message(positions(shapes[k].at), {overlap});
+    moved[k] = {positions(shapes[k].at), {overlap}};
   });
-  share.gather(messages);
+  share.gather_points(moved, particles);
   double overlap = 0;
   for (std::size_t k = 0; k < shapes.size(); ++k) {
-    points[k] = message_points(messages[k], particles);
-    overlap += messages[k].back();
+    points[k] = std::move(moved[k].points);
+    overlap += moved[k].numbers.front();
   }
   record.overlap.push_back(overlap / double(shapes.size()));
   record.correspondence_step.push_back(pull.mean_length);
@@ -153,19 +140,18 @@ struct PackingStatus {
 // Every shape's status before round `round`, gathered from the owners.
 std::vector<PackingStatus> packing_status(const std::vector<std::optional<ShapePacking>>& packings,
                                           std::size_t particles, std::size_t round, ShapeShare& share) {
-  std::vector<std::vector<double>> messages(packings.size());
+  // The numbers: the smallest spacing held, growing, released (1 or 0).
+  std::vector<ShapePoints> shapes(packings.size());
   for (const std::size_t k : share.owned()) {
     const ShapePacking& packing = *packings[k];
     const bool growing = packing.active && packing.growth.patient(round);
-    messages[k] = shape_message(positions(packing.relaxation.locations()),
-                                {packing.growth.target(), growing ? 1.0 : 0.0, packing.released ? 1.0 : 0.0});
+    shapes[k] = {positions(packing.relaxation.locations()),
+                 {packing.growth.target(), growing ? 1.0 : 0.0, packing.released ? 1.0 : 0.0}};
   }
-  share.gather(messages);
+  share.gather_points(shapes, particles);
   std::vector<PackingStatus> status;
-  for (const std::vector<double>& message : messages) {
-    const std::size_t numbers = 3 * particles;
-    status.push_back({message_points(message, particles), message[numbers], message[numbers + 1] != 0,
-                      message[numbers + 2] != 0});
+  for (ShapePoints& shape : shapes) {
+    status.push_back({std::move(shape.points), shape.numbers[0], shape.numbers[1] != 0, shape.numbers[2] != 0});
   }
   return status;
 }
@@ -230,14 +216,14 @@ void iterate_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles,
   const std::vector<double> spacings = population_spacings(shapes, particles, share);
   std::vector<std::optional<SurfaceWalk>> own_walks(shapes.size());
   std::vector<SurfaceWalk*> walks(shapes.size(), nullptr);
-  std::vector<std::vector<double>> messages(shapes.size());
+  std::vector<ShapePoints> start(shapes.size());
   for (const std::size_t k : share.owned()) {
     walks[k] = &own_walks[k].emplace(*shapes[k].mesh);
-    messages[k] = shape_message(positions(shapes[k].at), {});
+    start[k].points = positions(shapes[k].at);
   }
-  share.gather(messages);
+  share.gather_points(start, particles);
   std::vector<PointSet> points;
-  for (const std::vector<double>& message : messages) points.push_back(message_points(message, particles));
+  for (ShapePoints& shape : start) points.push_back(std::move(shape.points));
   const std::unique_ptr<CorrespondenceTerm> term = correspondence_term(options);
   ProgressLine progress("refine", options.iterations, quiet);
   for (std::size_t iteration = 0; iteration < options.iterations; ++iteration) {
