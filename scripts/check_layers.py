@@ -22,7 +22,7 @@ LAYERS = [
     ["backends", "quality", "shape_model"],
     ["pipeline"],
     ["measurement"],
-    ["reports"],
+    ["reports", "launch"],
     ["batch", "correspondence"],
     ["cli"],
 ]

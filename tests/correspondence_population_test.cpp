@@ -154,7 +154,7 @@ class SmallPopulation : public ::testing::Test {
   }
   static PopulationCorrespondence correspond(const std::vector<std::filesystem::path>& files, std::size_t iterations,
                                              double weight, bool pack) {
-    CorrespondRequest request;
+    PopulationRequest request;
     request.meshes = files;
     request.run.particles = kParticles;
     request.quiet = true;

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "batch/batch_inputs.hpp"
 #include "batch/particle_count.hpp"
 #include "common/directory_lock.hpp"
+#include "launch/batch_inputs.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "pipeline/run_pipeline.hpp"
 

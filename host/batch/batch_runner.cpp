@@ -2,9 +2,9 @@
 
 #include <iostream>
 
-#include "batch/launch_environment.hpp"
 #include "batch/mesh_queue.hpp"
 #include "batch/node_share.hpp"
+#include "launch/launch_environment.hpp"
 #ifdef MESHPARTICLES_WITH_MPI
 #include "batch/mpi_work_queue.hpp"
 #endif

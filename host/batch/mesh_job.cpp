@@ -1,8 +1,8 @@
 #include "batch/mesh_job.hpp"
 
-#include "batch/failure.hpp"
-#include "common/interruption.hpp"
 #include "batch/reusable_output.hpp"
+#include "common/interruption.hpp"
+#include "launch/failure.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "reports/batch_summary.hpp"
 #include "reports/file_digest.hpp"

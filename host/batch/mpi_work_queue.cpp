@@ -14,11 +14,12 @@
 #include <string>
 #include <thread>
 
-#include "batch/failure.hpp"
 #include "batch/mesh_queue.hpp"
 #include "batch/node_share.hpp"
 #include "common/json_text.hpp"
 #include "common/user_error.hpp"
+#include "launch/failure.hpp"
+#include "launch/mpi_session.hpp"
 
 namespace meshparticles {
 
@@ -50,32 +51,6 @@ void wait_without_spinning(MPI_Request& request) {
   std::cerr << "meshparticles: rank " << rank << ": " << why << std::endl;
   std::_Exit(1);
 }
-
-class MpiSession {
- public:
-  MpiSession() {
-    int provided = 0;
-    // Rank 0 calls MPI from its dispatcher thread while the main thread runs
-    // meshes, and from the main thread only before and after: serialized.
-    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
-    if (provided < MPI_THREAD_SERIALIZED) {
-      MPI_Finalize();
-      throw std::runtime_error("the MPI library does not allow MPI calls from a second thread");
-    }
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    MPI_Comm node;
-    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node);
-    MPI_Comm_rank(node, &node_rank);
-    MPI_Comm_size(node, &node_size);
-    MPI_Comm_free(&node);
-  }
-  MpiSession(const MpiSession&) = delete;
-  MpiSession& operator=(const MpiSession&) = delete;
-  ~MpiSession() { MPI_Finalize(); }
-
-  int rank = 0, size = 1, node_rank = 0, node_size = 1;
-};
 
 // Ends every rank: what stops one rank's loop stops the batch, and the
 // outputs already written stay valid for a resume.
@@ -315,7 +290,9 @@ std::optional<BatchPlan> plan_on_every_rank(const BatchRequest& request, const M
 }  // namespace
 
 int run_batch_across_ranks(const BatchRequest& request) {
-  MpiSession mpi;
+  // Rank 0 calls MPI from its dispatcher thread while the main thread runs
+  // meshes, and from the main thread only before and after.
+  MpiSession mpi(MpiSession::Calls::one_at_a_time);
   const std::optional<BatchPlan> plan = plan_on_every_rank(request, mpi);
   if (!plan) return 0;
   const Seconds timeout(request.rank_timeout_seconds);

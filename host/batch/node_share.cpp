@@ -1,17 +1,15 @@
 #include "batch/node_share.hpp"
 
-#include <algorithm>
-#include <thread>
-
 #include "backends/backend_table.hpp"
 #include "common/user_error.hpp"
+#include "launch/launch_environment.hpp"
 #include "opencl/device_discovery.hpp"
 
 namespace meshparticles {
 
 void share_node(RunRequest& run, int local_rank, int local_size) {
   unsigned& threads = run.distances.geodesics.threads;
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency() / unsigned(std::max(local_size, 1)));
+  if (threads == 0) threads = cores_per_rank(local_size);
   // An empty name is the default backend, on a device or not by the store (plan_run).
   const bool may_use_device = run.backend.name.empty() || find_backend(run.backend.name).on_device();
   if (!may_use_device || !device_request(run.backend.device).text.empty()) return;

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "batch/batch_inputs.hpp"
+#include "launch/batch_inputs.hpp"
 
 namespace meshparticles {
 

@@ -3,12 +3,12 @@
 // codes: 0 success, 2 bad input or arguments, 3 no OpenCL runtime, 1 a bug.
 #include <iostream>
 
-#include "batch/failure.hpp"
 #include "cli/command_guide.hpp"
 #include "cli/commands.hpp"
 #include "cli/option_values.hpp"
 #include "common/text_format.hpp"
 #include "common/version.hpp"
+#include "launch/failure.hpp"
 
 namespace meshparticles {
 

@@ -3,17 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <initializer_list>
+#include <memory>
 #include <optional>
+#include <utility>
 
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
+#include "correspondence/correspondence_term.hpp"
 #include "mesh/point_cloud_tree.hpp"
 #include "particles/packing_relaxation.hpp"
 #include "particles/particle_params.hpp"
 #include "particles/spacing_relaxation.hpp"
 #include "shape_model/point_sets.hpp"
-#include "shape_model/procrustes.hpp"
 
 namespace meshparticles {
 
@@ -25,20 +26,11 @@ constexpr std::size_t kNeighbours = 10;
 // A step is at most this share of the shape's spacing: no particle jumps
 // over a neighbour, and the walk stays short.
 constexpr double kLargestStep = 0.3;
-// The ensemble entropy's regulariser, per particle, in spacings: variation
-// that moves particles by much less than this between shapes is shrunk
-// (noise, a correspondence slipping), by much more is kept (a mode). At a
-// tenth of a spacing, the part of a nonlinear mode that the linear modes
-// miss (a bump growing) was shrunk too, pulling particles down the bump's
-// sides: holes at its tip (cover 1.56 at n = 1,024).
-constexpr double kShapeNoise = 0.05;
 // Each particle of a pair closer than the spacing moves away by this share of
 // the overlap: a quarter, not a half, because a crowded particle is pushed by
 // several neighbours at once, and half each overshoots into a jostle (nn_cv
 // 0.040 against 0.022 at n = 256 on the ellipsoid population).
 constexpr double kPush = 0.25;
-// How much of the shrinkable variation one iteration removes.
-constexpr double kShrinkRate = 0.5;
 // Over the packing's first rounds the correspondence step's weight fades
 // from the iterations' to the share the packing holds
 // (JointRefinementOptions::packing_hold); the rounds stop when no shape's
@@ -57,19 +49,6 @@ PointSet positions(const std::vector<SurfaceLocation>& at) {
   PointSet points(Eigen::Index(at.size()), 3);
   for (std::size_t i = 0; i < at.size(); ++i) points.row(Eigen::Index(i)) << at[i].at.x, at[i].at.y, at[i].at.z;
   return points;
-}
-
-// What a process tells the others of each of its shapes: its particles'
-// places (row-major), then a few numbers of the step.
-std::vector<double> shape_message(const PointSet& points, std::initializer_list<double> numbers) {
-  const Eigen::VectorXd flat = flattened(points);
-  std::vector<double> message(flat.begin(), flat.end());
-  message.insert(message.end(), numbers);
-  return message;
-}
-
-PointSet message_points(const std::vector<double>& message, std::size_t particles) {
-  return unflattened(Eigen::Map<const Eigen::VectorXd>(message.data(), Eigen::Index(3 * particles)));
 }
 
 // Every shape's hexagonal spacing, on every process.
@@ -103,56 +82,20 @@ PointSet sampling_step(const PointSet& points, double spacing, double& overlap) 
   return step;
 }
 
-// Per shape, the step (in its own coordinates) down the gradient of
-// log det(C + alpha I), C the covariance of the aligned shapes: with Y the
-// centred shapes as columns, (Y Y^T / S + alpha I)^-1 y_k = Y (Y^T Y / S +
-// alpha I)^-1 e_k (S x S, ShapeWorks' dual form). Along a mode of variance
-// lambda a shape moves back by rate alpha / (lambda + alpha) of its part.
-// The spacing in the aligned frame is each shape's spacing `spacings[k]` at the
-// aligned size, averaged. `mean_step` gets the mean step's length in it.
-std::vector<PointSet> correspondence_steps(const std::vector<PointSet>& shapes, const std::vector<double>& spacings,
-                                           double& mean_step) {
-  const ProcrustesAlignment alignment = align_procrustes(shapes, true);
-  const Eigen::Index count = Eigen::Index(shapes.size());
-  double aligned_spacing = 0;
-  for (std::size_t k = 0; k < shapes.size(); ++k) {
-    aligned_spacing += spacings[k] * alignment.transforms[k].scale / double(count);
-  }
-  const Eigen::Index length = shapes.front().rows() * 3;
-  Eigen::MatrixXd centred(length, count);
-  for (Eigen::Index k = 0; k < count; ++k) centred.col(k) = flattened(alignment.aligned[std::size_t(k)]);
-  const Eigen::VectorXd mean = centred.rowwise().mean();
-  centred.colwise() -= mean;
-  const double particles = double(shapes.front().rows());
-  const double alpha = particles * std::pow(kShapeNoise * aligned_spacing, 2);
-  const Eigen::MatrixXd gram = centred.transpose() * centred / double(count) +
-                               alpha * Eigen::MatrixXd::Identity(count, count);
-  const Eigen::MatrixXd pulled = centred * gram.ldlt().solve(Eigen::MatrixXd::Identity(count, count));
-  std::vector<PointSet> steps;
-  double total = 0;
-  for (Eigen::Index k = 0; k < count; ++k) {
-    const Similarity& to_common = alignment.transforms[std::size_t(k)];
-    const PointSet aligned_step = unflattened(-kShrinkRate * alpha * pulled.col(k));
-    total += aligned_step.rowwise().norm().mean();
-    // Back into the shape's own coordinates: turned back, unscaled.
-    steps.push_back(aligned_step * to_common.rotation / to_common.scale);
-  }
-  mean_step = total / double(count) / aligned_spacing;
-  return steps;
-}
-
 // Every owned shape's particles, each step: the sampling step's push plus
-// the weighted correspondence step, along the surface, at most
+// the weighted step of the correspondence `term`, along the surface, at most
 // kLargestStep. `points`: every shape's places before the step, replaced
 // by those after it; the mean overlap and correspondence step go into `record`.
 void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet>& points,
-                       const std::vector<SurfaceWalk*>& walks, const std::vector<double>& spacings, double weight,
-                       ShapeShare& share, JointRefinementRecord& record) {
-  double mean_step = 0;
+                       const std::vector<SurfaceWalk*>& walks, const std::vector<double>& spacings,
+                       const CorrespondenceTerm& term, double weight, ShapeShare& share,
+                       JointRefinementRecord& record) {
   const std::size_t particles = std::size_t(points.front().rows());
-  const std::vector<PointSet> pulls = weight > 0 ? correspondence_steps(points, spacings, mean_step)
-                                                 : std::vector<PointSet>(shapes.size(), PointSet::Zero(Eigen::Index(particles), 3));
-  std::vector<std::vector<double>> messages(shapes.size());
+  const CorrespondenceSteps pull =
+      weight > 0 ? term.steps(points, spacings)
+                 : CorrespondenceSteps{std::vector<PointSet>(shapes.size(), PointSet::Zero(Eigen::Index(particles), 3))};
+  const std::vector<PointSet>& pulls = pull.steps;
+  std::vector<ShapePoints> moved(shapes.size());
   for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
     double overlap = 0;
     const PointSet push = sampling_step(points[k], spacings[k], overlap);
@@ -166,16 +109,16 @@ void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet
       if (length > largest) move = (largest / length) * move;
       if (length > 0) at = walks[k]->walk(at.triangle, at.at + move);
     }
-    messages[k] = shape_message(positions(shapes[k].at), {overlap});
+    moved[k] = {positions(shapes[k].at), {overlap}};
   });
-  share.gather(messages);
+  share.gather_points(moved, particles);
   double overlap = 0;
   for (std::size_t k = 0; k < shapes.size(); ++k) {
-    points[k] = message_points(messages[k], particles);
-    overlap += messages[k].back();
+    points[k] = std::move(moved[k].points);
+    overlap += moved[k].numbers.front();
   }
   record.overlap.push_back(overlap / double(shapes.size()));
-  record.correspondence_step.push_back(mean_step);
+  record.correspondence_step.push_back(pull.mean_length);
 }
 
 // One owned shape's packing: its particles, and the radius they grow to.
@@ -197,39 +140,39 @@ struct PackingStatus {
 // Every shape's status before round `round`, gathered from the owners.
 std::vector<PackingStatus> packing_status(const std::vector<std::optional<ShapePacking>>& packings,
                                           std::size_t particles, std::size_t round, ShapeShare& share) {
-  std::vector<std::vector<double>> messages(packings.size());
+  // The numbers: the smallest spacing held, growing, released (1 or 0).
+  std::vector<ShapePoints> shapes(packings.size());
   for (const std::size_t k : share.owned()) {
     const ShapePacking& packing = *packings[k];
     const bool growing = packing.active && packing.growth.patient(round);
-    messages[k] = shape_message(positions(packing.relaxation.locations()),
-                                {packing.growth.target(), growing ? 1.0 : 0.0, packing.released ? 1.0 : 0.0});
+    shapes[k] = {positions(packing.relaxation.locations()),
+                 {packing.growth.target(), growing ? 1.0 : 0.0, packing.released ? 1.0 : 0.0}};
   }
-  share.gather(messages);
+  share.gather_points(shapes, particles);
   std::vector<PackingStatus> status;
-  for (const std::vector<double>& message : messages) {
-    const std::size_t numbers = 3 * particles;
-    status.push_back({message_points(message, particles), message[numbers], message[numbers + 1] != 0,
-                      message[numbers + 2] != 0});
+  for (ShapePoints& shape : shapes) {
+    status.push_back({std::move(shape.points), shape.numbers[0], shape.numbers[1] != 0, shape.numbers[2] != 0});
   }
   return status;
 }
 
 // A packing round of every owned shape still growing, each particle of a
-// shape not released nudged by `weight` times its correspondence step.
-// Each shape's round is its own work: the result is the same whatever the
-// number of threads and processes. Returns the status after the round.
+// shape not released nudged by `weight` times its step of the
+// correspondence `term`. Each shape's round is its own work: the result is
+// the same whatever the number of threads and processes. Returns the
+// status after the round.
 std::vector<PackingStatus> packing_round(std::vector<std::optional<ShapePacking>>& packings,
                                          const std::vector<PackingStatus>& status, std::size_t round,
-                                         const std::vector<double>& spacings, double weight, ShapeShare& share,
-                                         JointRefinementRecord& record) {
+                                         const std::vector<double>& spacings, const CorrespondenceTerm& term,
+                                         double weight, ShapeShare& share, JointRefinementRecord& record) {
   const auto nudged = [](const PackingStatus& shape) { return shape.growing && !shape.released; };
-  double mean_step = 0;
-  std::vector<PointSet> pulls;
+  CorrespondenceSteps pull;
   if (weight > 0 && std::any_of(status.begin(), status.end(), nudged)) {
     std::vector<PointSet> points;
     for (const PackingStatus& shape : status) points.push_back(shape.points);
-    pulls = correspondence_steps(points, spacings, mean_step);
+    pull = term.steps(points, spacings);
   }
+  const std::vector<PointSet>& pulls = pull.steps;
   for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
     ShapePacking& packing = *packings[k];
     if (!status[k].growing) return;
@@ -248,7 +191,7 @@ std::vector<PackingStatus> packing_round(std::vector<std::optional<ShapePacking>
   double spacing_sum = 0;
   for (std::size_t k = 0; k < after.size(); ++k) spacing_sum += after[k].target / spacings[k];
   record.packing_spacing.push_back(spacing_sum / double(after.size()));
-  record.packing_correspondence_step.push_back(mean_step);
+  record.packing_correspondence_step.push_back(pull.mean_length);
   return after;
 }
 
@@ -273,17 +216,18 @@ void iterate_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles,
   const std::vector<double> spacings = population_spacings(shapes, particles, share);
   std::vector<std::optional<SurfaceWalk>> own_walks(shapes.size());
   std::vector<SurfaceWalk*> walks(shapes.size(), nullptr);
-  std::vector<std::vector<double>> messages(shapes.size());
+  std::vector<ShapePoints> start(shapes.size());
   for (const std::size_t k : share.owned()) {
     walks[k] = &own_walks[k].emplace(*shapes[k].mesh);
-    messages[k] = shape_message(positions(shapes[k].at), {});
+    start[k].points = positions(shapes[k].at);
   }
-  share.gather(messages);
+  share.gather_points(start, particles);
   std::vector<PointSet> points;
-  for (const std::vector<double>& message : messages) points.push_back(message_points(message, particles));
+  for (ShapePoints& shape : start) points.push_back(std::move(shape.points));
+  const std::unique_ptr<CorrespondenceTerm> term = correspondence_term(options);
   ProgressLine progress("refine", options.iterations, quiet);
   for (std::size_t iteration = 0; iteration < options.iterations; ++iteration) {
-    evening_iteration(shapes, points, walks, spacings, options.correspondence_weight, share, record);
+    evening_iteration(shapes, points, walks, spacings, *term, options.correspondence_weight, share, record);
     char detail[80];
     std::snprintf(detail, sizeof detail, "overlap %.4f, correspondence step %.4f", record.overlap.back(),
                   record.correspondence_step.back());
@@ -302,6 +246,7 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
     const double start = relaxation.smallest_spacing(2 * spacings[k]);
     packings[k].emplace(std::move(relaxation), RadiusGrowth(std::isfinite(start) ? start : spacings[k], 0));
   });
+  const std::unique_ptr<CorrespondenceTerm> term = correspondence_term(options);
   ProgressLine progress("pack", 2 * kPackingRounds, quiet);
   std::size_t round = 1;
   std::vector<PackingStatus> status = packing_status(packings, particles, round, share);
@@ -311,7 +256,7 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
     for (; round <= last && std::any_of(status.begin(), status.end(), growing); ++round) {
       const double fading = std::max(0.0, 1 - double(round - 1) / double(kFadingRounds));
       const double weight = options.correspondence_weight * std::max(options.packing_hold, fading);
-      status = packing_round(packings, status, round, spacings, weight, share, record);
+      status = packing_round(packings, status, round, spacings, *term, weight, share, record);
       char detail[80];
       std::snprintf(detail, sizeof detail, "smallest spacing %.4f d_hex, %zu shapes growing",
                     record.packing_spacing.back(), std::size_t(std::count_if(status.begin(), status.end(), growing)));

@@ -4,46 +4,23 @@
 // own shapes between the calls.
 #include <mpi.h>
 
-#include <algorithm>
 #include <cstdlib>
-#include <stdexcept>
-#include <thread>
+#include <memory>
+#include <utility>
 
 #include "correspondence/shape_share.hpp"
+#include "launch/launch_environment.hpp"
+#include "launch/mpi_session.hpp"
 
 namespace meshparticles {
 
 namespace {
 
-struct Launch {
-  int rank = 0, processes = 1;
-  unsigned threads = 1;  // the node's cores divided among its ranks
-};
-
-Launch start_mpi() {
-  int provided = 0;
-  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-  if (provided < MPI_THREAD_FUNNELED) {
-    MPI_Finalize();
-    throw std::runtime_error("the MPI library does not allow threads beside MPI");
-  }
-  Launch launch;
-  MPI_Comm_rank(MPI_COMM_WORLD, &launch.rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &launch.processes);
-  MPI_Comm node;
-  int node_size = 1;
-  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, launch.rank, MPI_INFO_NULL, &node);
-  MPI_Comm_size(node, &node_size);
-  MPI_Comm_free(&node);
-  launch.threads = std::max(1u, std::thread::hardware_concurrency() / unsigned(std::max(node_size, 1)));
-  return launch;
-}
-
 class MpiShapeShare : public ShapeShare {
  public:
-  MpiShapeShare(std::size_t shapes, const Launch& launch)
-      : ShapeShare(shapes, launch.rank, launch.processes, launch.threads) {}
-  ~MpiShapeShare() override { MPI_Finalize(); }
+  // `mpi` lives as long as the share: MPI ends with it.
+  MpiShapeShare(std::size_t shapes, std::unique_ptr<MpiSession> mpi, unsigned threads)
+      : ShapeShare(shapes, mpi->rank, mpi->size, threads), mpi_(std::move(mpi)) {}
 
   void gather(std::vector<std::vector<double>>& values) override { gather_blocks(values, MPI_DOUBLE); }
   void gather(std::vector<std::string>& texts) override { gather_blocks(texts, MPI_CHAR); }
@@ -55,6 +32,8 @@ class MpiShapeShare : public ShapeShare {
   }
 
  private:
+  std::unique_ptr<MpiSession> mpi_;
+
   // Rank r's first shape, and one past its last (as ShapeShare's blocks).
   std::size_t block_start(int r) const { return shapes() * std::size_t(r) / std::size_t(processes()); }
 
@@ -105,9 +84,10 @@ class MpiShapeShare : public ShapeShare {
 }  // namespace
 
 std::unique_ptr<ShapeShare> share_shapes_across_ranks(std::size_t shapes, unsigned threads) {
-  Launch launch = start_mpi();
-  if (threads) launch.threads = threads;
-  return std::make_unique<MpiShapeShare>(shapes, launch);
+  // Only the main thread calls MPI: the threads of a rank work on its own shapes between the calls.
+  auto mpi = std::make_unique<MpiSession>(MpiSession::Calls::main_thread);
+  if (threads == 0) threads = cores_per_rank(mpi->node_size);
+  return std::make_unique<MpiShapeShare>(shapes, std::move(mpi), threads);
 }
 
 }  // namespace meshparticles

@@ -139,7 +139,7 @@ std::vector<SurfacePoint> template_from_checkpoint(const nlohmann::json& kept, s
 
 // The template's run (or the checkpoint's), on the leader: its particles as
 // the template's vertices' weights, and its quality.
-std::vector<SurfacePoint> sample_template(const SurfaceMesh& template_mesh, const CorrespondRequest& request,
+std::vector<SurfacePoint> sample_template(const SurfaceMesh& template_mesh, const PopulationRequest& request,
                                           const CorrespondCheckpoint* checkpoint, DistributionQuality& quality) {
   if (checkpoint) {
     const auto kept = checkpoint->read("template", [&](const nlohmann::json& values) {
@@ -244,12 +244,12 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
 
 }  // namespace
 
-PopulationCorrespondence correspond_population(const CorrespondRequest& request) {
+PopulationCorrespondence correspond_population(const PopulationRequest& request) {
   ShapeShare share(request.meshes.size());
   return correspond_population(request, share, nullptr);
 }
 
-PopulationCorrespondence correspond_population(const CorrespondRequest& request, ShapeShare& share,
+PopulationCorrespondence correspond_population(const PopulationRequest& request, ShapeShare& share,
                                                const CorrespondCheckpoint* checkpoint) {
   PopulationCorrespondence population;
   const std::size_t count = request.meshes.size();

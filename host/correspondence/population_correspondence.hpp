@@ -7,7 +7,6 @@
 // place, up to how well the shapes fit, on every shape; then every shape's
 // particles are refined together (joint_refinement): each shape evened out
 // while the correspondence holds. docs/CORRESPONDENCE.md.
-#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -15,30 +14,18 @@
 
 #include "correspondence/correspondence_checkpoint.hpp"
 #include "correspondence/joint_refinement.hpp"
-#include "correspondence/mesh_alignment.hpp"
+#include "correspondence/shape_correspondence.hpp"
 #include "correspondence/shape_share.hpp"
-#include "mesh/mesh_topology.hpp"
-#include "mesh/surface_location.hpp"
 #include "quality/distribution_quality.hpp"
 #include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles {
 
-struct CorrespondRequest {
+struct PopulationRequest {
   std::vector<std::filesystem::path> meshes;  // the first is the template
   RunRequest run;                             // the template's run (-n, seed, method, ...)
   JointRefinementOptions refinement;
   bool quiet = false;
-};
-
-struct ShapeCorrespondence {
-  std::filesystem::path mesh;
-  std::size_t vertices = 0;
-  MeshAlignment alignment;
-  MeshTopology topology;                 // components, boundary loops, genus
-  std::vector<InputLocation> locations;  // per particle: where it lies on this shape
-  PointSet particles;                      // their positions, the shape's own coordinates
-  DistributionQuality quality;             // how evenly they cover the shape, as `run` measures its own
 };
 
 struct PopulationCorrespondence {
@@ -57,9 +44,9 @@ struct PopulationCorrespondence {
 // taken from it instead of done again: the result is the same to the bit.
 // Throws UserError for a mesh that cannot be read (naming it), and for -n
 // above the template's vertices.
-PopulationCorrespondence correspond_population(const CorrespondRequest& request, ShapeShare& share,
+PopulationCorrespondence correspond_population(const PopulationRequest& request, ShapeShare& share,
                                                const CorrespondCheckpoint* checkpoint);
 // One process, all cores, no checkpoint.
-PopulationCorrespondence correspond_population(const CorrespondRequest& request);
+PopulationCorrespondence correspond_population(const PopulationRequest& request);
 
 }  // namespace meshparticles

@@ -14,7 +14,10 @@
 #include <nlohmann/json.hpp>
 
 #include "correspondence/joint_refinement.hpp"
-#include "correspondence/population_correspondence.hpp"
+#include "correspondence/mesh_alignment.hpp"
+#include "correspondence/shape_correspondence.hpp"
+#include "mesh/mesh_topology.hpp"
+#include "mesh/surface_location.hpp"
 
 namespace meshparticles {
 

@@ -12,7 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "shape_model/point_sets.hpp"
+
 namespace meshparticles {
+
+// What a process tells the others of one of its shapes: its particles'
+// places, and a few numbers of the step (the same count for every shape).
+struct ShapePoints {
+  PointSet points;
+  std::vector<double> numbers;
+};
 
 class ShapeShare {
  public:
@@ -35,6 +44,8 @@ class ShapeShare {
   // filled it (lengths may differ between shapes).
   virtual void gather(std::vector<std::vector<double>>& values) { (void)values; }
   virtual void gather(std::vector<std::string>& texts) { (void)texts; }
+  // Every shape's points (`particles` rows) and numbers, as its owner filled them, on every process.
+  void gather_points(std::vector<ShapePoints>& shapes, std::size_t particles);
   // The leader's `values` on every process.
   virtual void broadcast(std::vector<double>& values) { (void)values; }
   virtual void broadcast(std::string& text) { (void)text; }

@@ -1,4 +1,4 @@
-#include "batch/batch_inputs.hpp"
+#include "launch/batch_inputs.hpp"
 
 #include <algorithm>
 #include <fstream>

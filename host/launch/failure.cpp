@@ -1,4 +1,4 @@
-#include "batch/failure.hpp"
+#include "launch/failure.hpp"
 
 #include <new>
 #include <stdexcept>

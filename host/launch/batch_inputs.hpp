@@ -1,5 +1,5 @@
 #pragma once
-// The meshes of a batch from its INPUTS, in order: a mesh file stands for
+// The meshes of a batch or a correspond from its INPUTS, in order: a mesh file stands for
 // itself; a folder for its mesh files (.off, .obj, .ply, .stl, .vtk in any case;
 // not its subfolders, where earlier outputs may lie), by name; a .txt file
 // for the meshes it lists, one path a line, relative to the list's folder,

@@ -1,8 +1,10 @@
-#include "batch/launch_environment.hpp"
+#include "launch/launch_environment.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <thread>
 
 namespace meshparticles {
 
@@ -30,6 +32,10 @@ MpiLaunch mpi_launch_from_environment() {
   if (!rank) return {};
   const std::optional<int> size = first_number({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_STEP_NUM_TASKS"});
   return {true, *rank, size.value_or(0)};
+}
+
+unsigned cores_per_rank(int node_ranks) {
+  return std::max(1u, std::thread::hardware_concurrency() / unsigned(std::max(node_ranks, 1)));
 }
 
 }  // namespace meshparticles
