@@ -19,6 +19,7 @@
 #include "particles/initial_placement.hpp"
 #include "particles/particle_voronoi.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
 
 namespace meshparticles::testing {

@@ -26,39 +26,6 @@
 
 namespace meshparticles {
 
-// spread measures its result through balls of this many hexagonal spacings
-// (unless --cutoff says otherwise): every nearest neighbour of a spread set
-// lies within (they are 0.7 to 1 spacing apart), and balls of 3 cost four
-// times as much, a fifth of a run on real models. The energy it reports
-// sums the pairs within it only.
-inline constexpr double kSpreadQualityCutoff = 1.5;
-// ... and through balls of this many where a particle has no other within
-// those (a few particles on a small or open surface: 4 on the committed
-// patch are 1.86 spacings apart).
-inline constexpr double kSpreadWideQualityCutoff = 3.0;
-// spread: a particle moves only to gain more than this many hexagonal
-// spacings of distance to its nearest (below it, fast marching's noise).
-inline constexpr double kSpreadMinGain = 1e-3;
-// spread stops when a sweep raises the mean spacing by less than this many
-// hexagonal spacings.
-inline constexpr double kSpreadStallGain = 1e-4;
-// spread: rounds of relaxation after the sweeps (docs/ALGORITHM.md,
-// "Relaxation"); it stops earlier where its radius stops growing.
-inline constexpr std::size_t kSpreadRelaxRounds = 150;
-// spread: sweeps of the evening step at most (docs/ALGORITHM.md, "Evening");
-// it stops earlier when one moves nothing or stalls (measured on 8 CGAL
-// models at n = 1,024: 7 to 12 sweeps).
-inline constexpr std::size_t kSpreadEveningSweeps = 40;
-// spread's relaxation keeps no state whose covering radius is over this
-// share of the farthest start's (farthest-point sampling is nearly optimal
-// for cover; issue 29 asks no more than 1.1 times it).
-inline constexpr double kSpreadCoverShare = 1.1;
-// The relaxation measures cover in straight lines, shorter than geodesics:
-// its second candidate is the most spread state within the share above
-// divided by this margin (measured: straight covers 1.2 to 1.7% under fast
-// marching's on the committed meshes), tried where the first's geodesic
-// cover is over the share.
-inline constexpr double kStraightCoverMargin = 1.03;
 struct RunRequest {
   std::string mesh_label;  // names the mesh in messages and reports: its path
   std::size_t particles = 1024;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "common/version.hpp"
+#include "pipeline/spread_method.hpp"
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {
