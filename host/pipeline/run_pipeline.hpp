@@ -14,14 +14,10 @@
 #include <vector>
 
 #include "backends/backend_factory.hpp"
-#include "mesh/midpoint_refinement.hpp"
-#include "pipeline/distances.hpp"
-#include "particles/farthest_point_optimization.hpp"
 #include "particles/initial_placement.hpp"
-#include "particles/local_farthest_points.hpp"
 #include "particles/particle_run.hpp"
-#include "particles/spacing_relaxation.hpp"
-#include "particles/spread_working_mesh.hpp"
+#include "pipeline/distances.hpp"
+#include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
 
 namespace meshparticles {
@@ -64,8 +60,7 @@ struct RunPlan {
   RunRequest request;
   Method method = Method::spread;
   std::string method_from;     // "--method", "default", or the option that implies paper
-  double vertices_per_particle = 0;  // spread: asked of the working mesh
-  WorkingMeshPlan working_mesh;      // spread
+  std::optional<SpreadPlan> spread;  // spread only
   Scheme scheme = Scheme::colored;
   unsigned colors = kDefaultColors;
   EnergyParams energy;
@@ -96,17 +91,14 @@ struct RunResult {
   RunPlan plan;
   std::string device;      // kHostDevice or the OpenCL device's name
   DistancesUsed distances;
-  // spread: the mesh the particles live on, the input refined; positions,
-  // start and distance_to_nearest are on it. Null for paper (the input).
-  std::shared_ptr<const RefinedMesh> working;
-  std::vector<SweepRecord> sweeps;  // spread
-  RelaxationOutcome relaxation;     // spread (the kept candidate's points are inserted into `working`)
-  std::optional<EveningOutcome> evening;  // spread, unless --relax-rounds 0 (its points are inserted into `working`)
-  std::string stopped;              // spread: converged, cycle, stalled or max_iterations (SpreadOutcome)
+  // spread only: its working mesh (the mesh of start, outcome.positions
+  // and distance_to_nearest where present; else the input), sweeps,
+  // relaxation and evening step.
+  std::optional<SpreadDetails> spread;
   std::vector<VertexId> start;
   RunOutcome outcome;      // the trace (paper) and the final positions
 
-  const SurfaceMesh& particle_mesh(const SurfaceMesh& input) const { return working ? working->mesh : input; }
+  const SurfaceMesh& particle_mesh(const SurfaceMesh& input) const { return spread ? spread->working->mesh : input; }
   std::vector<float> distance_to_nearest;  // per vertex, to the nearest final particle
   DistributionQuality quality;
   RunTimes seconds;

@@ -32,8 +32,9 @@ void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
   if (const auto option = paper_only_option(request)) {
     throw UserError(*option + " applies to --method paper");
   }
-  plan.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
-  plan.working_mesh = plan_working_mesh(mesh, request.particles, plan.vertices_per_particle);
+  SpreadPlan& spread = plan.spread.emplace();
+  spread.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
+  spread.working_mesh = plan_working_mesh(mesh, request.particles, spread.vertices_per_particle);
   // Planned on the input: the working mesh has its area, so the same radius.
   request.distances = spread_distances(request.distances);
   plan.distances = plan_distances(mesh, request.distances, request.particles, false);
@@ -48,7 +49,7 @@ namespace {
 void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& working, const std::string& label,
                     std::vector<float> to_nearest = {}) {
   const RunRequest& request = result.plan.request;
-  result.working = working;
+  result.spread->working = working;
   const SurfaceMesh& measured = working->mesh;
   const auto cover_started = std::chrono::steady_clock::now();
   naming_memory_failures(label, "measuring the result", [&] {
@@ -108,10 +109,11 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadMinGain * d_hex, kSpreadStallGain * d_hex,
                              cover_limit};
-  result.evening = naming_memory_failures(request.mesh_label, "evening the spacing", [&] {
+  std::optional<EveningOutcome>& evening = result.spread->evening;
+  evening = naming_memory_failures(request.mesh_label, "evening the spacing", [&] {
     return even_out(surface, solver, std::move(from), limits, request.quiet);
   });
-  InsertedPoints inserted = insert_points(*working, mesh, result.evening->points);
+  InsertedPoints inserted = insert_points(*working, mesh, evening->points);
   result.outcome.positions = std::move(inserted.vertices);
   working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
 }
@@ -122,11 +124,12 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   RunResult result;
   result.plan = plan;
   result.device = kHostDevice;
+  SpreadDetails& details = result.spread.emplace();
   const RunRequest& request = plan.request;
   auto particles_started = std::chrono::steady_clock::now();
   const std::string& label = request.mesh_label;
   auto working = naming_memory_failures(label, "refining the working mesh", [&] {
-    return std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.working_mesh));
+    return std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.spread->working_mesh));
   });
   const std::shared_ptr<RefinedMesh> swept = working;  // the solver's mesh, kept while it lives
   const SurfaceMesh& surface = swept->mesh;
@@ -138,10 +141,10 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
     return optimize_farthest_points(surface, *solver, result.start, request.max_iterations, kSpreadMinGain * d_hex,
                                     kSpreadStallGain * d_hex, request.quiet);
   });
-  result.sweeps = std::move(spread.sweeps);
+  details.sweeps = std::move(spread.sweeps);
   result.outcome.positions = std::move(spread.positions);
   result.outcome.converged = spread.converged;
-  result.stopped = spread.converged ? "converged"
+  details.stopped = spread.converged ? "converged"
                    : spread.cycled  ? "cycle"
                    : spread.stalled ? "stalled"
                                     : "max_iterations";
@@ -156,12 +159,12 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   const double cover_limit =
       relax_rounds == 0 ? 0.0 : kSpreadCoverShare * geodesic_cover(*solver, surface, result.start);
   const std::vector<VertexId> swept_positions = result.outcome.positions;
-  result.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
+  details.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
     const double swept_cover = relax_rounds == 0 ? 0.0 : geodesic_cover(*solver, surface, swept_positions);
     return relax_spacing(surface, swept_positions, d_hex, relax_rounds,
                          {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet);
   });
-  RelaxationOutcome& relaxation = result.relaxation;
+  RelaxationOutcome& relaxation = details.relaxation;
   std::vector<float> kept_to_nearest;  // the kept candidate's, for the measurement
   for (std::size_t k = 0; k < relaxation.candidates.size() && relaxation.kept == relaxation.candidates.size(); ++k) {
     const RelaxationCandidate& candidate = relaxation.candidates[k];
@@ -190,12 +193,12 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   // that do not push each other, but are close around its tip): the
   // relaxed set is less spread than the sweeps left it, so the sweeps' set.
   bool measured = false;
-  if (relaxation.kept < relaxation.candidates.size() && !result.sweeps.empty()) {
+  if (relaxation.kept < relaxation.candidates.size() && !details.sweeps.empty()) {
     result.seconds.particles += seconds_since(particles_started);
     measure_spread(result, working, label, std::move(kept_to_nearest));
     particles_started = std::chrono::steady_clock::now();
     measured = true;
-    if (result.quality.nn_min && *result.quality.nn_min < (1 - kSpreadMinGain) * result.sweeps.back().min_spacing) {
+    if (result.quality.nn_min && *result.quality.nn_min < (1 - kSpreadMinGain) * details.sweeps.back().min_spacing) {
       relaxation.kept = relaxation.candidates.size();
       relaxation.undone_for_spacing = true;
       result.outcome.positions = swept_positions;

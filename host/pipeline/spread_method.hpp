@@ -6,8 +6,17 @@
 // it reads distances only to measure its result. plan_run and execute_run
 // (pipeline/run_pipeline.hpp) call it for Method::spread.
 #include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
+#include "mesh/midpoint_refinement.hpp"
 #include "mesh/surface_mesh.hpp"
+#include "particles/farthest_point_optimization.hpp"
+#include "particles/local_farthest_points.hpp"
+#include "particles/spacing_relaxation.hpp"
+#include "particles/spread_working_mesh.hpp"
 
 namespace meshparticles {
 
@@ -44,6 +53,23 @@ inline constexpr double kSpreadCoverShare = 1.1;
 // marching's on the committed meshes), tried where the first's geodesic
 // cover is over the share.
 inline constexpr double kStraightCoverMargin = 1.03;
+
+// What plan_run decides for spread alone (RunPlan::spread).
+struct SpreadPlan {
+  double vertices_per_particle = 0;  // asked of the working mesh
+  WorkingMeshPlan working_mesh;
+};
+
+// What a spread run yields beside every method's result (RunResult::spread).
+struct SpreadDetails {
+  // The mesh the particles live on, the input refined; the result's
+  // positions, start and distance_to_nearest are on it.
+  std::shared_ptr<const RefinedMesh> working;
+  std::vector<SweepRecord> sweeps;
+  RelaxationOutcome relaxation;           // the kept candidate's points are inserted into `working`
+  std::optional<EveningOutcome> evening;  // unless --relax-rounds 0 (its points are inserted into `working`)
+  std::string stopped;                    // converged, cycle, stalled or max_iterations (SpreadOutcome)
+};
 
 struct RunPlan;
 struct RunResult;
