@@ -70,12 +70,11 @@ void plan_paper(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pla
                                                         selected.device ? &*selected.device : nullptr, balls);
     backend.name = chosen.name;
     default_scheme = chosen.scheme;
-    if (chosen.geodesic) plan.request.distances.geodesics.method = *chosen.geodesic;
+    if (chosen.geodesic) plan.geodesics.method = *chosen.geodesic;
     plan.backend_from = chosen.reason + (selected.why_none.empty() ? "" : " (" + selected.why_none + ")");
   } else {
     plan.backend_from = "--backend";
   }
-  plan.request.backend.name = backend.name;
   plan.scheme = request.scheme.value_or(default_scheme.value_or(find_backend(backend.name).default_scheme));
   if (request.colors && !uses_colors(plan.scheme)) {
     throw UserError("--colors applies to --scheme colored and monotone, not " + scheme_name(plan.scheme));

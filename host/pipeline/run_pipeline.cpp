@@ -18,7 +18,9 @@ namespace {
 RunPlan plan_run_unnamed(const SurfaceMesh& mesh, const RunRequest& request) {
   RunPlan plan;
   plan.request = request;
-  plan.request.distances.geodesics.quiet = request.quiet;
+  plan.geodesics = request.distances.geodesics;
+  plan.geodesics.quiet = request.quiet;
+  plan.cutoff = request.distances.cutoff;
   if (request.particles == 0) throw UserError("-n must be at least 1");
   if (request.particles > mesh.vertex_count()) {
     throw UserError("-n " + std::to_string(request.particles) + " is more particles than the " +
@@ -46,7 +48,7 @@ RunPlan plan_run_unnamed(const SurfaceMesh& mesh, const RunRequest& request) {
                  request.sigma.value_or(default_sigma(request.potential, mesh.area(), request.particles))};
   check_sigma_computable(plan.energy);
   switch (plan.method) {
-    case Method::spread: plan_spread(mesh, plan); break;
+    case Method::spread: plan_spread(mesh, request, plan); break;
     case Method::paper: plan_paper(mesh, request, plan); break;
   }
   return plan;
@@ -74,7 +76,7 @@ namespace {
 // the planned store, obtained, and its cost added to the run's.
 RunResult execute_over_input_store(const SurfaceMesh& mesh, const RunPlan& plan) {
   const ObtainedDistances distances = naming_memory_failures(plan.request.mesh_label, "computing distances", [&] {
-    return obtain_distances(mesh, plan.request.distances.geodesics, plan.distances);
+    return obtain_distances(mesh, plan.geodesics, plan.distances);
   });
   RunResult result = execute_run(mesh, plan, *distances.store);
   result.distances.kind = distances.kind;

@@ -55,9 +55,10 @@ struct RunRequest {
   bool quiet = false;           // no progress lines or warnings on stderr
 };
 
-// A request checked against one mesh, with every default resolved.
+// A request checked against one mesh, with every default resolved: the
+// request as asked, and what was decided in the plan's own fields.
 struct RunPlan {
-  RunRequest request;
+  RunRequest request;          // as asked, untouched
   Method method = Method::spread;
   std::string method_from;     // "--method", "default", or the option that implies paper
   std::optional<SpreadPlan> spread;  // spread only
@@ -68,6 +69,10 @@ struct RunPlan {
   std::string backend_from;    // "--backend", or why the default is what it is
   DistancesPlan distances;     // paper: the store decided, and its radius when local; spread: decided
                                // for the working mesh when it is built (it reads distances for quality only)
+  // The solver as decided (paper's default may take fim, where a GPU takes
+  // the balls), quiet as the request.
+  GeodesicsRequest geodesics;
+  double cutoff = kDefaultCutoff;  // local balls' in d_hex: as asked, or spread's kSpreadQualityCutoff
   PlacementRequest placement;  // start_vertex as a surface vertex
   // The host's own marches (the start, the distance to the nearest
   // particle, spread's covers): fast marching where the request's solver is

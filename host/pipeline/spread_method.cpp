@@ -27,8 +27,7 @@ DistancesRequest spread_distances(const DistancesRequest& request) {
 
 }  // namespace
 
-void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
-  RunRequest& request = plan.request;
+void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& plan) {
   if (const auto option = paper_only_option(request)) {
     throw UserError(*option + " applies to --method paper");
   }
@@ -36,8 +35,9 @@ void plan_spread(const SurfaceMesh& mesh, RunPlan& plan) {
   spread.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
   spread.working_mesh = plan_working_mesh(mesh, request.particles, spread.vertices_per_particle);
   // Planned on the input: the working mesh has its area, so the same radius.
-  request.distances = spread_distances(request.distances);
-  plan.distances = plan_distances(mesh, request.distances, request.particles, false);
+  const DistancesRequest measured = spread_distances(request.distances);
+  plan.cutoff = measured.cutoff;
+  plan.distances = plan_distances(mesh, measured, request.particles, false);
 }
 
 namespace {
@@ -61,7 +61,7 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   const auto measure_through = [&](const DistancesPlan& store) {
     const auto geodesics_started = std::chrono::steady_clock::now();
     const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
-      return obtain_distances(measured, request.distances.geodesics, store);
+      return obtain_distances(measured, result.plan.geodesics, store);
     });
     result.distances.kind = distances.kind;
     result.distances.table_source = distances.source;
@@ -81,9 +81,8 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   // A particle with no other within the default balls (a few particles on
   // a small or open surface): the balls of kSpreadWideQualityCutoff.
   if (result.quality.alone > 0 && result.plan.distances.kind == StoreKind::local &&
-      request.distances.cutoff == kSpreadQualityCutoff) {
-    DistancesRequest wider = request.distances;
-    wider.cutoff = kSpreadWideQualityCutoff;
+      result.plan.cutoff == kSpreadQualityCutoff) {
+    const DistancesRequest wider{result.plan.geodesics, StoreKind::local, kSpreadWideQualityCutoff};
     measure_through(plan_distances(measured, wider, request.particles, false));
   }
 }

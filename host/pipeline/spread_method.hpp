@@ -71,13 +71,14 @@ struct SpreadDetails {
   std::string stopped;                    // converged, cycle, stalled or max_iterations (SpreadOutcome)
 };
 
+struct RunRequest;
 struct RunPlan;
 struct RunResult;
 
 // spread's part of plan_run, after the checks common to every method:
 // refuses the paper's options, plans the working mesh and the store that
 // measures the result.
-void plan_spread(const SurfaceMesh& mesh, RunPlan& plan);
+void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& plan);
 
 // spread's execute_run: the start and the sweeps on the working mesh, the
 // relaxation or the evening step, then the quality there, through a store

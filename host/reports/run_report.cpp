@@ -28,7 +28,7 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                            {"sigma", plan.energy.sigma},
                            {"sigma_from", request.sigma ? "--sigma" : "default rule"},
                            {"potential", potential_name(plan.energy.potential)},
-                           {"geodesic", method_name(request.distances.geodesics.method)},
+                           {"geodesic", method_name(plan.geodesics.method)},
                            {"out", out.string()}};
   if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
   if (plan.method == Method::spread) {
@@ -67,7 +67,7 @@ nlohmann::json distances_json(const RunResult& result) {
     return distances;
   }
   const auto& balls = used.balls;
-  distances["cutoff"] = result.plan.request.distances.cutoff;
+  distances["cutoff"] = result.plan.cutoff;
   distances["radius"] = result.plan.distances.radius;
   distances["balls_computed"] = balls.balls_computed;
   distances["balls_on_device"] = balls.balls_on_device;  // --geodesic fim on a device
