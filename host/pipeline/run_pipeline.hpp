@@ -16,6 +16,7 @@
 #include "backends/backend_factory.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"
+#include "particles/potentials.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
@@ -46,7 +47,7 @@ struct RunRequest {
   Init init = Init::farthest;
   std::optional<std::size_t> start_vertex;  // an input vertex id: v0's vertex, or the first farthest sample
   std::uint64_t seed = 1;
-  Potential potential = Potential::exp;
+  Potential potential = kDefaultPotential;
   std::optional<double> sigma;  // default: the rule of default_sigma
   DistancesRequest distances;   // the store (dense, local, auto), solver, cache, threads
   // --geodesic given (distances.geodesics.method): else the paper method's
