@@ -36,7 +36,13 @@ Method parse_method_option(const std::string& name) {
   throw UserError("unknown method '" + name + "' (choose spread or paper)");
 }
 
-std::string method_option_name(Method method) { return method == Method::spread ? "spread" : "paper"; }
+std::string method_option_name(Method method) {
+  switch (method) {
+    case Method::spread: return "spread";
+    case Method::paper: return "paper";
+  }
+  return "?";
+}
 
 WeightFormat parse_weight_format(const std::string& name) {
   if (name == "float") return WeightFormat::float32;

@@ -16,6 +16,32 @@ double mean(const std::vector<IterationRecord>& trace, double IterationRecord::*
   return trace.empty() ? 0.0 : sum / double(trace.size());
 }
 
+// spread's parameters: its sweeps, working mesh and relaxation.
+void add_spread_parameters(const RunPlan& plan, nlohmann::json& params) {
+  params["sweeps"] = plan.request.max_iterations;
+  params["vertices_per_particle"] = plan.spread->vertices_per_particle;
+  params["relax_rounds"] = plan.request.relax_rounds.value_or(kSpreadRelaxRounds);
+}
+
+// paper's parameters: its iterations and the backend as decided, with its sizes.
+void add_paper_parameters(const RunPlan& plan, nlohmann::json& params) {
+  params["iterations"] = plan.request.max_iterations;
+  params["backend"] = plan.backend.name();
+  params["backend_from"] = plan.backend_from;
+  params["scheme"] = scheme_name(plan.scheme);
+  if (uses_colors(plan.scheme)) params["colors"] = plan.colors;
+  if (plan.backend.descriptor->field_method) {
+    params["weights"] = weight_format_name(plan.backend.weights);
+    params["rebuild_every"] = plan.backend.rebuild_every;
+  }
+  if (const auto& kernel = plan.backend.kernel) {
+    params["wg"] = kernel->work_group_size;
+    if (kernel->spec().takes_tile) params["tile"] = kernel->tile_size;
+    params["sizes_from"] = plan.backend.sizes_from;
+    if (!plan.backend.sizes_note.empty()) params["sizes_note"] = plan.backend.sizes_note;
+  }
+}
+
 }  // namespace
 
 nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& out) {
@@ -31,26 +57,9 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                            {"geodesic", method_name(plan.geodesics.method)},
                            {"out", out.string()}};
   if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
-  if (plan.method == Method::spread) {
-    params["sweeps"] = request.max_iterations;
-    params["vertices_per_particle"] = plan.spread->vertices_per_particle;
-    params["relax_rounds"] = request.relax_rounds.value_or(kSpreadRelaxRounds);
-    return params;
-  }
-  params["iterations"] = request.max_iterations;
-  params["backend"] = plan.backend.name();
-  params["backend_from"] = plan.backend_from;
-  params["scheme"] = scheme_name(plan.scheme);
-  if (uses_colors(plan.scheme)) params["colors"] = plan.colors;
-  if (plan.backend.descriptor->field_method) {
-    params["weights"] = weight_format_name(plan.backend.weights);
-    params["rebuild_every"] = plan.backend.rebuild_every;
-  }
-  if (const auto& kernel = plan.backend.kernel) {
-    params["wg"] = kernel->work_group_size;
-    if (kernel->spec().takes_tile) params["tile"] = kernel->tile_size;
-    params["sizes_from"] = plan.backend.sizes_from;
-    if (!plan.backend.sizes_note.empty()) params["sizes_note"] = plan.backend.sizes_note;
+  switch (plan.method) {
+    case Method::spread: add_spread_parameters(plan, params); break;
+    case Method::paper: add_paper_parameters(plan, params); break;
   }
   return params;
 }
