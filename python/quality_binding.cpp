@@ -10,6 +10,7 @@
 #include "common/json_text.hpp"
 #include "common/user_error.hpp"
 #include "mesh_object.hpp"
+#include "particles/potentials.hpp"
 #include "pipeline/point_sets.hpp"
 #include "reports/quality_report.hpp"
 #include "run_settings.hpp"
@@ -45,7 +46,7 @@ std::string measure(const Mesh& mesh, const std::vector<py::array>& arrays, cons
   for (const py::array& array : arrays) request.points.push_back(points_of(array));
   request.names = arrays.size() == 2 ? std::vector<std::string>{"<a>", "<b>"} : std::vector<std::string>{"<points>"};
   request.sigma = options.take_positive("sigma");
-  request.potential = parse_potential(options.take_word("potential").value_or("exp"));
+  request.potential = parse_potential(options.take_word("potential").value_or(potential_name(kDefaultPotential)));
   const std::string refine = options.take_word("refine").value_or("auto");
   request.geodesics = take_geodesics_request(options);
   request.distances = take_distances_request(options, request.geodesics);

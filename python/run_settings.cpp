@@ -2,6 +2,7 @@
 
 #include "cli/distance_requests.hpp"
 #include "cli/run_option_table.hpp"
+#include "particles/potentials.hpp"
 #include "tuning/tuning_store.hpp"
 
 namespace meshparticles::python {
@@ -32,7 +33,7 @@ RunRequest take_run_request(KeywordOptions& options) {
   request.init = parse_init(options.take_word("init").value_or("farthest"));
   request.start_vertex = options.take_whole("start_vertex", run_option("start-vertex").range);
   request.seed = options.take_whole("seed", run_option("seed").range).value_or(1);
-  request.potential = parse_potential(options.take_word("potential").value_or("exp"));
+  request.potential = parse_potential(options.take_word("potential").value_or(potential_name(kDefaultPotential)));
   request.sigma = options.take_positive("sigma");
   request.backend.device = options.take_word("device").value_or("");
   request.backend.work_group_size = options.take_whole("wg", run_option("wg").range);

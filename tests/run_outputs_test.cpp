@@ -147,7 +147,7 @@ TEST(RunOutputs, SpreadRowsPlaceEachParticleOnAnInputTriangle) {
   request.particles = 2;
   request.quiet = true;
   const RunResult result = run_pipeline(mesh, request);
-  ASSERT_TRUE(result.working) << "spread is the default";
+  ASSERT_TRUE(result.spread) << "spread is the default";
   const auto directory = std::filesystem::temp_directory_path() / ("mp_spread_" + std::to_string(::getpid()));
   prepare_output_directory(directory);
   write_run_outputs(directory, mesh, result, run_report(mesh, result, directory, std::nullopt));

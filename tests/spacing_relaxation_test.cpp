@@ -74,8 +74,8 @@ RunWithBaselines run_with_baselines(const SurfaceMesh& mesh, RunRequest request)
 // the input surface where its on_input says.
 void expect_on_input_surface(const SurfaceMesh& input, const RunResult& result) {
   for (const VertexId p : result.outcome.positions) {
-    const Vec3 at = result.working->mesh.positions()[p];
-    EXPECT_NEAR(distance(on_input_position(input, result.working->on_input[p]), at), 0, 1e-12);
+    const Vec3 at = result.spread->working->mesh.positions()[p];
+    EXPECT_NEAR(distance(on_input_position(input, result.spread->working->on_input[p]), at), 0, 1e-12);
   }
 }
 
@@ -138,7 +138,7 @@ TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
   constexpr std::size_t kParticles = 128;
   RunRequest request;
   request.particles = kParticles;
-  const RefinedMesh working = build_working_mesh(input, plan_run(input, request).working_mesh);
+  const RefinedMesh working = build_working_mesh(input, plan_run(input, request).spread->working_mesh);
   const SurfaceMesh& mesh = working.mesh;
   const auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
   const double d_hex = hexagonal_spacing(input.area(), kParticles);
@@ -201,9 +201,9 @@ INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphe
 TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
   const SurfaceMesh mesh = committed("sphere.off");
   const auto [relaxed, swept, start] = run_with_baselines(mesh, spread_request("sphere.off", 256));
-  EXPECT_EQ(swept.relaxation.kept, swept.relaxation.candidates.size());  // none: the sweeps' vertices
-  ASSERT_LT(relaxed.relaxation.kept, relaxed.relaxation.candidates.size());
-  const RelaxationCandidate& kept = relaxed.relaxation.candidates[relaxed.relaxation.kept];
+  EXPECT_EQ(swept.spread->relaxation.kept, swept.spread->relaxation.candidates.size());  // none: the sweeps' vertices
+  ASSERT_LT(relaxed.spread->relaxation.kept, relaxed.spread->relaxation.candidates.size());
+  const RelaxationCandidate& kept = relaxed.spread->relaxation.candidates[relaxed.spread->relaxation.kept];
   EXPECT_GT(*relaxed.quality.rho, *swept.quality.rho + 0.05);
   EXPECT_LT(*relaxed.quality.nn_cv, 0.5 * *swept.quality.nn_cv);
   EXPECT_LE(*relaxed.quality.cover, 1.1 * *start.quality.cover);
@@ -221,11 +221,11 @@ TEST(SpreadRun, EveningGoesOnWhereTheRelaxationIsNotKept) {
   RunRequest request = spread_request("sphere.off", 256);
   request.relax_rounds = 1;
   const auto [evened, swept, start] = run_with_baselines(mesh, request);
-  EXPECT_FALSE(swept.evening);  // --relax-rounds 0: the sweeps' vertices, as asked
-  ASSERT_EQ(evened.relaxation.kept, evened.relaxation.candidates.size());
-  ASSERT_TRUE(evened.evening);
-  ASSERT_FALSE(evened.evening->sweeps.empty());
-  EXPECT_GT(evened.evening->sweeps.front().moved, 0u);
+  EXPECT_FALSE(swept.spread->evening);  // --relax-rounds 0: the sweeps' vertices, as asked
+  ASSERT_EQ(evened.spread->relaxation.kept, evened.spread->relaxation.candidates.size());
+  ASSERT_TRUE(evened.spread->evening);
+  ASSERT_FALSE(evened.spread->evening->sweeps.empty());
+  EXPECT_GT(evened.spread->evening->sweeps.front().moved, 0u);
   EXPECT_GT(*evened.quality.rho, *swept.quality.rho + 0.05);
   EXPECT_LT(*evened.quality.nn_cv, 0.6 * *swept.quality.nn_cv);
   EXPECT_LE(*evened.quality.cover, 1.1 * *start.quality.cover);
@@ -240,10 +240,10 @@ TEST(SpreadRun, EveningHoldsTheCoverLimit) {
   RunRequest request = spread_request("torus.off", 128);
   request.relax_rounds = 1;
   const auto [evened, swept, start] = run_with_baselines(mesh, request);
-  ASSERT_TRUE(evened.evening);
-  EXPECT_GT(evened.evening->sweeps.front().moved, 0u);
+  ASSERT_TRUE(evened.spread->evening);
+  EXPECT_GT(evened.spread->evening->sweeps.front().moved, 0u);
   EXPECT_LE(*evened.quality.cover, 1.1 * *start.quality.cover);
-  EXPECT_LE(evened.evening->cover, 1.1 * *start.quality.cover * start.quality.d_hex);
+  EXPECT_LE(evened.spread->evening->cover, 1.1 * *start.quality.cover * start.quality.d_hex);
   EXPECT_GE(*evened.quality.rho, *swept.quality.rho);
 }
 
@@ -255,14 +255,14 @@ TEST(QualityOfSurfacePoints, AnEveningRunIsMeasuredAsItMeasuredItself) {
   RunRequest run = spread_request("sphere.off", 256);
   run.relax_rounds = 1;
   const RunResult evened = run_pipeline(mesh, run);
-  ASSERT_TRUE(evened.evening);
+  ASSERT_TRUE(evened.spread->evening);
   PointSetsRequest request;
   request.names = {"points"};
   request.points.emplace_back();
-  for (const VertexId p : evened.outcome.positions) request.points[0].push_back(evened.working->mesh.positions()[p]);
+  for (const VertexId p : evened.outcome.positions) request.points[0].push_back(evened.spread->working->mesh.positions()[p]);
   request.geodesics.quiet = true;
   const PointSetsMeasurement measured = measure_point_sets(mesh, request);
-  EXPECT_EQ(measured.measuring.refined.mesh.vertex_count(), evened.working->mesh.vertex_count());
+  EXPECT_EQ(measured.measuring.refined.mesh.vertex_count(), evened.spread->working->mesh.vertex_count());
   EXPECT_NEAR(*measured.sets[0].quality.rho, *evened.quality.rho, 1e-6);
   EXPECT_NEAR(*measured.sets[0].quality.cover, *evened.quality.cover, 1e-6);
 }

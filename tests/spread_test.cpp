@@ -19,6 +19,7 @@
 #include "particles/initial_placement.hpp"
 #include "particles/particle_voronoi.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
 
 namespace meshparticles::testing {
@@ -202,7 +203,7 @@ TEST_P(SpreadImproves, OnTheFarthestStart) {
   RunRequest request;  // the working mesh a run would take
   request.particles = kParticles;
   const RunPlan plan = plan_run(input, request);
-  const RefinedMesh working = build_working_mesh(input, plan.working_mesh);
+  const RefinedMesh working = build_working_mesh(input, plan.spread->working_mesh);
   const auto solver = make_geodesic_solver(working.mesh, GeodesicMethod::fast_marching);
   const auto start = place_particles(working.mesh, {Init::farthest, kParticles, 1, std::nullopt});
   const double min_gain = kSpreadMinGain * hexagonal_spacing(input.area(), kParticles);
@@ -239,14 +240,15 @@ TEST(SpreadPlan, DefaultsAndImpliedMethod) {
   RunPlan plan = plan_run(mesh, request);
   EXPECT_EQ(plan.method, Method::spread);
   EXPECT_EQ(plan.method_from, "default");
-  const WorkingMeshPlan& working = plan.working_mesh;
+  ASSERT_TRUE(plan.spread);
+  const WorkingMeshPlan& working = plan.spread->working_mesh;
   EXPECT_DOUBLE_EQ(working.longest_edge, kSpreadLongestEdge * hexagonal_spacing(mesh.area(), 200));
   EXPECT_GE(working.max_vertices, mesh.vertex_count());
   EXPECT_GE(double(refined_vertex_count(mesh, working.levels)), kSpreadVerticesPerParticle * 200);
   EXPECT_LT(double(refined_vertex_count(mesh, working.levels - 1)), kSpreadVerticesPerParticle * 200);
 
   request.vertices_per_particle = 100;  // asked for: more rounds
-  EXPECT_GT(plan_run(mesh, request).working_mesh.levels, working.levels);
+  EXPECT_GT(plan_run(mesh, request).spread->working_mesh.levels, working.levels);
   request.vertices_per_particle.reset();
 
   request.scheme = Scheme::sequential;
@@ -270,10 +272,10 @@ TEST(SpreadRun, LandsEveryParticleOnTheInputSurfaceAndMeasuresOnTheWorkingMesh) 
   request.particles = 300;
   request.quiet = true;
   const RunResult result = run_pipeline(mesh, request);
-  ASSERT_TRUE(result.working);
-  EXPECT_EQ(result.distance_to_nearest.size(), result.working->mesh.vertex_count());
+  ASSERT_TRUE(result.spread);
+  EXPECT_EQ(result.distance_to_nearest.size(), result.spread->working->mesh.vertex_count());
   ASSERT_EQ(result.outcome.positions.size(), 300u);
-  EXPECT_FALSE(result.sweeps.empty());
+  EXPECT_FALSE(result.spread->sweeps.empty());
   EXPECT_LT(*result.quality.nn_cv, 0.07);
   EXPECT_GT(*result.quality.rho, 0.75);
 }

@@ -2,6 +2,7 @@
 
 #include "backends/backend_table.hpp"
 #include "backends/device_backend.hpp"
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/memory_guard.hpp"
 #include "tuning/tuning_store.hpp"

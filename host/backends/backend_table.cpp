@@ -4,6 +4,7 @@
 #include "backends/field_backend.hpp"
 #include "backends/serial_backend.hpp"
 #include "backends/serial_field_backend.hpp"
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -17,14 +18,6 @@ const std::vector<const BackendDescriptor*>& backend_table() {
       &field_backend(),
   };
   return table;
-}
-
-std::string choice_list(const std::vector<std::string>& names, const std::string& conjunction) {
-  std::string text;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    text += (k == 0 ? "" : k + 1 == names.size() ? " " + conjunction + " " : ", ") + names[k];
-  }
-  return text;
 }
 
 const BackendDescriptor& find_backend(const std::string& name) {

@@ -17,7 +17,4 @@ const BackendDescriptor& find_backend(const std::string& name);
 std::vector<std::string> backend_names();         // every backend
 std::vector<std::string> device_backend_names();  // those with an update kernel (sweep --kernel)
 
-// "a, b or c" (or "a, b and c").
-std::string choice_list(const std::vector<std::string>& names, const std::string& conjunction = "or");
-
 }  // namespace meshparticles

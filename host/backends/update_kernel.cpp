@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "particles/potentials.hpp"
+
 namespace meshparticles {
 
 std::string UpdateKernel::file() const { return function() + ".cl"; }
@@ -12,14 +14,9 @@ std::size_t UpdateKernel::work_groups_for(std::size_t particles) const {
 }
 
 KernelDefines UpdateKernel::defines(Potential potential) const {
-  long long gauss = 0;  // the kernels' two potentials (particle_energy.h)
-  switch (potential) {
-    case Potential::exp: gauss = 0; break;
-    case Potential::gauss: gauss = 1; break;
-  }
   KernelDefines defines{{"WORK_GROUP_SIZE", (long long)work_group_size},
                         {"CANDIDATE_SLOTS", (long long)candidate_slots},
-                        {"POTENTIAL_GAUSS", gauss}};
+                        {"POTENTIAL_GAUSS", potential_spec(potential).kernel_define}};
   if (spec().takes_tile) defines["TILE_SIZE"] = (long long)tile_size;
   if (spec().takes_weight_format) defines["WEIGHTS_HALF"] = weights == WeightFormat::half ? 1 : 0;
   return defines;

@@ -38,7 +38,7 @@ struct DistanceStoreOptions {
 };
 void add_distance_store_options(CLI::App& command, DistanceStoreOptions& options);
 
-// --geodesic fmm|fim|dijkstra and --potential exp|gauss, the same wherever a
+// --geodesic fmm|fim|dijkstra and --potential (particles/potentials), the same wherever a
 // command takes them; `default_note` says what an empty `method` means.
 void add_geodesic_option(CLI::App& command, std::string& method, const std::string& default_note = "");
 void add_potential_option(CLI::App& command, std::string& potential);

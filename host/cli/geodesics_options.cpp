@@ -3,6 +3,7 @@
 #include "cli/number_options.hpp"
 #include "cli/run_option_table.hpp"
 #include "common/text_format.hpp"
+#include "particles/potentials.hpp"
 
 namespace meshparticles {
 
@@ -21,7 +22,11 @@ void add_geodesic_option(CLI::App& command, std::string& method, const std::stri
 }
 
 void add_potential_option(CLI::App& command, std::string& potential) {
-  command.add_option("--potential", potential, "exp: exp(-d/(2 sigma^2)); gauss: exp(-d^2/(2 sigma^2))")
+  std::string help;
+  for (const PotentialSpec& spec : potential_table()) {
+    help += (help.empty() ? "" : "; ") + spec.name + ": " + spec.weight;
+  }
+  command.add_option("--potential", potential, help)
       ->check(CLI::IsMember(run_option("potential").words))
       ->capture_default_str();
 }

@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
 #include "common/json_text.hpp"
+#include "particles/potentials.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
 #include "reports/quality_report.hpp"
@@ -20,7 +21,7 @@ struct QualityOptions {
   MeshReadOptions read;
   std::vector<std::string> particle_files;  // one (quality) or two (compare)
   std::optional<double> sigma;
-  std::string potential = "exp";
+  std::string potential = potential_name(kDefaultPotential);
   std::string geodesic = "fmm";
   bool json = false;
   std::string refine = "auto";

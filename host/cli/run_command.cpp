@@ -29,7 +29,7 @@ void print_summary(const RunResult& result, const nlohmann::json& report, const 
   const auto& params = report["params"];
   std::printf("mesh        %s (%zu vertices)\n", result.plan.request.mesh_label.c_str(),
               report["mesh"]["vertices"].get<std::size_t>());
-  if (result.working) {
+  if (result.spread) {
     const auto& working = report["working_mesh"];
     std::printf("particles   %zu, spread on a working mesh of %zu vertices (%u rounds of splitting edges)\n",
                 result.plan.request.particles, working["vertices"].get<std::size_t>(),

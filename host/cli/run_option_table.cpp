@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "backends/backend_table.hpp"
+#include "particles/potentials.hpp"
 
 namespace meshparticles {
 
@@ -32,7 +33,7 @@ std::vector<RunOptionSpec> declared_options() {
       whole("start-vertex", kVertexIdRange),
       whole("seed", kSeedRange),
       of_kind("sigma", RunOptionKind::positive),
-      word("potential", {"exp", "gauss"}),
+      word("potential", potential_names()),
       word("geodesic", {"fmm", "fim", "dijkstra"}),
       word("distances", {"dense", "local", "auto"}),
       of_kind("cutoff", RunOptionKind::positive),

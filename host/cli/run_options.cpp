@@ -3,6 +3,7 @@
 #include "backends/backend_table.hpp"
 #include "cli/number_options.hpp"
 #include "cli/run_option_table.hpp"
+#include "pipeline/spread_method.hpp"
 #include "common/text_format.hpp"
 #include "tuning/tuning_store.hpp"
 

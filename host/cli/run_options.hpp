@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "particles/potentials.hpp"
 #include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles {
@@ -16,7 +17,7 @@ struct RunOptions {
   std::string method;  // default: spread, unless a paper-only option implies paper
   std::string scheme;  // default: the backend's
   std::string init = "farthest";
-  std::string potential = "exp";
+  std::string potential = potential_name(kDefaultPotential);
   std::string geodesic;  // default: fmm, or fim where the paper method's default gives a GPU the balls
   std::string weights;
   DistanceStoreOptions store;

@@ -12,6 +12,7 @@
 #include "common/json_text.hpp"
 #include "common/user_error.hpp"
 #include "measurement/sweep.hpp"
+#include "particles/potentials.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "reports/sweep_report.hpp"
 #include "tuning/tuning_store.hpp"
@@ -28,7 +29,7 @@ struct SweepOptions {
   std::string weights = "float";
   std::string scheme = "colored";
   std::string init = "farthest";
-  std::string potential = "exp";
+  std::string potential = potential_name(kDefaultPotential);
   std::string geodesic = "fmm";
   std::string csv;
   std::string json;

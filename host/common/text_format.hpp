@@ -1,7 +1,9 @@
 #pragma once
-// Text the reports share: numbers through a printf pattern, and CSV fields.
+// Text the reports and messages share: numbers through a printf pattern, CSV
+// fields, lists of choices.
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "common/utf8_text.hpp"
 
@@ -41,6 +43,15 @@ inline std::string one_line(const std::string& text) {
     }
   }
   return line;
+}
+
+// "a, b or c" (or "a, b and c").
+inline std::string choice_list(const std::vector<std::string>& names, const std::string& conjunction = "or") {
+  std::string text;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    text += (k == 0 ? "" : k + 1 == names.size() ? " " + conjunction + " " : ", ") + names[k];
+  }
+  return text;
 }
 
 }  // namespace meshparticles

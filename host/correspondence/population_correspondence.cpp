@@ -21,6 +21,7 @@
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "pipeline/spread_method.hpp"
 #include "reports/particle_locations.hpp"
 #include "reports/quality_report.hpp"
 

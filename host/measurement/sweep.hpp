@@ -12,6 +12,7 @@
 #include "geodesics/distance_cache.hpp"
 #include "measurement/timing_statistics.hpp"
 #include "opencl/device_discovery.hpp"
+#include "particles/potentials.hpp"
 
 namespace meshparticles {
 
@@ -46,7 +47,7 @@ struct SweepRequest {
   std::optional<WeightFormat> weights;  // kernels that take a weight format; default float32
   Init init = Init::farthest;
   std::uint64_t seed = 1;
-  Potential potential = Potential::exp;
+  Potential potential = kDefaultPotential;
   std::string device;
   GeodesicsRequest geodesics;
   SweepSettings settings;

@@ -2,14 +2,17 @@
 
 #include <cmath>
 
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
+#include "particles/potentials.hpp"
 
 namespace meshparticles {
 
 Potential parse_potential(const std::string& name) {
-  if (name == "exp") return Potential::exp;
-  if (name == "gauss") return Potential::gauss;
-  throw UserError("unknown potential '" + name + "' (choose exp or gauss)");
+  for (const PotentialSpec& spec : potential_table()) {
+    if (spec.name == name) return spec.potential;
+  }
+  throw UserError("unknown potential '" + name + "' (choose " + choice_list(potential_names()) + ")");
 }
 
 Scheme parse_scheme(const std::string& name) {
@@ -33,7 +36,13 @@ Method parse_method_option(const std::string& name) {
   throw UserError("unknown method '" + name + "' (choose spread or paper)");
 }
 
-std::string method_option_name(Method method) { return method == Method::spread ? "spread" : "paper"; }
+std::string method_option_name(Method method) {
+  switch (method) {
+    case Method::spread: return "spread";
+    case Method::paper: return "paper";
+  }
+  return "?";
+}
 
 WeightFormat parse_weight_format(const std::string& name) {
   if (name == "float") return WeightFormat::float32;
@@ -43,13 +52,7 @@ WeightFormat parse_weight_format(const std::string& name) {
 
 std::string weight_format_name(WeightFormat format) { return format == WeightFormat::float32 ? "float" : "half"; }
 
-std::string potential_name(Potential potential) {
-  switch (potential) {
-    case Potential::exp: return "exp";
-    case Potential::gauss: return "gauss";
-  }
-  return "?";
-}
+std::string potential_name(Potential potential) { return potential_spec(potential).name; }
 
 std::string scheme_name(Scheme scheme) {
   switch (scheme) {
@@ -75,12 +78,7 @@ double hexagonal_spacing(double area, std::size_t particle_count) {
 }
 
 double default_sigma(Potential potential, double area, std::size_t particle_count) {
-  const double d_hex = hexagonal_spacing(area, particle_count);
-  switch (potential) {
-    case Potential::exp: return std::sqrt(d_hex / 4.0);  // 2 sigma^2 = d_hex / 2
-    case Potential::gauss: return d_hex / 2.0;
-  }
-  return d_hex / 2.0;
+  return potential_spec(potential).default_sigma(hexagonal_spacing(area, particle_count));
 }
 
 }  // namespace meshparticles

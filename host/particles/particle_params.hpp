@@ -21,6 +21,7 @@ enum class Method { spread, paper };
 // How the field backends store the weight table W = w(d).
 enum class WeightFormat { float32, half };
 
+// The potentials' names, sigma rules and kernel switches: particles/potentials.hpp.
 Potential parse_potential(const std::string& name);
 Scheme parse_scheme(const std::string& name);
 Init parse_init(const std::string& name);

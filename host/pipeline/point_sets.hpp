@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "particles/potentials.hpp"
 #include "pipeline/distances.hpp"
 #include "quality/particle_sets.hpp"
 
@@ -19,7 +20,7 @@ struct PointSetsRequest {
   bool spread_mesh = false;                   // --refine spread
   GeodesicsRequest geodesics;
   DistancesRequest distances;
-  Potential potential = Potential::exp;
+  Potential potential = kDefaultPotential;
   std::optional<double> sigma;                // default: the run's rule for each set's n
 };
 

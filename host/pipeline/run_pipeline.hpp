@@ -14,51 +14,15 @@
 #include <vector>
 
 #include "backends/backend_factory.hpp"
-#include "mesh/midpoint_refinement.hpp"
-#include "pipeline/distances.hpp"
-#include "particles/farthest_point_optimization.hpp"
 #include "particles/initial_placement.hpp"
-#include "particles/local_farthest_points.hpp"
 #include "particles/particle_run.hpp"
-#include "particles/spacing_relaxation.hpp"
-#include "particles/spread_working_mesh.hpp"
+#include "particles/potentials.hpp"
+#include "pipeline/distances.hpp"
+#include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
 
 namespace meshparticles {
 
-// spread measures its result through balls of this many hexagonal spacings
-// (unless --cutoff says otherwise): every nearest neighbour of a spread set
-// lies within (they are 0.7 to 1 spacing apart), and balls of 3 cost four
-// times as much, a fifth of a run on real models. The energy it reports
-// sums the pairs within it only.
-inline constexpr double kSpreadQualityCutoff = 1.5;
-// ... and through balls of this many where a particle has no other within
-// those (a few particles on a small or open surface: 4 on the committed
-// patch are 1.86 spacings apart).
-inline constexpr double kSpreadWideQualityCutoff = 3.0;
-// spread: a particle moves only to gain more than this many hexagonal
-// spacings of distance to its nearest (below it, fast marching's noise).
-inline constexpr double kSpreadMinGain = 1e-3;
-// spread stops when a sweep raises the mean spacing by less than this many
-// hexagonal spacings.
-inline constexpr double kSpreadStallGain = 1e-4;
-// spread: rounds of relaxation after the sweeps (docs/ALGORITHM.md,
-// "Relaxation"); it stops earlier where its radius stops growing.
-inline constexpr std::size_t kSpreadRelaxRounds = 150;
-// spread: sweeps of the evening step at most (docs/ALGORITHM.md, "Evening");
-// it stops earlier when one moves nothing or stalls (measured on 8 CGAL
-// models at n = 1,024: 7 to 12 sweeps).
-inline constexpr std::size_t kSpreadEveningSweeps = 40;
-// spread's relaxation keeps no state whose covering radius is over this
-// share of the farthest start's (farthest-point sampling is nearly optimal
-// for cover; issue 29 asks no more than 1.1 times it).
-inline constexpr double kSpreadCoverShare = 1.1;
-// The relaxation measures cover in straight lines, shorter than geodesics:
-// its second candidate is the most spread state within the share above
-// divided by this margin (measured: straight covers 1.2 to 1.7% under fast
-// marching's on the committed meshes), tried where the first's geodesic
-// cover is over the share.
-inline constexpr double kStraightCoverMargin = 1.03;
 struct RunRequest {
   std::string mesh_label;  // names the mesh in messages and reports: its path
   std::size_t particles = 1024;
@@ -83,7 +47,7 @@ struct RunRequest {
   Init init = Init::farthest;
   std::optional<std::size_t> start_vertex;  // an input vertex id: v0's vertex, or the first farthest sample
   std::uint64_t seed = 1;
-  Potential potential = Potential::exp;
+  Potential potential = kDefaultPotential;
   std::optional<double> sigma;  // default: the rule of default_sigma
   DistancesRequest distances;   // the store (dense, local, auto), solver, cache, threads
   // --geodesic given (distances.geodesics.method): else the paper method's
@@ -92,13 +56,13 @@ struct RunRequest {
   bool quiet = false;           // no progress lines or warnings on stderr
 };
 
-// A request checked against one mesh, with every default resolved.
+// A request checked against one mesh, with every default resolved: the
+// request as asked, and what was decided in the plan's own fields.
 struct RunPlan {
-  RunRequest request;
+  RunRequest request;          // as asked, untouched
   Method method = Method::spread;
   std::string method_from;     // "--method", "default", or the option that implies paper
-  double vertices_per_particle = 0;  // spread: asked of the working mesh
-  WorkingMeshPlan working_mesh;      // spread
+  std::optional<SpreadPlan> spread;  // spread only
   Scheme scheme = Scheme::colored;
   unsigned colors = kDefaultColors;
   EnergyParams energy;
@@ -106,6 +70,10 @@ struct RunPlan {
   std::string backend_from;    // "--backend", or why the default is what it is
   DistancesPlan distances;     // paper: the store decided, and its radius when local; spread: decided
                                // for the working mesh when it is built (it reads distances for quality only)
+  // The solver as decided (paper's default may take fim, where a GPU takes
+  // the balls), quiet as the request.
+  GeodesicsRequest geodesics;
+  double cutoff = kDefaultCutoff;  // local balls' in d_hex: as asked, or spread's kSpreadQualityCutoff
   PlacementRequest placement;  // start_vertex as a surface vertex
   // The host's own marches (the start, the distance to the nearest
   // particle, spread's covers): fast marching where the request's solver is
@@ -129,17 +97,14 @@ struct RunResult {
   RunPlan plan;
   std::string device;      // kHostDevice or the OpenCL device's name
   DistancesUsed distances;
-  // spread: the mesh the particles live on, the input refined; positions,
-  // start and distance_to_nearest are on it. Null for paper (the input).
-  std::shared_ptr<const RefinedMesh> working;
-  std::vector<SweepRecord> sweeps;  // spread
-  RelaxationOutcome relaxation;     // spread (the kept candidate's points are inserted into `working`)
-  std::optional<EveningOutcome> evening;  // spread, unless --relax-rounds 0 (its points are inserted into `working`)
-  std::string stopped;              // spread: converged, cycle, stalled or max_iterations (SpreadOutcome)
+  // spread only: its working mesh (the mesh of start, outcome.positions
+  // and distance_to_nearest where present; else the input), sweeps,
+  // relaxation and evening step.
+  std::optional<SpreadDetails> spread;
   std::vector<VertexId> start;
   RunOutcome outcome;      // the trace (paper) and the final positions
 
-  const SurfaceMesh& particle_mesh(const SurfaceMesh& input) const { return working ? working->mesh : input; }
+  const SurfaceMesh& particle_mesh(const SurfaceMesh& input) const { return spread ? spread->working->mesh : input; }
   std::vector<float> distance_to_nearest;  // per vertex, to the nearest final particle
   DistributionQuality quality;
   RunTimes seconds;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "common/version.hpp"
+#include "pipeline/spread_method.hpp"
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {
@@ -13,6 +14,32 @@ double mean(const std::vector<IterationRecord>& trace, double IterationRecord::*
   double sum = 0;
   for (const auto& record : trace) sum += record.*field;
   return trace.empty() ? 0.0 : sum / double(trace.size());
+}
+
+// spread's parameters: its sweeps, working mesh and relaxation.
+void add_spread_parameters(const RunPlan& plan, nlohmann::json& params) {
+  params["sweeps"] = plan.request.max_iterations;
+  params["vertices_per_particle"] = plan.spread->vertices_per_particle;
+  params["relax_rounds"] = plan.request.relax_rounds.value_or(kSpreadRelaxRounds);
+}
+
+// paper's parameters: its iterations and the backend as decided, with its sizes.
+void add_paper_parameters(const RunPlan& plan, nlohmann::json& params) {
+  params["iterations"] = plan.request.max_iterations;
+  params["backend"] = plan.backend.name();
+  params["backend_from"] = plan.backend_from;
+  params["scheme"] = scheme_name(plan.scheme);
+  if (uses_colors(plan.scheme)) params["colors"] = plan.colors;
+  if (plan.backend.descriptor->field_method) {
+    params["weights"] = weight_format_name(plan.backend.weights);
+    params["rebuild_every"] = plan.backend.rebuild_every;
+  }
+  if (const auto& kernel = plan.backend.kernel) {
+    params["wg"] = kernel->work_group_size;
+    if (kernel->spec().takes_tile) params["tile"] = kernel->tile_size;
+    params["sizes_from"] = plan.backend.sizes_from;
+    if (!plan.backend.sizes_note.empty()) params["sizes_note"] = plan.backend.sizes_note;
+  }
 }
 
 }  // namespace
@@ -27,29 +54,12 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                            {"sigma", plan.energy.sigma},
                            {"sigma_from", request.sigma ? "--sigma" : "default rule"},
                            {"potential", potential_name(plan.energy.potential)},
-                           {"geodesic", method_name(request.distances.geodesics.method)},
+                           {"geodesic", method_name(plan.geodesics.method)},
                            {"out", out.string()}};
   if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
-  if (plan.method == Method::spread) {
-    params["sweeps"] = request.max_iterations;
-    params["vertices_per_particle"] = plan.vertices_per_particle;
-    params["relax_rounds"] = request.relax_rounds.value_or(kSpreadRelaxRounds);
-    return params;
-  }
-  params["iterations"] = request.max_iterations;
-  params["backend"] = plan.backend.name();
-  params["backend_from"] = plan.backend_from;
-  params["scheme"] = scheme_name(plan.scheme);
-  if (uses_colors(plan.scheme)) params["colors"] = plan.colors;
-  if (plan.backend.descriptor->field_method) {
-    params["weights"] = weight_format_name(plan.backend.weights);
-    params["rebuild_every"] = plan.backend.rebuild_every;
-  }
-  if (const auto& kernel = plan.backend.kernel) {
-    params["wg"] = kernel->work_group_size;
-    if (kernel->spec().takes_tile) params["tile"] = kernel->tile_size;
-    params["sizes_from"] = plan.backend.sizes_from;
-    if (!plan.backend.sizes_note.empty()) params["sizes_note"] = plan.backend.sizes_note;
+  switch (plan.method) {
+    case Method::spread: add_spread_parameters(plan, params); break;
+    case Method::paper: add_paper_parameters(plan, params); break;
   }
   return params;
 }
@@ -66,7 +76,7 @@ nlohmann::json distances_json(const RunResult& result) {
     return distances;
   }
   const auto& balls = used.balls;
-  distances["cutoff"] = result.plan.request.distances.cutoff;
+  distances["cutoff"] = result.plan.cutoff;
   distances["radius"] = result.plan.distances.radius;
   distances["balls_computed"] = balls.balls_computed;
   distances["balls_on_device"] = balls.balls_on_device;  // --geodesic fim on a device
@@ -125,29 +135,29 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
 
 // spread: the sweeps of farthest-point optimization in place of the
 // energy trace, and the working mesh.
-nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
-                             const std::optional<std::string>& mesh_sha256) {
+nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, const SpreadDetails& spread,
+                             const std::filesystem::path& out, const std::optional<std::string>& mesh_sha256) {
   const double d_hex = result.quality.d_hex;
   double ms_sum = 0;
-  for (const SweepRecord& sweep : result.sweeps) ms_sum += sweep.ms;
-  const SurfaceMesh& working = result.working->mesh;
+  for (const SweepRecord& sweep : spread.sweeps) ms_sum += sweep.ms;
+  const SurfaceMesh& working = spread.working->mesh;
   nlohmann::json report = {
       {"version", program_version()},
       {"mesh", mesh_json(mesh, result, mesh_sha256)},
-      {"working_mesh", {{"refinement_rounds", result.working->levels},
-                        {"longest_edge", result.plan.working_mesh.longest_edge},
+      {"working_mesh", {{"refinement_rounds", spread.working->levels},
+                        {"longest_edge", result.plan.spread->working_mesh.longest_edge},
                         {"vertices", working.vertex_count()},
                         {"faces", working.triangle_count()},
                         {"vertices_per_particle", double(working.vertex_count()) / double(result.plan.request.particles)}}},
       {"params", run_parameters(result.plan, out)},
       {"device", result.device},
       {"distances", distances_json(result)},
-      {"iterations_run", result.sweeps.size()},
-      {"stopped", result.stopped},
+      {"iterations_run", spread.sweeps.size()},
+      {"stopped", spread.stopped},
       {"final_energy", result.quality.energy},
-      {"avg_iteration_ms", result.sweeps.empty() ? 0.0 : ms_sum / double(result.sweeps.size())},
-      {"sweeps", sweeps_json(result.sweeps, d_hex)}};
-  const RelaxationOutcome& relaxation = result.relaxation;
+      {"avg_iteration_ms", spread.sweeps.empty() ? 0.0 : ms_sum / double(spread.sweeps.size())},
+      {"sweeps", sweeps_json(spread.sweeps, d_hex)}};
+  const RelaxationOutcome& relaxation = spread.relaxation;
   const bool relaxed = relaxation.kept < relaxation.candidates.size();
   nlohmann::json round_spacings = nlohmann::json::array();
   for (const double spacing : relaxation.round_spacings) round_spacings.push_back(spacing / d_hex);
@@ -161,7 +171,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
                           {"passed_over_for_cover", relaxation.passed_over_for_cover},
                           {"undone_for_spacing", relaxation.undone_for_spacing},
                           {"spacing_per_round", round_spacings}};
-  if (result.evening) report["evening"] = evening_json(*result.evening, d_hex);
+  if (spread.evening) report["evening"] = evening_json(*spread.evening, d_hex);
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
   return report;
@@ -171,7 +181,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
 
 nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
                           const std::optional<std::string>& mesh_sha256) {
-  if (result.working) return spread_report(mesh, result, out, mesh_sha256);
+  if (result.spread) return spread_report(mesh, result, *result.spread, out, mesh_sha256);
   const RunOutcome& outcome = result.outcome;
   nlohmann::json trace = nlohmann::json::array();
   bool has_kernel_times = false;

@@ -1,0 +1,221 @@
+#include "pipeline/spread_method.hpp"
+
+#include <chrono>
+
+#include "common/elapsed.hpp"
+#include "common/memory_limits.hpp"
+#include "common/user_error.hpp"
+#include "geodesics/solver_factory.hpp"
+#include "mesh/point_insertion.hpp"
+#include "mesh/surface_walk.hpp"
+#include "pipeline/paper_method.hpp"
+#include "pipeline/run_pipeline.hpp"
+#include "quality/particle_sets.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+// spread reads distances only to measure the result: local balls around
+// the particles, unless the dense table is asked for.
+DistancesRequest spread_distances(const DistancesRequest& request) {
+  DistancesRequest spread = request;
+  if (spread.kind == StoreKind::automatic) spread.kind = StoreKind::local;
+  if (spread.cutoff == kDefaultCutoff) spread.cutoff = kSpreadQualityCutoff;  // --cutoff absent (or 7)
+  return spread;
+}
+
+}  // namespace
+
+void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& plan) {
+  if (const auto option = paper_only_option(request)) {
+    throw UserError(*option + " applies to --method paper");
+  }
+  SpreadPlan& spread = plan.spread.emplace();
+  spread.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
+  spread.working_mesh = plan_working_mesh(mesh, request.particles, spread.vertices_per_particle);
+  // Planned on the input: the working mesh has its area, so the same radius.
+  const DistancesRequest measured = spread_distances(request.distances);
+  plan.cutoff = measured.cutoff;
+  plan.distances = plan_distances(mesh, measured, request.particles, false);
+}
+
+namespace {
+
+// spread's measurement: the distances of `working` (the mesh the
+// positions are vertices of) and the quality there.
+// `to_nearest`: distance_to_nearest_particle of the positions on `working`
+// where the caller has it already.
+void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& working, const std::string& label,
+                    std::vector<float> to_nearest = {}) {
+  const RunRequest& request = result.plan.request;
+  result.spread->working = working;
+  const SurfaceMesh& measured = working->mesh;
+  const auto cover_started = std::chrono::steady_clock::now();
+  naming_memory_failures(label, "measuring the result", [&] {
+    result.distance_to_nearest =
+        to_nearest.empty() ? distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions)
+                           : std::move(to_nearest);
+  });
+  result.seconds.quality += seconds_since(cover_started);
+  const auto measure_through = [&](const DistancesPlan& store) {
+    const auto geodesics_started = std::chrono::steady_clock::now();
+    const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
+      return obtain_distances(measured, result.plan.geodesics, store);
+    });
+    result.distances.kind = distances.kind;
+    result.distances.table_source = distances.source;
+    result.seconds.geodesics += seconds_since(geodesics_started);
+    const auto quality_started = std::chrono::steady_clock::now();
+    naming_memory_failures(label, "measuring the result", [&] {
+      result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
+                                       result.distance_to_nearest, request.quiet);
+    });
+    result.seconds.quality += seconds_since(quality_started);
+    if (const LocalDistances* balls = distances.store->local_balls()) {
+      result.distances.balls = balls->statistics();
+      // The balls are solved inside the quality step: count them there, not twice.
+    }
+  };
+  measure_through(result.plan.distances);
+  // A particle with no other within the default balls (a few particles on
+  // a small or open surface): the balls of kSpreadWideQualityCutoff.
+  if (result.quality.alone > 0 && result.plan.distances.kind == StoreKind::local &&
+      result.plan.cutoff == kSpreadQualityCutoff) {
+    const DistancesRequest wider{result.plan.geodesics, StoreKind::local, kSpreadWideQualityCutoff};
+    measure_through(plan_distances(measured, wider, request.particles, false));
+  }
+}
+
+// spread's evening step (particles/local_farthest_points) from the
+// particles on the vertices of `working` (result.outcome.positions;
+// `solver` is built for that mesh): each moves off the
+// vertices to the centre of the largest empty circle of its neighbours on
+// the surface where that widens its own gap, measured along the surface,
+// and keeps the covering radius within `cover_limit`. The points it ends
+// on are inserted into the working mesh as vertices.
+void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<RefinedMesh>& working,
+                  const GeodesicSolver& solver, double cover_limit) {
+  const RunRequest& request = result.plan.request;
+  const SurfaceMesh& surface = working->mesh;
+  const SurfaceWalk walk(surface);
+  std::vector<SurfaceLocation> from;
+  for (const VertexId v : result.outcome.positions) {
+    const std::optional<SurfaceLocation> location = walk.at_vertex(v);
+    if (!location) return;  // a particle in no triangle: none moves
+    from.push_back(*location);
+  }
+  const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
+  const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadMinGain * d_hex, kSpreadStallGain * d_hex,
+                             cover_limit};
+  std::optional<EveningOutcome>& evening = result.spread->evening;
+  evening = naming_memory_failures(request.mesh_label, "evening the spacing", [&] {
+    return even_out(surface, solver, std::move(from), limits, request.quiet);
+  });
+  InsertedPoints inserted = insert_points(*working, mesh, evening->points);
+  result.outcome.positions = std::move(inserted.vertices);
+  working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
+}
+
+}  // namespace
+
+RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
+  RunResult result;
+  result.plan = plan;
+  result.device = kHostDevice;
+  SpreadDetails& details = result.spread.emplace();
+  const RunRequest& request = plan.request;
+  auto particles_started = std::chrono::steady_clock::now();
+  const std::string& label = request.mesh_label;
+  auto working = naming_memory_failures(label, "refining the working mesh", [&] {
+    return std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.spread->working_mesh));
+  });
+  const std::shared_ptr<RefinedMesh> swept = working;  // the solver's mesh, kept while it lives
+  const SurfaceMesh& surface = swept->mesh;
+  const auto solver = make_geodesic_solver(surface, plan.march_method);
+  // The input's vertices keep their ids on the working mesh.
+  const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
+  SpreadOutcome spread = naming_memory_failures(label, "spreading the particles", [&] {
+    result.start = place_particles(surface, *solver, plan.placement, request.quiet);
+    return optimize_farthest_points(surface, *solver, result.start, request.max_iterations, kSpreadMinGain * d_hex,
+                                    kSpreadStallGain * d_hex, request.quiet);
+  });
+  details.sweeps = std::move(spread.sweeps);
+  result.outcome.positions = std::move(spread.positions);
+  result.outcome.converged = spread.converged;
+  details.stopped = spread.converged ? "converged"
+                   : spread.cycled  ? "cycle"
+                   : spread.stalled ? "stalled"
+                                    : "max_iterations";
+  // Then off the vertices: all particles pushed apart at once. Of the
+  // states it passed, the most spread one whose geodesic cover is within
+  // kSpreadCoverShare of the farthest start's is kept: candidates within that
+  // share in straight lines, then within it over kStraightCoverMargin,
+  // each inserted into the working mesh and its cover measured, the first
+  // that passes kept (else the sweeps' vertices).
+  const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);
+  const GeodesicMethod method = result.plan.march_method;
+  const double cover_limit =
+      relax_rounds == 0 ? 0.0 : kSpreadCoverShare * geodesic_cover(*solver, surface, result.start);
+  const std::vector<VertexId> swept_positions = result.outcome.positions;
+  details.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
+    const double swept_cover = relax_rounds == 0 ? 0.0 : geodesic_cover(*solver, surface, swept_positions);
+    return relax_spacing(surface, swept_positions, d_hex, relax_rounds,
+                         {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet);
+  });
+  RelaxationOutcome& relaxation = details.relaxation;
+  std::vector<float> kept_to_nearest;  // the kept candidate's, for the measurement
+  for (std::size_t k = 0; k < relaxation.candidates.size() && relaxation.kept == relaxation.candidates.size(); ++k) {
+    const RelaxationCandidate& candidate = relaxation.candidates[k];
+    if (candidate.round == 0 || (k > 0 && candidate.round == relaxation.candidates[k - 1].round)) continue;
+    std::vector<SurfaceLocation> moving;
+    std::vector<std::size_t> movers;
+    for (std::size_t i = 0; i < candidate.points.size(); ++i) {
+      if (!candidate.points[i]) continue;
+      moving.push_back(*candidate.points[i]);
+      movers.push_back(i);
+    }
+    InsertedPoints inserted = insert_points(*swept, mesh, moving);
+    std::vector<VertexId> positions = result.outcome.positions;
+    for (std::size_t m = 0; m < movers.size(); ++m) positions[movers[m]] = inserted.vertices[m];
+    std::vector<float> to_nearest = distance_to_nearest_particle(inserted.refined.mesh, method, positions);
+    if (largest_finite(to_nearest) > cover_limit) {
+      relaxation.passed_over_for_cover = true;
+      continue;
+    }
+    relaxation.kept = k;
+    kept_to_nearest = std::move(to_nearest);
+    result.outcome.positions = std::move(positions);
+    working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
+  }
+  // Straight lines misjudged the surface (pairs on two sides of a thin part
+  // that do not push each other, but are close around its tip): the
+  // relaxed set is less spread than the sweeps left it, so the sweeps' set.
+  bool measured = false;
+  if (relaxation.kept < relaxation.candidates.size() && !details.sweeps.empty()) {
+    result.seconds.particles += seconds_since(particles_started);
+    measure_spread(result, working, label, std::move(kept_to_nearest));
+    particles_started = std::chrono::steady_clock::now();
+    measured = true;
+    if (result.quality.nn_min && *result.quality.nn_min < (1 - kSpreadMinGain) * details.sweeps.back().min_spacing) {
+      relaxation.kept = relaxation.candidates.size();
+      relaxation.undone_for_spacing = true;
+      result.outcome.positions = swept_positions;
+      working = swept;
+      measured = false;
+    }
+    kept_to_nearest.clear();
+  }
+  // Where the relaxation was not kept, the evening step goes on from the
+  // sweeps' vertices, particle by particle.
+  if (relax_rounds > 0 && relaxation.kept == relaxation.candidates.size()) {
+    even_spacing(mesh, result, working, *solver, cover_limit);
+    measured = false;
+  }
+  result.seconds.particles += seconds_since(particles_started);
+  if (!measured) measure_spread(result, working, label, std::move(kept_to_nearest));
+  result.seconds.total = result.seconds.particles + result.seconds.geodesics + result.seconds.quality;
+  return result;
+}
+
+}  // namespace meshparticles

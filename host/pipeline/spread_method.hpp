@@ -1,0 +1,88 @@
+#pragma once
+// spread, the default run method: farthest-point optimization on a working
+// mesh (the input refined), then the relaxation or the evening step off its
+// vertices, the kept points inserted as vertices, and the quality measured
+// there (docs/ALGORITHM.md, "The default: spread"). No backend, no table:
+// it reads distances only to measure its result. plan_run and execute_run
+// (pipeline/run_pipeline.hpp) call it for Method::spread.
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesh/midpoint_refinement.hpp"
+#include "mesh/surface_mesh.hpp"
+#include "particles/farthest_point_optimization.hpp"
+#include "particles/local_farthest_points.hpp"
+#include "particles/spacing_relaxation.hpp"
+#include "particles/spread_working_mesh.hpp"
+
+namespace meshparticles {
+
+// spread measures its result through balls of this many hexagonal spacings
+// (unless --cutoff says otherwise): every nearest neighbour of a spread set
+// lies within (they are 0.7 to 1 spacing apart), and balls of 3 cost four
+// times as much, a fifth of a run on real models. The energy it reports
+// sums the pairs within it only.
+inline constexpr double kSpreadQualityCutoff = 1.5;
+// ... and through balls of this many where a particle has no other within
+// those (a few particles on a small or open surface: 4 on the committed
+// patch are 1.86 spacings apart).
+inline constexpr double kSpreadWideQualityCutoff = 3.0;
+// spread: a particle moves only to gain more than this many hexagonal
+// spacings of distance to its nearest (below it, fast marching's noise).
+inline constexpr double kSpreadMinGain = 1e-3;
+// spread stops when a sweep raises the mean spacing by less than this many
+// hexagonal spacings.
+inline constexpr double kSpreadStallGain = 1e-4;
+// spread: rounds of relaxation after the sweeps (docs/ALGORITHM.md,
+// "Relaxation"); it stops earlier where its radius stops growing.
+inline constexpr std::size_t kSpreadRelaxRounds = 150;
+// spread: sweeps of the evening step at most (docs/ALGORITHM.md, "Evening");
+// it stops earlier when one moves nothing or stalls (measured on 8 CGAL
+// models at n = 1,024: 7 to 12 sweeps).
+inline constexpr std::size_t kSpreadEveningSweeps = 40;
+// spread's relaxation keeps no state whose covering radius is over this
+// share of the farthest start's (farthest-point sampling is nearly optimal
+// for cover; issue 29 asks no more than 1.1 times it).
+inline constexpr double kSpreadCoverShare = 1.1;
+// The relaxation measures cover in straight lines, shorter than geodesics:
+// its second candidate is the most spread state within the share above
+// divided by this margin (measured: straight covers 1.2 to 1.7% under fast
+// marching's on the committed meshes), tried where the first's geodesic
+// cover is over the share.
+inline constexpr double kStraightCoverMargin = 1.03;
+
+// What plan_run decides for spread alone (RunPlan::spread).
+struct SpreadPlan {
+  double vertices_per_particle = 0;  // asked of the working mesh
+  WorkingMeshPlan working_mesh;
+};
+
+// What a spread run yields beside every method's result (RunResult::spread).
+struct SpreadDetails {
+  // The mesh the particles live on, the input refined; the result's
+  // positions, start and distance_to_nearest are on it.
+  std::shared_ptr<const RefinedMesh> working;
+  std::vector<SweepRecord> sweeps;
+  RelaxationOutcome relaxation;           // the kept candidate's points are inserted into `working`
+  std::optional<EveningOutcome> evening;  // unless --relax-rounds 0 (its points are inserted into `working`)
+  std::string stopped;                    // converged, cycle, stalled or max_iterations (SpreadOutcome)
+};
+
+struct RunRequest;
+struct RunPlan;
+struct RunResult;
+
+// spread's part of plan_run, after the checks common to every method:
+// refuses the paper's options, plans the working mesh and the store that
+// measures the result.
+void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& plan);
+
+// spread's execute_run: the start and the sweeps on the working mesh, the
+// relaxation or the evening step, then the quality there, through a store
+// planned for that mesh.
+RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan);
+
+}  // namespace meshparticles
