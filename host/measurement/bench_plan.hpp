@@ -12,6 +12,7 @@
 
 #include "backends/backend_factory.hpp"
 #include "geodesics/distance_cache.hpp"
+#include "particles/particle_backend.hpp"
 
 namespace meshparticles {
 
@@ -44,7 +45,7 @@ struct PlannedCase {
 struct BenchPlan {
   BenchRequest request;
   std::vector<PlannedCase> cases;
-  std::string device_name = "serial";  // the device of the device rows
+  std::string device_name = kHostDevice;  // the device of the device rows
 };
 
 // Loads each mesh once (meshes_dir/NAME.off, else the built-in generator's)
