@@ -132,6 +132,18 @@ TEST(TemplateDeformation, LeavesATemplateOnItselfWhereItIs) {
   EXPECT_EQ((deform_template(mesh, points, points) - points).cwiseAbs().maxCoeff(), 0.0);
 }
 
+// The medoid is the shape nearest the others, whatever their order: of
+// three spheres scaled 0.9, 1 and 1.2, the middle one; and a shape's
+// distance to the population leaves itself out.
+TEST(PopulationAlignment, TheMedoidIsTheShapeNearestTheOthers) {
+  const PointSet sphere = alignment_points(generate_mesh("sphere"));
+  const std::vector<PointSet> shapes{1.2 * sphere, 0.9 * sphere, 1.0 * sphere};
+  EXPECT_EQ(medoid_shape(shapes), 2u);
+  EXPECT_EQ(medoid_shape({shapes[2], shapes[0], shapes[1]}), 0u);
+  EXPECT_EQ(distance_to_population(shapes[2], {shapes[2]}, 0), 0.0);
+  EXPECT_LT(distance_to_population(shapes[2], shapes, 2), distance_to_population(shapes[0], shapes, 0));
+}
+
 // Four ellipsoid shapes on disk, and the spread of particle i across them
 // measured in their common parameter, as scripts/correspondence_error.py does.
 class SmallPopulation : public ::testing::Test {

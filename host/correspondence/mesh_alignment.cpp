@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 
 #include "mesh/point_cloud_tree.hpp"
@@ -130,7 +131,44 @@ Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& linear) {
   return u * svd.matrixV().transpose();
 }
 
+// The mean squared distance from `a`'s points to `b`'s nearest.
+double one_way_squared(const PointSet& a, const PointSet& b, const PointsTree& b_tree) {
+  double squared = 0;
+  for (Eigen::Index i = 0; i < a.rows(); ++i) squared += (b.row(b_tree.nearest(a.row(i)).front()) - a.row(i)).squaredNorm();
+  return squared / double(std::max<Eigen::Index>(1, a.rows()));
+}
+
+// The symmetric rms distance between two aligned shapes' points.
+double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree) {
+  return std::sqrt(0.5 * (one_way_squared(a, b, b_tree) + one_way_squared(b, a, a_tree)));
+}
+
 }  // namespace
+
+PointSet alignment_points(const SurfaceMesh& mesh) { return fit_points(vertex_points(mesh)); }
+
+std::size_t medoid_shape(const std::vector<PointSet>& aligned) {
+  std::vector<std::unique_ptr<PointsTree>> trees;
+  for (const PointSet& points : aligned) trees.push_back(std::make_unique<PointsTree>(points));
+  std::vector<double> sums(aligned.size(), 0.0);
+  for (std::size_t a = 0; a < aligned.size(); ++a) {
+    for (std::size_t b = a + 1; b < aligned.size(); ++b) {
+      const double distance = shape_distance(aligned[a], *trees[a], aligned[b], *trees[b]);
+      sums[a] += distance;
+      sums[b] += distance;
+    }
+  }
+  return std::size_t(std::min_element(sums.begin(), sums.end()) - sums.begin());
+}
+
+double distance_to_population(const PointSet& placed, const std::vector<PointSet>& aligned, std::size_t self) {
+  const PointsTree tree(placed);
+  double sum = 0;
+  for (std::size_t b = 0; b < aligned.size(); ++b) {
+    if (b != self) sum += shape_distance(placed, tree, aligned[b], PointsTree(aligned[b]));
+  }
+  return sum;
+}
 
 PointSet vertex_points(const SurfaceMesh& mesh) {
   PointSet points(Eigen::Index(mesh.vertex_count()), 3);

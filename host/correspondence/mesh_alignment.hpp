@@ -51,6 +51,19 @@ struct MeshAlignment {
 // under, aligned right; the wrong one's is 1.07).
 inline constexpr double kAmbiguousPoseRatio = 1.02;
 
+// The vertices an alignment fits: all, or every k-th of a large mesh.
+PointSet alignment_points(const SurfaceMesh& mesh);
+
+// The shape of `aligned` (each a shape's alignment_points in the common
+// frame) nearest the others: the least sum of the symmetric rms distances
+// to the nearest points (ties: the first). For one reference every process
+// finds the same from the same points.
+std::size_t medoid_shape(const std::vector<PointSet>& aligned);
+
+// The sum of those distances from `placed` (a shape's alignment_points in
+// the common frame) to every shape of `aligned` but `self`.
+double distance_to_population(const PointSet& placed, const std::vector<PointSet>& aligned, std::size_t self);
+
 // `template_points`: the template's vertices in the common frame, which
 // `template_frame` (its canonical_frame) defines.
 MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& template_points,

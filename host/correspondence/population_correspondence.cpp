@@ -29,6 +29,11 @@ namespace meshparticles {
 
 namespace {
 
+// A shape takes its pose onto the medoid only where that lies this much
+// nearer the population than its pose onto the template: where the two are
+// about as near, the template's is kept (and the output as it was).
+constexpr double kNearerPopulation = 1.02;
+
 // The particles measured as `run` measures its own (through the balls of
 // kSpreadQualityCutoff around them, wider where a particle is alone there),
 // on the shape's own surface refined until they lie on vertices, while its
@@ -59,13 +64,13 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
 // it by its vertices' weights (SurfacePoint), so that they follow it as it
 // deforms.
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const SurfaceMesh& template_mesh,
-                             const PointSet& template_points, const Similarity& template_frame,
+                             const PointSet& template_points, const MeshAlignment& alignment,
                              const std::vector<SurfacePoint>& template_particles, ShapeParticles& carried) {
   ShapeCorrespondence shape;
   shape.mesh = file;
   shape.vertices = mesh.vertex_count();
   shape.topology = mesh_topology(mesh);
-  shape.alignment = align_to_template(mesh, template_points, template_frame);
+  shape.alignment = alignment;
   const Similarity& to_common = shape.alignment.to_common;
   const PointSet deformed = deform_template(template_mesh, template_points, to_common.apply(vertex_points(mesh)));
   const NearestSurfacePoint nearest(mesh);
@@ -243,6 +248,72 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
   }
 }
 
+// Every owned shape's pose in the common frame (loading its mesh). A first
+// alignment onto the template; then the shape nearest the others (the
+// medoid) is a second reference, and each shape, the template too, takes
+// its pose onto the medoid where that lies clearly nearer the whole
+// population: a template whose radii or pose differ from most shapes' then
+// pulls them less. Every process gathers every shape's aligned points (its
+// rotation first) and chooses the same medoid. `template_points` follow the
+// template where it moves.
+std::vector<MeshAlignment> align_population(const PopulationRequest& request,
+                                            std::vector<std::optional<SurfaceMesh>>& meshes, ShapeShare& share,
+                                            const Similarity& template_frame, PointSet& template_points) {
+  const std::size_t count = meshes.size();
+  const std::vector<std::size_t> owned = share.owned();
+  const SurfaceMesh& template_mesh = *meshes.front();
+  std::vector<MeshAlignment> alignments(count);
+  std::vector<std::vector<double>> aligned_message(count);
+  for_each_index(owned, share.threads(), [&](std::size_t k) {
+    if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], request.quiet, {}));
+    alignments[k] = align_to_template(*meshes[k], template_points, template_frame);
+    const PointSet placed = alignments[k].to_common.apply(alignment_points(*meshes[k]));
+    std::vector<double>& shape_message = aligned_message[k];
+    const Eigen::Matrix3d& rotation = alignments[k].to_common.rotation;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) shape_message.push_back(rotation(r, c));
+    }
+    for (Eigen::Index i = 0; i < placed.rows(); ++i) {
+      for (int c = 0; c < 3; ++c) shape_message.push_back(placed(i, c));
+    }
+  });
+  share.gather(aligned_message);
+  std::vector<PointSet> aligned(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::vector<double>& shape_message = aligned_message[k];
+    aligned[k].resize(Eigen::Index((shape_message.size() - 9) / 3), 3);
+    for (Eigen::Index i = 0; i < aligned[k].rows(); ++i) {
+      for (int c = 0; c < 3; ++c) aligned[k](i, c) = shape_message[9 + std::size_t(3 * i + c)];
+    }
+  }
+  const std::size_t medoid = medoid_shape(aligned);
+  if (medoid != 0) {
+    // The medoid's pose as given stands for the template's in the first start.
+    Similarity medoid_frame;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) medoid_frame.rotation(r, c) = aligned_message[medoid][std::size_t(3 * r + c)];
+    }
+    const PointSet& reference = aligned[medoid];
+    // Each shape keeps the pose, onto the template or onto the medoid,
+    // that lies nearer the whole population (as first aligned).
+    const auto realign = [&](std::size_t k, const SurfaceMesh& mesh, const MeshAlignment& first) {
+      MeshAlignment again = align_to_template(mesh, reference, medoid_frame);
+      const PointSet points = alignment_points(mesh);
+      const double before = distance_to_population(first.to_common.apply(points), aligned, k);
+      const double after = distance_to_population(again.to_common.apply(points), aligned, k);
+      return after * kNearerPopulation < before ? std::optional(again) : std::nullopt;
+    };
+    const std::optional<MeshAlignment> template_again =
+        realign(0, template_mesh, align_to_template(template_mesh, template_points, template_frame));
+    if (template_again) template_points = template_again->to_common.apply(vertex_points(template_mesh));
+    for_each_index(owned, share.threads(), [&](std::size_t k) {
+      const std::optional<MeshAlignment> again = k == 0 ? template_again : realign(k, *meshes[k], alignments[k]);
+      if (again) alignments[k] = *again;
+    });
+  }
+  return alignments;
+}
+
 }  // namespace
 
 PopulationCorrespondence correspond_population(const PopulationRequest& request) {
@@ -272,15 +343,17 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
 
   // The template's frame is the common one: its canonical frame.
   const Similarity template_frame = canonical_frame(template_mesh);
-  const PointSet template_points = template_frame.apply(vertex_points(template_mesh));
+  PointSet template_points = template_frame.apply(vertex_points(template_mesh));
 
-  // Each process's shapes, each on a thread: loaded, aligned, the template carried onto them.
   const std::vector<std::size_t> owned = share.owned();
+  const std::vector<MeshAlignment> alignments =
+      align_population(request, meshes, share, template_frame, template_points);
+
+  // Each process's shapes, each on a thread: the template carried onto them.
   population.shapes.resize(count);
   std::vector<ShapeParticles> particles(count);
   SharedProgress transferring("correspond", owned.size(), request.quiet);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
-    if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], request.quiet, {}));
     const SurfaceMesh& mesh = *meshes[k];
     const auto transferred = [&](const nlohmann::json& values) {
       return std::pair(alignment_from_json(values.at("alignment")),
@@ -295,7 +368,7 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
       shape.alignment = kept->first;
       particles[k] = {&mesh, kept->second};
     } else {
-      population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, template_frame,
+      population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, alignments[k],
                                       template_particles, particles[k]);
       if (checkpoint) {
         checkpoint->write(shape_entry("transfer", k), {{"alignment", alignment_json(population.shapes[k].alignment)},
