@@ -42,6 +42,7 @@ nlohmann::json refinement_summary(const JointRefinementRecord& refinement) {
           {"correspondence_step", refinement.correspondence_step},
           {"packing", {{"rounds", refinement.packing_rounds},
                        {"released", refinement.packing_released},
+                       {"undone", refinement.packing_undone},
                        {"smallest_spacing", refinement.packing_spacing},
                        {"correspondence_step", refinement.packing_correspondence_step}}}};
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -51,6 +52,19 @@ PointSet positions(const std::vector<SurfaceLocation>& at) {
   return points;
 }
 
+// The smallest straight distance between any two of `at`, facing or not.
+double smallest_distance(const std::vector<SurfaceLocation>& at) {
+  const PointSet points = positions(at);
+  const MatrixRowTree<PointSet> tree(points);
+  double smallest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    for (const Eigen::Index j : tree.nearest(points.row(i), 2)) {
+      if (j != i) smallest = std::min(smallest, (points.row(i) - points.row(j)).norm());
+    }
+  }
+  return smallest;
+}
+
 // Every shape's hexagonal spacing, on every process.
 std::vector<double> population_spacings(const std::vector<ShapeParticles>& shapes, std::size_t particles,
                                         ShapeShare& share) {
@@ -60,6 +74,23 @@ std::vector<double> population_spacings(const std::vector<ShapeParticles>& shape
   std::vector<double> spacings;
   for (const std::vector<double>& value : spacing) spacings.push_back(value.front());
   return spacings;
+}
+
+// The population's spread: over the shapes, the median of each shape's
+// smallest distance between any two particles (facing or not: two sides of
+// a thin part count), in its hexagonal spacings. `at` has the owned shapes'
+// places; every process gets the same number.
+double median_smallest_spacing(const std::vector<const std::vector<SurfaceLocation>*>& at,
+                               const std::vector<double>& spacings, ShapeShare& share) {
+  std::vector<std::vector<double>> smallest(at.size());
+  for_each_index(share.owned(), share.threads(),
+                 [&](std::size_t k) { smallest[k] = {smallest_distance(*at[k]) / spacings[k]}; });
+  share.gather(smallest);
+  std::vector<double> values;
+  for (const std::vector<double>& value : smallest) values.push_back(value.front());
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 ? values[middle] : (values[middle - 1] + values[middle]) / 2;
 }
 
 // Soft disks of diameter `spacing`: each pair closer than that is pushed
@@ -274,7 +305,17 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
   }
   progress.finish();
   record.packing_rounds = round - 1;
-  for (const std::size_t k : share.owned()) shapes[k].at = packings[k]->relaxation.locations();
+  std::vector<std::vector<SurfaceLocation>> packed(shapes.size());
+  std::vector<const std::vector<SurfaceLocation>*> before(shapes.size()), after(shapes.size());
+  for (const std::size_t k : share.owned()) {
+    packed[k] = packings[k]->relaxation.locations();
+    before[k] = &shapes[k].at;
+    after[k] = &packed[k];
+  }
+  // Kept only where it spreads the population at least as well as the iterations did.
+  record.packing_undone = median_smallest_spacing(after, spacings, share) < median_smallest_spacing(before, spacings, share);
+  if (record.packing_undone) return;
+  for (const std::size_t k : share.owned()) shapes[k].at = std::move(packed[k]);
 }
 
 }  // namespace meshparticles

@@ -170,7 +170,8 @@ nlohmann::json refinement_json(const JointRefinementRecord& record) {
           {"packing_spacing", record.packing_spacing},
           {"packing_correspondence_step", record.packing_correspondence_step},
           {"packing_rounds", record.packing_rounds},
-          {"packing_released", record.packing_released}};
+          {"packing_released", record.packing_released},
+          {"packing_undone", record.packing_undone}};
 }
 
 JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
@@ -181,6 +182,7 @@ JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
   json.at("packing_correspondence_step").get_to(record.packing_correspondence_step);
   record.packing_rounds = json.at("packing_rounds").get<std::size_t>();
   record.packing_released = json.at("packing_released").get<std::size_t>();
+  record.packing_undone = json.value("packing_undone", false);
   return record;
 }
 
