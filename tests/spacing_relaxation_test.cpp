@@ -41,9 +41,10 @@ double distance_to_surface(const SurfaceMesh& mesh, Vec3 p) {
   return nearest;
 }
 
-Vec3 on_input_position(const SurfaceMesh& input, const SurfacePoint& point) {
+Vec3 on_input_position(const SurfaceMesh& input, const SurfaceLocation& point) {
   const auto& x = input.positions();
-  return at_weights(point.weights, x[point.corners[0]], x[point.corners[1]], x[point.corners[2]]);
+  const Triangle& corners = input.triangles()[point.triangle];
+  return at_weights(point.weights, x[corners[0]], x[corners[1]], x[corners[2]]);
 }
 
 // A default run of `particles` on a committed mesh, quiet.
@@ -111,6 +112,7 @@ TEST(PointInsertion, PointsBecomeVerticesWhereTheyWere) {
   for (VertexId v = 0; v < result.vertex_count(); ++v) {
     ASSERT_NEAR(distance(on_input_position(input, inserted.refined.on_input[v]), result.positions()[v]), 0, 1e-12)
         << "vertex " << v;
+    ASSERT_NEAR(distance(inserted.refined.on_input[v].at, result.positions()[v]), 0, 1e-12) << "vertex " << v;
   }
 }
 
