@@ -289,29 +289,31 @@ std::vector<MeshAlignment> align_population(const PopulationRequest& request,
     }
   });
   share.gather(aligned_message);
-  std::vector<PointSet> aligned(count);
+  std::vector<PointSet> aligned_points(count);
   for (std::size_t k = 0; k < count; ++k) {
     const std::vector<double>& shape_message = aligned_message[k];
-    aligned[k].resize(Eigen::Index((shape_message.size() - 9) / 3), 3);
-    for (Eigen::Index i = 0; i < aligned[k].rows(); ++i) {
-      for (int c = 0; c < 3; ++c) aligned[k](i, c) = shape_message[9 + std::size_t(3 * i + c)];
+    PointSet& points = aligned_points[k];
+    points.resize(Eigen::Index((shape_message.size() - 9) / 3), 3);
+    for (Eigen::Index i = 0; i < points.rows(); ++i) {
+      for (int c = 0; c < 3; ++c) points(i, c) = shape_message[9 + std::size_t(3 * i + c)];
     }
   }
-  const std::size_t medoid = medoid_shape(aligned);
+  const AlignedShapes aligned(std::move(aligned_points));
+  const std::size_t medoid = aligned.medoid();
   if (medoid != 0) {
     // The medoid's pose as given stands for the template's in the first start.
     Similarity medoid_frame;
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) medoid_frame.rotation(r, c) = aligned_message[medoid][std::size_t(3 * r + c)];
     }
-    const PointSet& reference = aligned[medoid];
+    const PointSet& reference = aligned.shape(medoid);
     // Each shape keeps the pose, onto the template or onto the medoid,
     // that lies nearer the whole population (as first aligned).
     const auto realign = [&](std::size_t k, const SurfaceMesh& mesh, const MeshAlignment& first) {
       MeshAlignment again = align_to_template(mesh, reference, medoid_frame);
       const PointSet points = alignment_points(mesh);
-      const double before = distance_to_population(first.to_common.apply(points), aligned, k);
-      const double after = distance_to_population(again.to_common.apply(points), aligned, k);
+      const double before = aligned.distance_to_population(first.to_common.apply(points), k);
+      const double after = aligned.distance_to_population(again.to_common.apply(points), k);
       return after * kNearerPopulation < before ? std::optional(again) : std::nullopt;
     };
     const std::optional<MeshAlignment> template_again =
