@@ -126,6 +126,8 @@ FORGE=1 damaged packed/001.json 'values[5][0] = 2**32'
 refused "a forged triangle id of 2^32" "triangle 4294967296 of"
 FORGE=1 damaged template.json 'values["particles"][0] = -5'
 refused "a forged template corner" "vertex -5"
+FORGE=1 damaged template.json 'values["particles"][0:3] = values["particles"][2::-1]'
+refused "forged template corners, a triangle turned over" "are no triangle of the template"
 FORGE=1 damaged packed/001.json 'values = values[:-1]'
 refused "a forged row cut" "47 rows for 48 particles"
 FORGE=1 damaged packed/001.json 'values[5] = values[5][:3]'

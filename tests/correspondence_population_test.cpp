@@ -138,10 +138,11 @@ TEST(TemplateDeformation, LeavesATemplateOnItselfWhereItIs) {
 TEST(PopulationAlignment, TheMedoidIsTheShapeNearestTheOthers) {
   const PointSet sphere = alignment_points(generate_mesh("sphere"));
   const std::vector<PointSet> shapes{1.2 * sphere, 0.9 * sphere, 1.0 * sphere};
-  EXPECT_EQ(medoid_shape(shapes), 2u);
-  EXPECT_EQ(medoid_shape({shapes[2], shapes[0], shapes[1]}), 0u);
-  EXPECT_EQ(distance_to_population(shapes[2], {shapes[2]}, 0), 0.0);
-  EXPECT_LT(distance_to_population(shapes[2], shapes, 2), distance_to_population(shapes[0], shapes, 0));
+  const AlignedShapes population(shapes);
+  EXPECT_EQ(population.medoid(), 2u);
+  EXPECT_EQ(AlignedShapes({shapes[2], shapes[0], shapes[1]}).medoid(), 0u);
+  EXPECT_EQ(AlignedShapes({shapes[2]}).distance_to_population(shapes[2], 0), 0.0);
+  EXPECT_LT(population.distance_to_population(shapes[2], 2), population.distance_to_population(shapes[0], 0));
 }
 
 // Four ellipsoid shapes on disk, and the spread of particle i across them

@@ -112,7 +112,7 @@ Evened even_the_fold(std::size_t particles, double cover_share = 1.1) {
   }
   const SurfaceWalk walk(mesh);
   std::vector<SurfaceLocation> from;
-  for (const VertexId v : swept.positions) from.push_back(*walk.at_vertex(v));
+  for (const VertexId v : swept.positions) from.push_back(walk.at_vertex(v));
   result.outcome = even_out(mesh, *solver, from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, result.limit}, true);
   for (const SurfaceLocation& p : result.outcome.points) result.evened.push_back(p.at);
   return result;

@@ -41,9 +41,10 @@ double distance_to_surface(const SurfaceMesh& mesh, Vec3 p) {
   return nearest;
 }
 
-Vec3 on_input_position(const SurfaceMesh& input, const SurfacePoint& point) {
+Vec3 on_input_position(const SurfaceMesh& input, const SurfaceLocation& point) {
   const auto& x = input.positions();
-  return at_weights(point.weights, x[point.corners[0]], x[point.corners[1]], x[point.corners[2]]);
+  const Triangle& corners = input.triangles()[point.triangle];
+  return at_weights(point.weights, x[corners[0]], x[corners[1]], x[corners[2]]);
 }
 
 // A default run of `particles` on a committed mesh, quiet.
@@ -111,6 +112,7 @@ TEST(PointInsertion, PointsBecomeVerticesWhereTheyWere) {
   for (VertexId v = 0; v < result.vertex_count(); ++v) {
     ASSERT_NEAR(distance(on_input_position(input, inserted.refined.on_input[v]), result.positions()[v]), 0, 1e-12)
         << "vertex " << v;
+    ASSERT_NEAR(distance(inserted.refined.on_input[v].at, result.positions()[v]), 0, 1e-12) << "vertex " << v;
   }
 }
 
@@ -151,11 +153,10 @@ TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
   EXPECT_LE(relaxed.cover, cover_limit);
   // The kept points: on the surface, as far apart as reported.
   std::vector<Vec3> at;
-  for (const auto& point : relaxed.points) {
-    ASSERT_TRUE(point);
-    const Triangle& c = mesh.triangles()[point->triangle];
-    at.push_back(at_weights(point->weights, mesh.positions()[c[0]], mesh.positions()[c[1]], mesh.positions()[c[2]]));
-    EXPECT_GE(std::min({point->weights[0], point->weights[1], point->weights[2]}), 0.0);
+  for (const SurfaceLocation& point : relaxed.points) {
+    const Triangle& c = mesh.triangles()[point.triangle];
+    at.push_back(at_weights(point.weights, mesh.positions()[c[0]], mesh.positions()[c[1]], mesh.positions()[c[2]]));
+    EXPECT_GE(std::min({point.weights[0], point.weights[1], point.weights[2]}), 0.0);
   }
   double smallest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < at.size(); ++i) {
@@ -166,8 +167,8 @@ TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
   const auto& again_points = again.candidates.front().points;
   ASSERT_EQ(again_points.size(), relaxed.points.size());
   for (std::size_t i = 0; i < at.size(); ++i) {
-    EXPECT_EQ(again_points[i]->triangle, relaxed.points[i]->triangle);
-    EXPECT_EQ(again_points[i]->weights, relaxed.points[i]->weights);
+    EXPECT_EQ(again_points[i].triangle, relaxed.points[i].triangle);
+    EXPECT_EQ(again_points[i].weights, relaxed.points[i].weights);
   }
   // No rounds: the start, kept.
   const RelaxationOutcome none = relax_spacing(mesh, start, d_hex, 0, {cover_limit}, 0, true);

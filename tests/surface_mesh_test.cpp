@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 #include "mesh/io/mesh_reader.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -41,6 +43,14 @@ TEST(SurfaceMesh, TwoPiecesAreTwoComponents) {
   EXPECT_EQ(mesh.component_count(), 2u);
   EXPECT_EQ(mesh.component_of(0), 0u);
   EXPECT_EQ(mesh.component_of(7), 1u);
+}
+
+// Every vertex is a point of the surface: one outside every triangle is
+// refused (the readers drop such vertices before building the mesh).
+TEST(SurfaceMesh, RefusesAVertexInNoTriangle) {
+  const std::vector<Vec3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}};
+  EXPECT_THROW(SurfaceMesh(positions, {{0, 1, 2}}), std::invalid_argument);
+  EXPECT_NO_THROW(SurfaceMesh({positions.begin(), positions.begin() + 3}, {{0, 1, 2}}));
 }
 
 TEST(SurfaceMesh, HighValenceApexHasNoCap) {

@@ -8,6 +8,7 @@
 #include <optional>
 #include <utility>
 
+#include "common/median.hpp"
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
 #include "correspondence/correspondence_term.hpp"
@@ -88,9 +89,7 @@ double median_smallest_spacing(const std::vector<const std::vector<SurfaceLocati
   share.gather(smallest);
   std::vector<double> values;
   for (const std::vector<double>& value : smallest) values.push_back(value.front());
-  std::sort(values.begin(), values.end());
-  const std::size_t middle = values.size() / 2;
-  return values.size() % 2 ? values[middle] : (values[middle - 1] + values[middle]) / 2;
+  return median(std::move(values));
 }
 
 // Soft disks of diameter `spacing`: each pair closer than that is pushed

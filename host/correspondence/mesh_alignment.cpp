@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <utility>
 
 #include "mesh/point_cloud_tree.hpp"
 
@@ -147,13 +148,15 @@ double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSe
 
 PointSet alignment_points(const SurfaceMesh& mesh) { return fit_points(vertex_points(mesh)); }
 
-std::size_t medoid_shape(const std::vector<PointSet>& aligned) {
-  std::vector<std::unique_ptr<PointsTree>> trees;
-  for (const PointSet& points : aligned) trees.push_back(std::make_unique<PointsTree>(points));
-  std::vector<double> sums(aligned.size(), 0.0);
-  for (std::size_t a = 0; a < aligned.size(); ++a) {
-    for (std::size_t b = a + 1; b < aligned.size(); ++b) {
-      const double distance = shape_distance(aligned[a], *trees[a], aligned[b], *trees[b]);
+AlignedShapes::AlignedShapes(std::vector<PointSet> aligned) : shapes_(std::move(aligned)) {
+  for (const PointSet& points : shapes_) trees_.push_back(std::make_unique<PointsTree>(points));
+}
+
+std::size_t AlignedShapes::medoid() const {
+  std::vector<double> sums(shapes_.size(), 0.0);
+  for (std::size_t a = 0; a < shapes_.size(); ++a) {
+    for (std::size_t b = a + 1; b < shapes_.size(); ++b) {
+      const double distance = shape_distance(shapes_[a], *trees_[a], shapes_[b], *trees_[b]);
       sums[a] += distance;
       sums[b] += distance;
     }
@@ -161,11 +164,11 @@ std::size_t medoid_shape(const std::vector<PointSet>& aligned) {
   return std::size_t(std::min_element(sums.begin(), sums.end()) - sums.begin());
 }
 
-double distance_to_population(const PointSet& placed, const std::vector<PointSet>& aligned, std::size_t self) {
+double AlignedShapes::distance_to_population(const PointSet& placed, std::size_t self) const {
   const PointsTree tree(placed);
   double sum = 0;
-  for (std::size_t b = 0; b < aligned.size(); ++b) {
-    if (b != self) sum += shape_distance(placed, tree, aligned[b], PointsTree(aligned[b]));
+  for (std::size_t b = 0; b < shapes_.size(); ++b) {
+    if (b != self) sum += shape_distance(placed, tree, shapes_[b], *trees_[b]);
   }
   return sum;
 }

@@ -13,8 +13,10 @@
 // the two poses apart.
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <vector>
 
+#include "mesh/point_cloud_tree.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "shape_model/procrustes.hpp"
 
@@ -54,15 +56,32 @@ inline constexpr double kAmbiguousPoseRatio = 1.02;
 // The vertices an alignment fits: all, or every k-th of a large mesh.
 PointSet alignment_points(const SurfaceMesh& mesh);
 
-// The shape of `aligned` (each a shape's alignment_points in the common
-// frame) nearest the others: the least sum of the symmetric rms distances
-// to the nearest points (ties: the first). For one reference every process
-// finds the same from the same points.
-std::size_t medoid_shape(const std::vector<PointSet>& aligned);
+// A population's shapes as first aligned (each a shape's alignment_points
+// in the common frame), with a k-d tree over each, built once for the
+// medoid and for every shape's distance to the population (searched from
+// many threads at once: the searches only read).
+class AlignedShapes {
+ public:
+  explicit AlignedShapes(std::vector<PointSet> aligned);
+  AlignedShapes(const AlignedShapes&) = delete;  // the trees read the shapes where they are
+  AlignedShapes& operator=(const AlignedShapes&) = delete;
 
-// The sum of those distances from `placed` (a shape's alignment_points in
-// the common frame) to every shape of `aligned` but `self`.
-double distance_to_population(const PointSet& placed, const std::vector<PointSet>& aligned, std::size_t self);
+  std::size_t size() const { return shapes_.size(); }
+  const PointSet& shape(std::size_t k) const { return shapes_[k]; }
+
+  // The shape nearest the others: the least sum of the symmetric rms
+  // distances to the nearest points (ties: the first). For one reference
+  // every process finds the same from the same points.
+  std::size_t medoid() const;
+
+  // The sum of those distances from `placed` (a shape's alignment_points in
+  // the common frame) to every shape but `self`.
+  double distance_to_population(const PointSet& placed, std::size_t self) const;
+
+ private:
+  std::vector<PointSet> shapes_;
+  std::vector<std::unique_ptr<MatrixRowTree<PointSet>>> trees_;
+};
 
 // `template_points`: the template's vertices in the common frame, which
 // `template_frame` (its canonical_frame) defines.

@@ -16,8 +16,9 @@
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
-#include "mesh/midpoint_refinement.hpp"
+#include "mesh/nearest_on_triangle.hpp"
 #include "mesh/nearest_surface_point.hpp"
+#include "mesh/vertex_triangles.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_sets.hpp"
 #include "pipeline/run_pipeline.hpp"
@@ -61,11 +62,11 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
 // onto its surface (the deformed template's, each to the nearest point of
 // the surface, found exactly in the shape's own coordinates: a similarity
 // keeps the nearest point nearest). The template's particles are points of
-// it by its vertices' weights (SurfacePoint), so that they follow it as it
+// its triangles by their corners' weights, so that they follow it as it
 // deforms.
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const SurfaceMesh& template_mesh,
                              const PointSet& template_points, const MeshAlignment& alignment,
-                             const std::vector<SurfacePoint>& template_particles, ShapeParticles& carried) {
+                             const std::vector<SurfaceLocation>& template_particles, ShapeParticles& carried) {
   ShapeCorrespondence shape;
   shape.mesh = file;
   shape.vertices = mesh.vertex_count();
@@ -75,9 +76,10 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   const PointSet deformed = deform_template(template_mesh, template_points, to_common.apply(vertex_points(mesh)));
   const NearestSurfacePoint nearest(mesh);
   carried.mesh = &mesh;
-  for (const SurfacePoint& particle : template_particles) {
+  for (const SurfaceLocation& particle : template_particles) {
+    const Triangle& corners = template_mesh.triangles()[particle.triangle];
     Eigen::RowVector3d query = Eigen::RowVector3d::Zero();
-    for (std::size_t k = 0; k < 3; ++k) query += particle.weights[k] * deformed.row(Eigen::Index(particle.corners[k]));
+    for (std::size_t k = 0; k < 3; ++k) query += particle.weights[k] * deformed.row(Eigen::Index(corners[k]));
     const Eigen::RowVector3d own = (query - to_common.translation.transpose()) * to_common.rotation / to_common.scale;
     // A loaded mesh has triangles (mesh_checks refuses one without area).
     carried.at.push_back(nearest.find({own(0), own(1), own(2)}).value());
@@ -103,31 +105,47 @@ void settle(ShapeCorrespondence& shape, const SurfaceMesh& mesh, const ShapePart
   shape.quality = evenness(shape.mesh, mesh, shape.particles, threads);
 }
 
-// The template's particles as doubles (corners, then weights), for the other processes.
-std::vector<double> template_message(const std::vector<SurfacePoint>& particles) {
+// The template's particles as doubles (its triangle's corners, as template
+// vertex ids, then the weights), for the other processes and the checkpoint.
+std::vector<double> template_message(const SurfaceMesh& template_mesh, const std::vector<SurfaceLocation>& particles) {
   std::vector<double> message;
-  for (const SurfacePoint& particle : particles) {
-    for (const VertexId corner : particle.corners) message.push_back(double(corner));
+  for (const SurfaceLocation& particle : particles) {
+    for (const VertexId corner : template_mesh.triangles()[particle.triangle]) message.push_back(double(corner));
     message.insert(message.end(), particle.weights.begin(), particle.weights.end());
   }
   return message;
 }
 
-std::vector<SurfacePoint> template_from_message(const std::vector<double>& message) {
-  std::vector<SurfacePoint> particles(message.size() / 6);
+// A message's particles as points of the template, each corners' triangle
+// found (std::invalid_argument for corners no triangle of it has, in that
+// order, as no run writes). The corners are whole numbers of vertex ids.
+std::vector<SurfaceLocation> template_from_message(const SurfaceMesh& template_mesh, const std::vector<double>& message) {
+  const VertexTriangles around = vertex_triangles(template_mesh.triangles(), template_mesh.vertex_count());
+  const auto& positions = template_mesh.positions();
+  std::vector<SurfaceLocation> particles(message.size() / 6);
   for (std::size_t i = 0; i < particles.size(); ++i) {
+    Triangle corners{};
     for (std::size_t k = 0; k < 3; ++k) {
-      particles[i].corners[k] = VertexId(message[6 * i + k]);
+      corners[k] = VertexId(message[6 * i + k]);
       particles[i].weights[k] = message[6 * i + 3 + k];
     }
+    const auto candidates = around.around(corners[0]);
+    const auto holder = std::find_if(candidates.begin(), candidates.end(),
+                                     [&](std::uint32_t t) { return template_mesh.triangles()[t] == corners; });
+    if (holder == candidates.end()) {
+      throw std::invalid_argument("corners " + std::to_string(corners[0]) + ", " + std::to_string(corners[1]) + ", " +
+                                  std::to_string(corners[2]) + " are no triangle of the template");
+    }
+    particles[i].triangle = *holder;
+    particles[i].at = at_weights(particles[i].weights, positions[corners[0]], positions[corners[1]], positions[corners[2]]);
   }
   return particles;
 }
 
 // The template's particles as a checkpoint keeps them, checked against the
-// template's `vertices` before they are used (std::invalid_argument).
-std::vector<SurfacePoint> template_from_checkpoint(const nlohmann::json& kept, std::size_t vertices,
-                                                   DistributionQuality& quality) {
+// template before they are used (std::invalid_argument).
+std::vector<SurfaceLocation> template_from_checkpoint(const nlohmann::json& kept, const SurfaceMesh& template_mesh,
+                                                      DistributionQuality& quality) {
   const std::vector<double> message = kept.at("particles").get<std::vector<double>>();
   if (message.empty() || message.size() % 6 != 0) {
     throw std::invalid_argument(std::to_string(message.size()) + " numbers, not 6 per particle");
@@ -135,21 +153,21 @@ std::vector<SurfacePoint> template_from_checkpoint(const nlohmann::json& kept, s
   for (std::size_t i = 0; i < message.size(); ++i) {
     const double value = message[i];
     const bool corner = i % 6 < 3;
-    const bool valid =
-        corner ? value >= 0 && value < double(vertices) && value == std::floor(value) : std::isfinite(value);
+    const bool valid = corner ? value >= 0 && value < double(template_mesh.vertex_count()) && value == std::floor(value)
+                              : std::isfinite(value);
     if (!valid) throw std::invalid_argument((corner ? "vertex " : "weight ") + nlohmann::json(value).dump());
   }
   quality = quality_from_json(kept.at("quality"), message.size() / 6);
-  return template_from_message(message);
+  return template_from_message(template_mesh, message);
 }
 
 // The template's run (or the checkpoint's), on the leader: its particles as
-// the template's vertices' weights, and its quality.
-std::vector<SurfacePoint> sample_template(const SurfaceMesh& template_mesh, const PopulationRequest& request,
-                                          const CorrespondCheckpoint* checkpoint, DistributionQuality& quality) {
+// points of the template, and its quality.
+std::vector<SurfaceLocation> sample_template(const SurfaceMesh& template_mesh, const PopulationRequest& request,
+                                             const CorrespondCheckpoint* checkpoint, DistributionQuality& quality) {
   if (checkpoint) {
     const auto kept = checkpoint->read("template", [&](const nlohmann::json& values) {
-      return template_from_checkpoint(values, template_mesh.vertex_count(), quality);
+      return template_from_checkpoint(values, template_mesh, quality);
     });
     if (kept) return *kept;
   }
@@ -158,17 +176,10 @@ std::vector<SurfacePoint> sample_template(const SurfaceMesh& template_mesh, cons
   run.quiet = request.quiet;
   const RunResult result = run_pipeline(template_mesh, run);
   quality = result.quality;
-  std::vector<SurfacePoint> particles;
-  for (const ParticleLocation& location : particle_locations(template_mesh, result)) {
-    SurfacePoint particle;
-    for (std::size_t k = 0; k < 3; ++k) {
-      particle.corners[k] = *template_mesh.vertex_of_input_id(location.on_input.corners[k]);
-      particle.weights[k] = location.on_input.weights[k];
-    }
-    particles.push_back(particle);
-  }
+  std::vector<SurfaceLocation> particles = particles_on_input(template_mesh, result);
   if (checkpoint) {
-    checkpoint->write("template", {{"particles", template_message(particles)}, {"quality", quality_json(quality)}});
+    checkpoint->write("template", {{"particles", template_message(template_mesh, particles)},
+                                   {"quality", quality_json(quality)}});
   }
   return particles;
 }
@@ -278,29 +289,31 @@ std::vector<MeshAlignment> align_population(const PopulationRequest& request,
     }
   });
   share.gather(aligned_message);
-  std::vector<PointSet> aligned(count);
+  std::vector<PointSet> aligned_points(count);
   for (std::size_t k = 0; k < count; ++k) {
     const std::vector<double>& shape_message = aligned_message[k];
-    aligned[k].resize(Eigen::Index((shape_message.size() - 9) / 3), 3);
-    for (Eigen::Index i = 0; i < aligned[k].rows(); ++i) {
-      for (int c = 0; c < 3; ++c) aligned[k](i, c) = shape_message[9 + std::size_t(3 * i + c)];
+    PointSet& points = aligned_points[k];
+    points.resize(Eigen::Index((shape_message.size() - 9) / 3), 3);
+    for (Eigen::Index i = 0; i < points.rows(); ++i) {
+      for (int c = 0; c < 3; ++c) points(i, c) = shape_message[9 + std::size_t(3 * i + c)];
     }
   }
-  const std::size_t medoid = medoid_shape(aligned);
+  const AlignedShapes aligned(std::move(aligned_points));
+  const std::size_t medoid = aligned.medoid();
   if (medoid != 0) {
     // The medoid's pose as given stands for the template's in the first start.
     Similarity medoid_frame;
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) medoid_frame.rotation(r, c) = aligned_message[medoid][std::size_t(3 * r + c)];
     }
-    const PointSet& reference = aligned[medoid];
+    const PointSet& reference = aligned.shape(medoid);
     // Each shape keeps the pose, onto the template or onto the medoid,
     // that lies nearer the whole population (as first aligned).
     const auto realign = [&](std::size_t k, const SurfaceMesh& mesh, const MeshAlignment& first) {
       MeshAlignment again = align_to_template(mesh, reference, medoid_frame);
       const PointSet points = alignment_points(mesh);
-      const double before = distance_to_population(first.to_common.apply(points), aligned, k);
-      const double after = distance_to_population(again.to_common.apply(points), aligned, k);
+      const double before = aligned.distance_to_population(first.to_common.apply(points), k);
+      const double after = aligned.distance_to_population(again.to_common.apply(points), k);
       return after * kNearerPopulation < before ? std::optional(again) : std::nullopt;
     };
     const std::optional<MeshAlignment> template_again =
@@ -332,13 +345,13 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   const SurfaceMesh& template_mesh = *meshes.front();
 
   // The leader samples the template and tells the others.
-  std::vector<SurfacePoint> template_particles;
+  std::vector<SurfaceLocation> template_particles;
   if (share.leads()) {
     template_particles = sample_template(template_mesh, request, checkpoint, population.template_quality);
   }
-  std::vector<double> message = template_message(template_particles);
+  std::vector<double> message = template_message(template_mesh, template_particles);
   share.broadcast(message);
-  template_particles = template_from_message(message);
+  template_particles = template_from_message(template_mesh, message);
   const std::size_t particle_count = template_particles.size();
 
   // The template's frame is the common one: its canonical frame.

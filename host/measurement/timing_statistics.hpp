@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "common/median.hpp"
+
 namespace meshparticles {
 
 struct TimingSummary {
@@ -11,12 +13,9 @@ struct TimingSummary {
   double min_ms = 0;
 };
 
-inline TimingSummary summarize_timings(std::vector<double> samples) {
+inline TimingSummary summarize_timings(const std::vector<double>& samples) {
   if (samples.empty()) return {};
-  std::sort(samples.begin(), samples.end());
-  const std::size_t middle = samples.size() / 2;
-  const double median = samples.size() % 2 ? samples[middle] : (samples[middle - 1] + samples[middle]) / 2;
-  return {median, samples.front()};
+  return {median(samples), *std::min_element(samples.begin(), samples.end())};
 }
 
 }  // namespace meshparticles

@@ -6,31 +6,19 @@
 
 namespace meshparticles {
 
-VertexId SurfacePoint::nearest_corner(const SurfaceMesh& input) const {
-  const auto& positions = input.positions();
-  Vec3 at{0, 0, 0};
-  for (int k = 0; k < 3; ++k) at = at + weights[k] * positions[corners[k]];
-  int best = 0;
-  for (int k = 1; k < 3; ++k) {
-    if (distance(at, positions[corners[k]]) < distance(at, positions[corners[best]])) best = k;
-  }
-  return corners[best];
-}
-
-std::vector<SurfacePoint> vertex_surface_points(const SurfaceMesh& mesh) {
-  std::vector<SurfacePoint> points(mesh.vertex_count());
+std::vector<SurfaceLocation> vertex_locations(const SurfaceMesh& mesh) {
+  std::vector<SurfaceLocation> locations(mesh.vertex_count());
   std::vector<std::uint8_t> placed(mesh.vertex_count(), 0);
-  for (const Triangle& corners : mesh.triangles()) {
+  const auto& triangles = mesh.triangles();
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
-      if (placed[corners[k]]) continue;
-      placed[corners[k]] = 1;
-      points[corners[k]] = {corners, {k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0}};
+      const VertexId v = triangles[t][k];
+      if (placed[v]) continue;
+      placed[v] = 1;
+      locations[v] = {t, {k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0}, mesh.positions()[v]};
     }
   }
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
-    if (!placed[v]) points[v] = {{v, v, v}, {1, 0, 0}};
-  }
-  return points;
+  return locations;
 }
 
 std::size_t refined_vertex_count(const SurfaceMesh& input, unsigned levels) {
@@ -68,7 +56,7 @@ std::uint64_t edge_key(VertexId a, VertexId b) {
 class Refiner {
  public:
   explicit Refiner(const SurfaceMesh& input)
-      : input_(input), positions_(input.positions()), on_input_(vertex_surface_points(input)) {
+      : input_(input), positions_(input.positions()), on_input_(vertex_locations(input)) {
     const auto& triangles = input.triangles();
     pieces_.reserve(triangles.size());
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
@@ -131,7 +119,7 @@ class Refiner {
     Vec3 at{0, 0, 0};
     for (int c = 0; c < 3; ++c) at = at + weights[c] * input_.positions()[corners[c]];
     positions_.push_back(at);
-    on_input_.push_back({corners, weights});
+    on_input_.push_back({piece.input_triangle, weights, at});
     return it->second;
   }
 
@@ -178,7 +166,7 @@ class Refiner {
 
   const SurfaceMesh& input_;
   std::vector<Vec3> positions_;
-  std::vector<SurfacePoint> on_input_;
+  std::vector<SurfaceLocation> on_input_;
   std::vector<Piece> pieces_;
 };
 

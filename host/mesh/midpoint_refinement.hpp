@@ -6,32 +6,24 @@
 // refined mesh is the input surface exactly (its vertices lie on the
 // input's flat triangles), so particles on its vertices sit anywhere on the
 // input at that resolution. Each vertex knows where it lies on the input: a
-// triangle of the input and barycentric weights.
-#include <array>
+// SurfaceLocation of the input mesh (a triangle of it and barycentric weights).
 #include <cstddef>
 #include <vector>
 
+#include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace meshparticles {
 
-// A point of the input surface: weights[k] of corners[k] (vertex ids of the
-// input SurfaceMesh), the weights non-negative and summing to 1.
-struct SurfacePoint {
-  Triangle corners{};
-  std::array<double, 3> weights{};
-  // The corner nearest to the point in space (ties: the first).
-  VertexId nearest_corner(const SurfaceMesh& input) const;
-};
-
 // Each vertex of `mesh` as a point of it: the first triangle holding it,
-// with all the weight on that corner (a vertex in no triangle: itself, thrice).
-std::vector<SurfacePoint> vertex_surface_points(const SurfaceMesh& mesh);
+// with all the weight on that corner (a SurfaceMesh has no vertex outside
+// its triangles).
+std::vector<SurfaceLocation> vertex_locations(const SurfaceMesh& mesh);
 
 struct RefinedMesh {
   SurfaceMesh mesh;
   unsigned levels = 0;  // rounds of splitting
-  std::vector<SurfacePoint> on_input;  // per vertex of `mesh`
+  std::vector<SurfaceLocation> on_input;  // per vertex of `mesh`: where it lies on the input
 };
 
 // `levels` rounds of midpoint subdivision. At 0, the input itself (copied).

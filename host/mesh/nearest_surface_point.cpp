@@ -32,11 +32,9 @@ std::optional<SurfaceLocation> NearestSurfacePoint::find(Vec3 p) const {
   std::uint32_t nearest_vertex = 0;
   double squared = 0;
   tree_->knnSearch(query, 1, &nearest_vertex, &squared);
-  std::optional<SurfaceLocation> best;
-  std::uint32_t triangle = 0;
-  if (walk_.first_triangle(nearest_vertex, triangle)) best = walk_.walk(triangle, p);
-  double best_distance = best ? distance(best->at, p) : std::sqrt(squared) + longest_edge_;
-  if (best && best_distance <= kOnSurface * mesh_.mean_edge_length()) return best;
+  SurfaceLocation best = walk_.walk(walk_.first_triangle(nearest_vertex), p);
+  double best_distance = distance(best.at, p);
+  if (best_distance <= kOnSurface * mesh_.mean_edge_length()) return best;
   // Every triangle with a corner within reach, each once.
   const double reach = best_distance + longest_edge_;
   std::vector<std::pair<std::uint32_t, double>> near;
@@ -54,7 +52,7 @@ std::optional<SurfaceLocation> NearestSurfacePoint::find(Vec3 p) const {
     SurfaceLocation location{t, nearest_on_triangle(p, x[c[0]], x[c[1]], x[c[2]]), {}};
     location.at = at_weights(location.weights, x[c[0]], x[c[1]], x[c[2]]);
     const double d = distance(location.at, p);
-    if (!best || d < best_distance) std::tie(best, best_distance) = std::pair(location, d);
+    if (d < best_distance) std::tie(best, best_distance) = std::pair(location, d);
   }
   return best;
 }

@@ -83,15 +83,16 @@ class Inserter {
   // The new vertex as a point of the input: its corners' input points,
   // weighted, in the input triangle that holds them all (each working
   // triangle lies in one input triangle).
-  SurfacePoint on_input(const std::array<VertexId, 3>& corners, const std::array<double, 3>& weights) const {
+  SurfaceLocation on_input(const std::array<VertexId, 3>& corners, const std::array<double, 3>& weights) const {
     std::vector<std::pair<VertexId, double>> parts;
     for (int k = 0; k < 3; ++k) {
-      const SurfacePoint& corner = on_input_[corners[k]];
+      const SurfaceLocation& corner = on_input_[corners[k]];
+      const Triangle& input_corners = input_.triangles()[corner.triangle];
       for (int j = 0; j < 3; ++j) {
         const double w = weights[k] * corner.weights[j];
         if (w <= 0) continue;
-        const auto same = std::find_if(parts.begin(), parts.end(), [&](const auto& p) { return p.first == corner.corners[j]; });
-        if (same == parts.end()) parts.emplace_back(corner.corners[j], w);
+        const auto same = std::find_if(parts.begin(), parts.end(), [&](const auto& p) { return p.first == input_corners[j]; });
+        if (same == parts.end()) parts.emplace_back(input_corners[j], w);
         else same->second += w;
       }
     }
@@ -99,7 +100,7 @@ class Inserter {
     if (parts.empty() || parts.size() > 3) return on_input_[corners[heaviest]];
     for (const std::uint32_t t : input_around_.around(parts.front().first)) {
       const Triangle& holder = input_.triangles()[t];
-      SurfacePoint point{holder, {0, 0, 0}};
+      SurfaceLocation point{t, {0, 0, 0}, {}};
       bool holds = true;
       for (const auto& [vertex, w] : parts) {
         const auto k = std::find(holder.begin(), holder.end(), vertex) - holder.begin();
@@ -112,6 +113,8 @@ class Inserter {
       if (!holds) continue;
       const double total = point.weights[0] + point.weights[1] + point.weights[2];
       for (double& w : point.weights) w /= total;
+      const auto& at = input_.positions();
+      point.at = at_weights(point.weights, at[holder[0]], at[holder[1]], at[holder[2]]);
       return point;
     }
     return on_input_[corners[heaviest]];  // not reached on a refined mesh
@@ -172,7 +175,7 @@ class Inserter {
   const std::vector<Triangle>& original_;
   std::vector<Vec3> positions_;
   std::vector<Triangle> triangles_;
-  std::vector<SurfacePoint> on_input_;
+  std::vector<SurfaceLocation> on_input_;
   std::vector<std::uint32_t> origin_;  // per triangle: the triangle of the mesh it is a piece of
   std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> pieces_;  // split triangles: their pieces
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edges_;   // edge: the triangles holding it

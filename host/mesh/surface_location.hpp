@@ -3,6 +3,12 @@
 // on a mesh it holds (a triangle of that SurfaceMesh, its weights and the
 // point), and in a file's terms (a triangle's corners as the mesh file
 // numbers its vertices, and their weights) for what is written or kept.
+// Every point the program places is a SurfaceLocation of some mesh: a
+// particle moving on the surface, a vertex of a refined mesh on the input
+// (RefinedMesh::on_input), the template's particles in `correspond`. A
+// vertex is one too (vertex_locations), since a SurfaceMesh has no vertex
+// outside its triangles: its constructor refuses one, and the readers'
+// checks drop such vertices first, keeping the others' file ids.
 #include <array>
 #include <cstddef>
 #include <cstdint>

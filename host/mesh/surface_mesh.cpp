@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace meshparticles {
@@ -28,6 +30,12 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<Triangle> tria
       input_ids_(std::move(input_ids)),
       input_vertex_count_(input_vertex_count ? input_vertex_count : positions_.size()) {
   const std::size_t n = positions_.size();
+  std::vector<std::uint8_t> in_triangle(n, 0);
+  for (const Triangle& t : triangles_) in_triangle[t[0]] = in_triangle[t[1]] = in_triangle[t[2]] = 1;
+  if (const auto lone = std::find(in_triangle.begin(), in_triangle.end(), 0); lone != in_triangle.end()) {
+    throw std::invalid_argument("SurfaceMesh: vertex " + std::to_string(lone - in_triangle.begin()) +
+                                " is in no triangle");
+  }
 
   // Each undirected edge (a < b, packed a << 32 | b) once per triangle using
   // it, sorted: a run of one means boundary. Sorted keys list the edges in

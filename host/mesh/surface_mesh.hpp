@@ -23,6 +23,10 @@ class SurfaceMesh {
   // interior (boundary means one), and separate fans may share a vertex. `input_ids[v]` is the id vertex v had in
   // the input file (empty: the identity), out of `input_vertex_count` vertices
   // the file had (0: as many as here).
+  // Every vertex lies in a triangle (std::invalid_argument otherwise): a
+  // vertex is a point of the surface, so every point a run places or writes
+  // is a triangle and weights (SurfaceLocation). The readers' checks drop
+  // vertices no triangle uses, keeping the others' input ids.
   SurfaceMesh(std::vector<Vec3> positions, std::vector<Triangle> triangles,
               std::vector<VertexId> input_ids = {}, std::size_t input_vertex_count = 0);
 

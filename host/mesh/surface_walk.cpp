@@ -50,17 +50,6 @@ SurfaceLocation SurfaceWalk::walk(std::uint32_t from, Vec3 target) const {
   return best;
 }
 
-std::optional<SurfaceLocation> SurfaceWalk::at_vertex(VertexId v) const {
-  std::uint32_t triangle = 0;
-  if (!first_triangle(v, triangle)) return std::nullopt;
-  return walk(triangle, mesh_.positions()[v]);
-}
-
-bool SurfaceWalk::first_triangle(VertexId v, std::uint32_t& triangle) const {
-  const auto triangles = around_.around(v);
-  if (triangles.empty()) return false;
-  triangle = triangles.front();
-  return true;
-}
+SurfaceLocation SurfaceWalk::at_vertex(VertexId v) const { return walk(first_triangle(v), mesh_.positions()[v]); }
 
 }  // namespace meshparticles

@@ -4,7 +4,6 @@
 // (a point that moved less than a triangle's size takes one or two steps).
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -21,10 +20,10 @@ class SurfaceWalk {
   // `from` (exact where the surface near `target` is within the triangles
   // the walk passes; a point moved less than the triangles' size).
   SurfaceLocation walk(std::uint32_t from, Vec3 target) const;
-  // Vertex v as a point of one of its triangles (none: it is in no triangle).
-  std::optional<SurfaceLocation> at_vertex(VertexId v) const;
-  // A triangle holding vertex v (none: the vertex is in no triangle).
-  bool first_triangle(VertexId v, std::uint32_t& triangle) const;
+  // Vertex v as a point of its first triangle (every vertex is in one).
+  SurfaceLocation at_vertex(VertexId v) const;
+  // The first triangle holding vertex v.
+  std::uint32_t first_triangle(VertexId v) const { return around_.around(v).front(); }
   Vec3 normal(std::uint32_t triangle) const { return normals_[triangle]; }  // unit (zero if degenerate)
   // The unit direction of the triangle's first edge (zero if it has no length).
   Vec3 first_edge_direction(std::uint32_t triangle) const {

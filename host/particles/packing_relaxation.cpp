@@ -76,7 +76,7 @@ PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<
   for (const VertexId v : start) {
     SurfaceLocation location;
     location.at = mesh.positions()[v];
-    if (!walk_.first_triangle(v, location.triangle)) location.triangle = kNoTriangle;
+    location.triangle = walk_.first_triangle(v);
     locations.push_back(location);
   }
   hold(mesh, locations);
@@ -90,15 +90,13 @@ PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<
 // memory: on the 1M sphere at n = 100,000 a push in the farthest start's
 // order, which scatters them, spent most of its time waiting on memory).
 void PackingRelaxation::hold(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start) {
-  start_ = start;
   std::vector<Vec3> at;
   for (const SurfaceLocation& location : start) at.push_back(location.at);
   order_ = morton_order(mesh, at);
   for (const std::uint32_t i : order_) {
     Particle p;
     p.at = start[i].at;
-    p.fixed = start[i].triangle == kNoTriangle;
-    p.triangle = p.fixed ? 0 : start[i].triangle;
+    p.triangle = start[i].triangle;
     particles_.push_back(p);
   }
 }
@@ -131,7 +129,6 @@ bool PackingRelaxation::push(double radius, const std::vector<Vec3>& nudge) {
   double largest = 0;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     Particle& p = particles_[i];
-    if (p.fixed) continue;
     const Vec3 n = walk_.normal(p.triangle);
     Vec3 step = kStepShare * shift[i] + kMomentum * p.velocity;
     if (!nudge.empty()) step = step + nudge[order_[i]];
@@ -166,15 +163,14 @@ std::vector<Vec3> PackingRelaxation::positions() const {
 
 std::vector<Vec3> PackingRelaxation::normals() const {
   std::vector<Vec3> normals;
-  for (const Particle& p : particles_) normals.push_back(p.fixed ? Vec3{} : walk_.normal(p.triangle));
+  for (const Particle& p : particles_) normals.push_back(walk_.normal(p.triangle));
   return normals;
 }
 
-std::vector<std::optional<SurfaceLocation>> PackingRelaxation::points() const {
-  std::vector<std::optional<SurfaceLocation>> points(particles_.size());
+std::vector<SurfaceLocation> PackingRelaxation::points() const {
+  std::vector<SurfaceLocation> points(particles_.size());
   for (std::size_t k = 0; k < particles_.size(); ++k) {
     const Particle& p = particles_[k];
-    if (p.fixed) continue;
     const SurfaceLocation reached = walk_.walk(p.triangle, p.at);
     points[order_[k]] = SurfaceLocation{p.triangle, reached.weights, reached.at};
   }
@@ -182,10 +178,10 @@ std::vector<std::optional<SurfaceLocation>> PackingRelaxation::points() const {
 }
 
 std::vector<SurfaceLocation> PackingRelaxation::locations() const {
-  std::vector<SurfaceLocation> locations = start_;
+  std::vector<SurfaceLocation> locations(particles_.size());
   for (std::size_t k = 0; k < particles_.size(); ++k) {
     const Particle& p = particles_[k];
-    if (!p.fixed) locations[order_[k]] = walk_.walk(p.triangle, p.at);
+    locations[order_[k]] = walk_.walk(p.triangle, p.at);
   }
   return locations;
 }
@@ -199,13 +195,12 @@ void PackingRelaxation::build_neighbours(double reach) {
   std::vector<std::pair<std::uint32_t, double>> near;
   const nanoflann::SearchParams unsorted(32, 0.0f, false);
   for (std::uint32_t i = 0; i < at.size(); ++i) {
-    if (particles_[i].fixed) continue;
     const double query[3] = {at[i].x, at[i].y, at[i].z};
     tree.radiusSearch(query, reach * reach, near, unsorted);
     std::sort(near.begin(), near.end());
     const Vec3 ni = walk_.normal(particles_[i].triangle);
     for (const auto& [j, squared] : near) {
-      if (j <= i || particles_[j].fixed) continue;
+      if (j <= i) continue;
       if (dot(ni, walk_.normal(particles_[j].triangle)) < kFacingCosine) continue;
       pairs_.emplace_back(i, j);
     }

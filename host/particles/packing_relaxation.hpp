@@ -11,7 +11,6 @@
 // geodesic, and two sides of a thin sheet do not push each other.
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "mesh/surface_location.hpp"
@@ -25,15 +24,12 @@ class PackingRelaxation {
   struct Particle {
     std::uint32_t triangle = 0;
     Vec3 at;
-    Vec3 velocity;       // the last move
-    bool fixed = false;  // on a vertex in no triangle: it stays
+    Vec3 velocity;  // the last move
   };
 
   // Pairs whose triangles' normals have a cosine under this do not push
   // each other (opposite sides of a thin sheet, 120 degrees and more apart).
   static constexpr double kFacingCosine = -0.5;
-  // A start in no triangle (a vertex in none) stays where it is.
-  static constexpr std::uint32_t kNoTriangle = 0xFFFFFFFF;
 
   // Particles on the vertices `start`, or at surface points.
   PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start);
@@ -53,11 +49,11 @@ class PackingRelaxation {
 
   // In the held order (Morton order of the start), for measures over all particles.
   std::vector<Vec3> positions() const;
-  std::vector<Vec3> normals() const;  // zero for a fixed particle
+  std::vector<Vec3> normals() const;
 
-  // In the caller's order: none for a fixed particle.
-  std::vector<std::optional<SurfaceLocation>> points() const;
-  std::vector<SurfaceLocation> locations() const;  // fixed ones: their start
+  // In the caller's order.
+  std::vector<SurfaceLocation> points() const;
+  std::vector<SurfaceLocation> locations() const;
 
   const std::vector<Particle>& particles() const { return particles_; }
   void restore(const std::vector<Particle>& particles) {
@@ -74,7 +70,6 @@ class PackingRelaxation {
   SurfaceWalk walk_;
   std::vector<std::uint32_t> order_;  // held particle k is the caller's particle order_[k]
   std::vector<Particle> particles_;
-  std::vector<SurfaceLocation> start_;  // per caller's particle, for fixed ones
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
   double reach_ = 0;  // of the pairs
   double moved_ = 0;  // the farthest any particle is from where it was when the pairs were found

@@ -10,7 +10,6 @@
 // The pushes and the growing radius are particles/packing_relaxation's:
 // straight-line distances between particles that face the same way.
 #include <cstddef>
-#include <optional>
 #include <vector>
 
 #include "mesh/surface_location.hpp"
@@ -21,8 +20,7 @@ namespace meshparticles {
 
 // A state the relaxation passed: the most spread one within a cover limit.
 struct RelaxationCandidate {
-  // None for a particle on a vertex in no triangle, which stays where it is.
-  std::vector<std::optional<SurfaceLocation>> points;
+  std::vector<SurfaceLocation> points;
   double spacing = 0;      // the smallest straight-line spacing
   double cover = 0;        // straight_cover, scaled as at the start (relax_spacing)
   std::size_t round = 0;   // 0: the start (then `points` are its vertices)

@@ -101,9 +101,7 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
   const SurfaceWalk walk(surface);
   std::vector<SurfaceLocation> from;
   for (const VertexId v : result.outcome.positions) {
-    const std::optional<SurfaceLocation> location = walk.at_vertex(v);
-    if (!location) return;  // a particle in no triangle: none moves
-    from.push_back(*location);
+    from.push_back(walk.at_vertex(v));
   }
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadMinGain * d_hex, kSpreadStallGain * d_hex,
@@ -168,16 +166,8 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   for (std::size_t k = 0; k < relaxation.candidates.size() && relaxation.kept == relaxation.candidates.size(); ++k) {
     const RelaxationCandidate& candidate = relaxation.candidates[k];
     if (candidate.round == 0 || (k > 0 && candidate.round == relaxation.candidates[k - 1].round)) continue;
-    std::vector<SurfaceLocation> moving;
-    std::vector<std::size_t> movers;
-    for (std::size_t i = 0; i < candidate.points.size(); ++i) {
-      if (!candidate.points[i]) continue;
-      moving.push_back(*candidate.points[i]);
-      movers.push_back(i);
-    }
-    InsertedPoints inserted = insert_points(*swept, mesh, moving);
-    std::vector<VertexId> positions = result.outcome.positions;
-    for (std::size_t m = 0; m < movers.size(); ++m) positions[movers[m]] = inserted.vertices[m];
+    InsertedPoints inserted = insert_points(*swept, mesh, candidate.points);
+    std::vector<VertexId> positions = std::move(inserted.vertices);
     std::vector<float> to_nearest = distance_to_nearest_particle(inserted.refined.mesh, method, positions);
     if (largest_finite(to_nearest) > cover_limit) {
       relaxation.passed_over_for_cover = true;

@@ -1,7 +1,8 @@
 #pragma once
-// Where each particle of a run lies on the input surface, as the output
-// files give it: its point, the nearest input vertex, and a triangle of the
-// input with barycentric weights - whether the run moved particles on the
+// Where each particle of a run lies on the input surface: as a point of the
+// input mesh (a triangle of it and weights), and as the output files give
+// it (its point, the nearest input vertex, and the triangle's corners by
+// their file ids with the weights) - whether the run moved particles on the
 // input's vertices (paper) or on a refined copy of the surface (spread).
 #include <vector>
 
@@ -16,6 +17,9 @@ struct ParticleLocation {
   VertexId input_vertex = 0;  // the nearest vertex of the input (a paper run's own), its file id
   InputLocation on_input;     // at = the weighted sum of its corners, up to rounding
 };
+
+// Per particle, in order: its place on `input` (a triangle of `input`).
+std::vector<SurfaceLocation> particles_on_input(const SurfaceMesh& input, const RunResult& result);
 
 std::vector<ParticleLocation> particle_locations(const SurfaceMesh& input, const RunResult& result);
 
