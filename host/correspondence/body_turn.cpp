@@ -18,6 +18,10 @@ using DirectionTree = MatrixRowTree<PointSet>;
 // Directions at which bodies' features are compared, and rounds of choosing turns.
 constexpr Eigen::Index kProfileDirections = 2000;
 constexpr std::size_t kBodyTurnRounds = 5;
+// A shape leaves the turn it has only for one whose features agree this
+// much better with the others': where two agree about as well (a shape
+// with faint features), its fit onto the template decides.
+constexpr double kClearlyBetter = 1.1;
 
 // For each cube rotation T, each grid direction's nearest grid direction after T.
 std::vector<std::vector<Eigen::Index>> turned_indices(const PointSet& grid) {
@@ -150,7 +154,8 @@ void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, Sh
       agreements[k] = turn_agreements(profiles[k], others(k), grid);
       if (k == 0) continue;  // the template's turn is the common frame's
       const std::size_t best = std::size_t(std::max_element(agreements[k].begin(), agreements[k].end()) - agreements[k].begin());
-      if (best == chosen[k]) continue;
+      const double held = agreements[k][chosen[k]];
+      if (best == chosen[k] || (held > 0 && agreements[k][best] < kClearlyBetter * held)) continue;
       chosen[k] = best;
       placed[k] = turned_profile(profiles[k], grid, best);
       changed = true;
