@@ -167,6 +167,7 @@ void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, Sh
     MeshAlignment& alignment = alignments[k];
     Similarity& pose = alignment.to_common;
     const std::vector<double>& agreement = agreements[k];
+    alignment.from_principal_axes = true;  // its body's
     pose.rotation = reference->axes.transpose() * turns[chosen[k]] * bodies[k]->axes;
     pose.translation = reference->centre - pose.scale * (pose.rotation * bodies[k]->centre);
     // Its body's radii, in the common frame, along the template's axes.
