@@ -6,7 +6,6 @@
 #include <numbers>
 
 #include "common/parallel_for.hpp"
-
 #include "mesh/point_cloud_tree.hpp"
 
 namespace meshparticles {
@@ -117,12 +116,13 @@ void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, Sh
     bodies[k] = ellipsoid_body(k == 0 ? template_points : vertices);
     if (!bodies[k]) return;
     std::size_t turn = 0;
-    const auto angle = [&](std::size_t t) {
+    // How far turn t's pose lies from the fitted one (3 less the trace: 0 for the same pose).
+    const auto apart = [&](std::size_t t) {
       const Eigen::Matrix3d candidate = reference->axes.transpose() * turns[t] * bodies[k]->axes;
-      return std::abs((candidate.transpose() * alignments[k].to_common.rotation).trace() - 3);
+      return 3 - (candidate.transpose() * alignments[k].to_common.rotation).trace();
     };
     for (std::size_t t = 1; t < turns.size(); ++t) {
-      if (angle(t) < angle(turn)) turn = t;
+      if (apart(t) < apart(turn)) turn = t;
     }
     const Eigen::VectorXd profile = feature_profile(*bodies[k], k == 0 ? template_points : vertices, grid);
     message[k].push_back(double(turn));
