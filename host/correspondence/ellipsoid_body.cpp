@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "common/median.hpp"
+
 namespace meshparticles {
 
 namespace {
@@ -13,12 +15,6 @@ constexpr int kRounds = 10;
 constexpr double kKeptSpread = 3;     // vertices within this many robust deviations stay in the fit
 constexpr double kMostlyOn = 0.01;    // the median distance off the quadric, over the vertices' rms radius
 constexpr Eigen::Index kMaxPoints = 4000;
-
-double median(std::vector<double> values) {
-  const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 }  // namespace
 
