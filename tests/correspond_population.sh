@@ -27,8 +27,9 @@ echo "batch: median $batch_median, 90th percentile $batch_p90"
 
 # The radii family: radii that swap order from shape to shape, and bumps
 # and knobs of their own heights (seed 1: a rigid fit's criterion turned 5 of
-# its 6 shapes 74 to 174 degrees, median spread 2.41). No shape may lie
-# turned as a whole from the others; the spread is not yet the issue's.
+# its 6 shapes 74 to 174 degrees, median spread 2.41; an affine one with
+# the medoid, 44 degrees at most and 0.56; the bodies' turns, 13 and 0.23).
+# No shape may lie turned as a whole from the others.
 "$bin" generate --population 6 --family radii --vertices 1200 --seed 1 --out-dir "$work/radii" 2>/dev/null
 "$bin" correspond "$work/radii" -n 64 --samples 20 -q --out "$work/radii_correspond" >/dev/null
 /usr/bin/python3 "$scripts/correspondence_error.py" "$work/radii/population.json" "$work"/radii_correspond/shapes/*.particles \
@@ -36,9 +37,9 @@ echo "batch: median $batch_median, 90th percentile $batch_p90"
 /usr/bin/python3 - "$work/radii_score.json" <<'CHECK' || fail "the radii family: a shape lies turned, or particle i spreads far"
 import json, sys
 score = json.load(open(sys.argv[1]))
-turned = [shape for shape in score["per_shape"] if shape["turn_degrees"] > 60]
+turned = [shape for shape in score["per_shape"] if shape["turn_degrees"] > 20]
 for shape in turned:
     print(f"{shape['file']}: turned {shape['turn_degrees']:.0f} degrees from the others")
-sys.exit(bool(turned) or score["median"] > 1.0)
+sys.exit(bool(turned) or score["median"] > 0.35)
 CHECK
 echo "ok"

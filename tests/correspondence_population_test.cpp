@@ -16,6 +16,7 @@
 #include <set>
 #include <vector>
 
+#include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/mesh_alignment.hpp"
 #include "correspondence/population_correspondence.hpp"
 #include "correspondence/template_deformation.hpp"
@@ -135,6 +136,37 @@ TEST(TemplateDeformation, LeavesATemplateOnItselfWhereItIs) {
 // The medoid is the shape nearest the others, whatever their order: of
 // three spheres scaled 0.9, 1 and 1.2, the middle one; and a shape's
 // distance to the population leaves itself out.
+// The robust quadric finds a radii shape's own axes and radii through its
+// bump and knob (the moments' axes a bump tilts by degrees); a torus has no body.
+TEST(EllipsoidBody, FindsTheAxesAndRadiiUnderTheFeatures) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const EllipsoidVariant shape = generate_ellipsoid_variant(seed, 900, EllipsoidFamily::radii);
+    const std::optional<EllipsoidBody> body = ellipsoid_body(vertex_points(shape.mesh));
+    ASSERT_TRUE(body) << seed;
+    const std::array<double, 3> radii{shape.axes.x, shape.axes.y, shape.axes.z};
+    const auto entry = [&](int row, int column) {
+      const Vec3& r = shape.rotation[std::size_t(row)];
+      return column == 0 ? r.x : column == 1 ? r.y : r.z;
+    };
+    for (int k = 0; k < 3; ++k) {
+      // The true axis this one lies along (a column of the pose's rotation), and its radius.
+      double best = 0;
+      int along = 0;
+      for (int j = 0; j < 3; ++j) {
+        const Eigen::Vector3d axis(entry(0, j), entry(1, j), entry(2, j));
+        const double cosine = std::abs(body->axes.row(k).dot(axis));
+        if (cosine > best) {
+          best = cosine;
+          along = j;
+        }
+      }
+      EXPECT_GT(best, std::cos(std::numbers::pi / 180)) << seed << " axis " << k;
+      EXPECT_NEAR(body->radii(k) / shape.scale, radii[std::size_t(along)], 0.02) << seed << " axis " << k;
+    }
+  }
+  EXPECT_FALSE(ellipsoid_body(vertex_points(generate_mesh("torus"))));
+}
+
 TEST(PopulationAlignment, TheMedoidIsTheShapeNearestTheOthers) {
   const PointSet sphere = alignment_points(generate_mesh("sphere"));
   const std::vector<PointSet> shapes{1.2 * sphere, 0.9 * sphere, 1.0 * sphere};

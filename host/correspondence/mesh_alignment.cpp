@@ -8,6 +8,7 @@
 #include <numbers>
 #include <utility>
 
+#include "correspondence/body_turn.hpp"
 #include "mesh/point_cloud_tree.hpp"
 
 namespace meshparticles {
@@ -25,25 +26,6 @@ constexpr double kGivenPoseKept = 1.02;
 constexpr std::size_t kTrialIterations = 8;
 // Trials that end this far from the chosen pose are another pose.
 constexpr double kOtherPoseDegrees = 30;
-
-// The 24 turns that take the coordinate axes onto themselves (the cube's
-// rotations): every signed permutation of determinant +1, the identity's
-// order first.
-std::vector<Eigen::Matrix3d> cube_rotations() {
-  std::vector<Eigen::Matrix3d> turns;
-  std::array<int, 3> order{0, 1, 2};
-  do {
-    for (const Eigen::Vector3d& sign : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, -1, -1),
-                                        Eigen::Vector3d(-1, 1, -1), Eigen::Vector3d(-1, -1, 1),
-                                        Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(-1, 1, 1),
-                                        Eigen::Vector3d(1, -1, 1), Eigen::Vector3d(1, 1, -1)}) {
-      Eigen::Matrix3d turn = Eigen::Matrix3d::Zero();
-      for (int k = 0; k < 3; ++k) turn(k, order[std::size_t(k)]) = sign(k);
-      if (turn.determinant() > 0) turns.push_back(turn);
-    }
-  } while (std::next_permutation(order.begin(), order.end()));
-  return turns;
-}
 
 // The angle of the turn from `a` to `b`, in degrees.
 double turn_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {

@@ -30,6 +30,12 @@ Similarity canonical_frame(const SurfaceMesh& mesh);
 
 struct MeshAlignment {
   Similarity to_common;  // the mesh's coordinates -> the common (template's canonical) frame
+  // In the common frame, after to_common: x -> stretch x + shift, which lays
+  // an ellipsoid body's radii onto the template's (choose_body_turns); the
+  // identity for other shapes. The template is deformed onto the shape so
+  // stretched, and its particles carried back.
+  Eigen::Matrix3d stretch = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
   // The root mean square distance from its vertices to the template's
   // nearest, in the common frame (unit area): how well it fits.
   double rms = 0;

@@ -13,6 +13,8 @@
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
 #include "common/user_error.hpp"
+#include "correspondence/body_turn.hpp"
+#include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
@@ -73,14 +75,19 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   shape.topology = mesh_topology(mesh);
   shape.alignment = alignment;
   const Similarity& to_common = shape.alignment.to_common;
-  const PointSet deformed = deform_template(template_mesh, template_points, to_common.apply(vertex_points(mesh)));
+  const Eigen::Matrix3d& stretch = shape.alignment.stretch;
+  const PointSet common = (to_common.apply(vertex_points(mesh)) * stretch.transpose()).rowwise() +
+                          shape.alignment.shift.transpose();
+  const PointSet deformed = deform_template(template_mesh, template_points, common);
+  const Eigen::Matrix3d unstretch = stretch.inverse();
   const NearestSurfacePoint nearest(mesh);
   carried.mesh = &mesh;
   for (const SurfaceLocation& particle : template_particles) {
     const Triangle& corners = template_mesh.triangles()[particle.triangle];
     Eigen::RowVector3d query = Eigen::RowVector3d::Zero();
     for (std::size_t k = 0; k < 3; ++k) query += particle.weights[k] * deformed.row(Eigen::Index(corners[k]));
-    const Eigen::RowVector3d own = (query - to_common.translation.transpose()) * to_common.rotation / to_common.scale;
+    const Eigen::RowVector3d unstretched = (query - shape.alignment.shift.transpose()) * unstretch.transpose();
+    const Eigen::RowVector3d own = (unstretched - to_common.translation.transpose()) * to_common.rotation / to_common.scale;
     // A loaded mesh has triangles (mesh_checks refuses one without area).
     carried.at.push_back(nearest.find({own(0), own(1), own(2)}).value());
   }
@@ -316,14 +323,23 @@ std::vector<MeshAlignment> align_population(const PopulationRequest& request,
       const double after = aligned.distance_to_population(again.to_common.apply(points), k);
       return after * kNearerPopulation < before ? std::optional(again) : std::nullopt;
     };
+    // Shapes with an ellipsoid body, where the template has one, take their
+    // turn from the population's features instead (choose_body_turns).
+    const bool body_template = ellipsoid_body(template_points).has_value();
+    const auto turned_by_body = [&](std::size_t k) {
+      return body_template && ellipsoid_body(vertex_points(*meshes[k])).has_value();
+    };
     const std::optional<MeshAlignment> template_again =
-        realign(0, template_mesh, align_to_template(template_mesh, template_points, template_frame));
+        body_template ? std::nullopt
+                      : realign(0, template_mesh, align_to_template(template_mesh, template_points, template_frame));
     if (template_again) template_points = template_again->to_common.apply(vertex_points(template_mesh));
     for_each_index(owned, share.threads(), [&](std::size_t k) {
+      if (k != 0 && turned_by_body(k)) return;
       const std::optional<MeshAlignment> again = k == 0 ? template_again : realign(k, *meshes[k], alignments[k]);
       if (again) alignments[k] = *again;
     });
   }
+  choose_body_turns(meshes, share, template_points, alignments);
   return alignments;
 }
 
