@@ -4,7 +4,7 @@
     scripts/correspondence_error.py POPULATION.json PARTICLES... [--json FILE]
 
 POPULATION.json is what `meshparticles generate --population N --family ellipsoid`
-(or radii) writes beside its meshes: each shape's parameters and pose; or a population of
+(or radii, or bent) writes beside its meshes: each shape's parameters and pose; or a population of
 real shapes with a known vertex map, scored by scripts/map_correspondence_error.py (which
 says how). PARTICLES are
 "x y z" rows in the shapes' own (world) coordinates, row i the same particle
@@ -12,7 +12,8 @@ on every shape: `correspond`'s shapes/NNN_STEM.particles, `batch`'s
 STEM/particles.particles, or any tool's file named after its mesh's stem.
 
 Each particle's place is mapped back to the shapes' common parameter, the
-unit sphere (u = normalize(diag(axes)^-1 x) of its unposed position x). The
+unit sphere (u = normalize(diag(axes)^-1 x) of its unposed position x; for the bent family, of x
+unbent off its arc first). The
 spread of particle i is the mean great-circle distance of its places from
 their mean direction, in particle spacings of the parameter sphere
 (sqrt(8 pi / (sqrt(3) n)), the hexagonal spacing of n points on it). 0 is a
@@ -49,12 +50,33 @@ def parameters(points, shape, population):
     rotation = np.array(shape["rotation"])
     axes = np.array(shape["axes"])
     unposed = (points - np.array(shape["translation"])) @ rotation / shape["scale"]
+    if population.get("family") == "bent":
+        return bent_parameters(unposed, shape, population)
     u = unposed / axes
     u /= np.linalg.norm(u, axis=1, keepdims=True)
     bump = np.exp(-(1 - u @ np.array(population["bump_direction"])) / population["bump_width"])
     knob = np.exp(-(1 - u @ np.array(population["knob_direction"])) / population["knob_width"])
     radius = 1 + shape["bump_height"] * bump + shape["knob_height"] * knob
     on_surface = radius[:, None] * axes * u
+    return u, np.linalg.norm(unposed - on_surface, axis=1)
+
+
+def bent_parameters(unposed, shape, population):
+    """The bent family's parameters: each unposed point unbent off its arc onto the straight body, whose
+    parameter is the ellipsoid families' (population.json's "parameter" and "surface" say how)."""
+    axes, bend_radius = np.array(shape["axes"]), shape["bend_radius"]
+    across = np.hypot(unposed[:, 0] - bend_radius, unposed[:, 2])
+    angle = np.arctan2(unposed[:, 2], bend_radius - unposed[:, 0])
+    straight = np.stack([bend_radius - across, unposed[:, 1], bend_radius * angle], axis=1)
+    u = straight / axes
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    radius = 1 - shape["waist_depth"] * np.exp(-(u[:, 2] / population["waist_width"]) ** 2)
+    for bump, height in zip(population["bumps"], shape["bump_heights"]):
+        radius += height * np.exp(-(1 - u @ np.array(bump["direction"])) / bump["width"])
+    on_straight = radius[:, None] * axes * u
+    turn = on_straight[:, 2] / bend_radius
+    on_surface = np.stack([bend_radius - (bend_radius - on_straight[:, 0]) * np.cos(turn), on_straight[:, 1],
+                           (bend_radius - on_straight[:, 0]) * np.sin(turn)], axis=1)
     return u, np.linalg.norm(unposed - on_surface, axis=1)
 
 
@@ -121,12 +143,13 @@ def main():
     print(f"spread of particle i across {result['shapes']} shapes, in {spacings} (n = {result['particles']}): "
           f"median {result['median']:.3f}, mean {result['mean']:.3f}, 90th percentile {result['p90']:.3f}; "
           f"largest distance off {off[0]} {off[1]:.2g}")
-    if "per_shape" in result:
-        worst = max(result["per_shape"], key=lambda shape: shape["mean"])
+    worst = max(result["per_shape"], key=lambda shape: shape["mean"])
+    line = (f"furthest shape from the others: {Path(worst['file']).name}, its particles {worst['mean']:.3f} spacings "
+            f"from particle i's mean place on average")
+    if "turn_degrees" in worst:
         turned = max(result["per_shape"], key=lambda shape: shape["turn_degrees"])
-        print(f"furthest shape from the others: {Path(worst['file']).name}, its particles {worst['mean']:.3f} spacings "
-              f"from particle i's mean place on average; most turned: {Path(turned['file']).name}, "
-              f"{turned['turn_degrees']:.0f} degrees")
+        line += f"; most turned: {Path(turned['file']).name}, {turned['turn_degrees']:.0f} degrees"
+    print(line)
     if args.json:
         args.json.write_text(json.dumps(result, indent=2) + "\n")
 

@@ -18,8 +18,9 @@ of particle i is the mean straight-line distance of its places on the reference 
 centroid, in particle spacings of the reference shape (sqrt(2 A / (sqrt(3) n)), A its area):
 0 is a perfect correspondence. Straight lines, not geodesics: parts that touch through the air
 (an arm against the body) read closer than they are. Prints the median, mean and 90th percentile
-over the particles, and the largest distance from a particle to its sample's vertex (the map's
-own resolution on the shape). Files are matched to shapes by stem, as correspondence_error.py
+over the particles, the largest distance from a particle to its sample's vertex (the map's
+own resolution on the shape), and per shape (in --json's per_shape) how far its particles lie from
+particle i's centroid on average. Files are matched to shapes by stem, as correspondence_error.py
 matches them. Uses Debian's python3-numpy.
 """
 import math
@@ -87,7 +88,9 @@ def spread(population, folder, files):
     places = stacked(places)
     n = places.shape[1]
     spacing = math.sqrt(2 * area(reference_points, reference_triangles) / (math.sqrt(3) * n))
-    per_particle = np.linalg.norm(places - places.mean(axis=0), axis=2).mean(axis=0) / spacing
+    offset = np.linalg.norm(places - places.mean(axis=0), axis=2) / spacing
+    per_particle = offset.mean(axis=0)
     return {"shapes": len(files), "particles": n, "median": float(np.median(per_particle)),
             "mean": float(per_particle.mean()), "p90": float(np.percentile(per_particle, 90)),
-            "largest_off_map": off_map, "spacing": spacing}
+            "largest_off_map": off_map, "spacing": spacing,
+            "per_shape": [{"file": str(file), "mean": float(offset[s].mean())} for s, file in enumerate(files)]}

@@ -2,16 +2,13 @@
 # scripts/real_population.sh REPO OUT_DIR [N] [SHAPES]
 #
 # What: correspond and the CPD baseline on real human scans with a known map.
-# REPO is a copy of llorz/SGA18_orientation_BCICP_dataset (Ren et al. 2018:
-# FAUST's registrations, each remeshed on its own to about 5,000 vertices,
-# with corres/NAME.vts: line k the vertex that is sample k on every shape),
-# a work tree or a bare git folder (as the session's fetch tool leaves it).
-# Its files are FAUST's (MPI's licence: research only, no redistribution):
-# they are copied under OUT_DIR and never into this repository.
-# Takes pose 0 of the first SHAPES (default 10) of FAUST's 10 people
-# (tr_reg_000, 010, ...), writes OUT_DIR/population_map.json (which
-# scripts/correspondence_error.py scores), runs `correspond -n N` (default 256)
-# and scripts/cpd_baseline.py on them and prints both rows.
+# REPO and SHAPES as scripts/faust_population.sh takes them (FAUST's
+# registrations, each remeshed on its own, from
+# llorz/SGA18_orientation_BCICP_dataset; never copied into this repository):
+# lays out pose 0 of the first SHAPES (default 10) people under OUT_DIR with
+# OUT_DIR/population_map.json (which scripts/correspondence_error.py scores),
+# runs `correspond -n N` (default 256) and scripts/cpd_baseline.py on them and
+# prints both rows.
 # Why: issue 48's real population, scored by its known map.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -20,18 +17,7 @@ repo=${1:?usage: real_population.sh REPO OUT_DIR [N] [SHAPES]}
 out=${2:?usage: real_population.sh REPO OUT_DIR [N] [SHAPES]}
 n=${3:-256} shapes=${4:-10}
 [ -x "$bin" ] || { echo "build first: scripts/setup.sh" >&2; exit 2; }
-source_file() {  # PATH in the dataset -> stdout, from a work tree or a git folder
-  if [ -e "$repo/$1" ]; then cat "$repo/$1"; else git --git-dir="$repo" show "HEAD:$1"; fi
-}
-rm -rf "$out" && mkdir -p "$out/shapes" "$out/maps"
-entries=()
-for ((person = 0; person < shapes; ++person)); do
-  name=$(printf 'tr_reg_%03d' $((10 * person)))
-  source_file "Dataset/FAUST/vtx_5k/$name.off" >"$out/shapes/$name.off"
-  source_file "Dataset/FAUST/vtx_5k/corres/$name.vts" >"$out/maps/$name.vts"
-  entries+=("{\"mesh\": \"shapes/$name.off\", \"map\": \"maps/$name.vts\"}")
-done
-(IFS=,; echo "{\"one_based\": true, \"reference\": 0, \"shapes\": [${entries[*]}]}") >"$out/population_map.json"
+"$here/scripts/faust_population.sh" "$repo" "$out" "$shapes"
 "$bin" correspond "$out/shapes" -n "$n" -q --out "$out/correspond" >/dev/null
 /usr/bin/python3 "$here/scripts/cpd_baseline.py" "$out/shapes" -n "$n" --out "$out/cpd" \
   --correspond "$out/correspond" --map-population "$out/population_map.json" --binary "$bin" --json "$out/figures.json"

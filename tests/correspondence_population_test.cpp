@@ -20,6 +20,7 @@
 #include "correspondence/mesh_alignment.hpp"
 #include "correspondence/population_correspondence.hpp"
 #include "correspondence/template_deformation.hpp"
+#include "mesh/bent_body.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "mesh/point_cloud_tree.hpp"
@@ -79,6 +80,37 @@ TEST(EllipsoidPopulation, TheRadiiFamilySwapsTheOrderOfItsRadii) {
     EXPECT_LT(worst, 1e-12) << seed;
   }
   EXPECT_TRUE(swapped) << "no shape of 8 has its radii in another order";
+}
+
+// The bent family: each vertex, unposed and unbent off its arc as
+// population.json says, lies on the straight body at its parameter; the
+// shape's knobs stay in their ranges.
+TEST(GeneratedPopulation, BentBodiesLieWhereTheirParametersSay) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const BentBody shape = generate_bent_body(seed, 800);
+    const double degrees = shape.bend_angle * 180 / std::numbers::pi;
+    EXPECT_GE(degrees, 30.0) << seed;
+    EXPECT_LE(degrees, 90.0) << seed;
+    EXPECT_NEAR(shape.bend_radius * shape.bend_angle, 2 * shape.axes.z, 1e-12) << seed;
+    EXPECT_GT(shape.axes.z, 2.4 * std::max(shape.axes.x, shape.axes.y)) << seed;
+    EXPECT_GE(shape.waist_depth, 0.1) << seed;
+    EXPECT_LE(shape.waist_depth, 0.35) << seed;
+    for (double height : shape.bump_heights) {
+      EXPECT_GE(height, 0.05) << seed;
+      EXPECT_LE(height, 0.2) << seed;
+    }
+    const double R = shape.bend_radius;
+    double worst = 0;
+    for (const Vec3& world : shape.mesh.positions()) {
+      const Vec3 x = (1 / shape.pose.scale) * unrotate(shape.pose.rotation, world + (-1.0) * shape.pose.translation);
+      const Vec3 s{R - std::hypot(x.x - R, x.z), x.y, R * std::atan2(x.z, R - x.x)};
+      const Vec3 u = normalized({s.x / shape.axes.x, s.y / shape.axes.y, s.z / shape.axes.z});
+      double r = 1 - shape.waist_depth * std::exp(-std::pow(u.z / kBentBodyWaistWidth, 2));
+      for (std::size_t k = 0; k < 3; ++k) r += shape.bump_heights[k] * bump_term({kBentBodyBumps[k].direction, kBentBodyBumps[k].width, 0}, u);
+      worst = std::max(worst, norm(r * Vec3{shape.axes.x * u.x, shape.axes.y * u.y, shape.axes.z * u.z} + (-1.0) * s));
+    }
+    EXPECT_LT(worst, 1e-9) << seed;
+  }
 }
 
 TEST(EllipsoidPopulation, ShapesAreMeshedEachOnItsOwnAndPosedAtRandom) {

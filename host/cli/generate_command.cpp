@@ -12,6 +12,7 @@
 #include "common/json_text.hpp"
 #include "common/random.hpp"
 #include "common/user_error.hpp"
+#include "mesh/bent_body.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
 
@@ -39,17 +40,65 @@ void write_generated(const SurfaceMesh& mesh, const std::filesystem::path& file)
 
 nlohmann::json vec_json(Vec3 v) { return {v.x, v.y, v.z}; }
 
+nlohmann::json pose_truth(const ShapePose& pose) {
+  return {{"rotation", {vec_json(pose.rotation[0]), vec_json(pose.rotation[1]), vec_json(pose.rotation[2])}},
+          {"scale", pose.scale},
+          {"translation", vec_json(pose.translation)}};
+}
+
 // population.json: what each ellipsoid shape is, so that a surface point's
 // parameter (its true correspondence) can be worked out from where it lies.
 nlohmann::json ellipsoid_truth(const std::string& file, const EllipsoidVariant& shape) {
-  return {{"mesh", file},
-          {"elongation", shape.elongation},
-          {"bump_height", shape.bump_height},
-          {"knob_height", shape.knob_height},
-          {"axes", vec_json(shape.axes)},
-          {"rotation", {vec_json(shape.rotation[0]), vec_json(shape.rotation[1]), vec_json(shape.rotation[2])}},
-          {"scale", shape.scale},
-          {"translation", vec_json(shape.translation)}};
+  nlohmann::json truth = {{"mesh", file},
+                          {"elongation", shape.elongation},
+                          {"bump_height", shape.bump_height},
+                          {"knob_height", shape.knob_height},
+                          {"axes", vec_json(shape.axes)}};
+  truth.update(pose_truth({shape.rotation, shape.scale, shape.translation}));
+  return truth;
+}
+
+// population.json of the bent family: what each shape is, as for the
+// ellipsoid families, and how to unbend a point to find its parameter.
+nlohmann::json bent_truth(const std::string& file, const BentBody& shape) {
+  nlohmann::json truth = {{"mesh", file},
+                          {"axes", vec_json(shape.axes)},
+                          {"waist_depth", shape.waist_depth},
+                          {"bump_heights", shape.bump_heights},
+                          {"bend_angle", shape.bend_angle},
+                          {"bend_radius", shape.bend_radius}};
+  truth.update(pose_truth(shape.pose));
+  return truth;
+}
+
+nlohmann::json ellipsoid_population(const nlohmann::json& shapes, std::uint64_t seed, const std::string& family) {
+  return {{"family", family},
+          {"parameter", "u = normalize(diag(axes)^-1 x), x = rotation^T (world - translation) / scale"},
+          {"surface", "x(u) = (1 + bump_height exp(-(1 - u.bump_direction) / bump_width) + knob_height exp(-(1 - "
+                      "u.knob_direction) / knob_width)) diag(axes) u, each shape with its axes, bump_height and "
+                      "knob_height"},
+          {"bump_direction", vec_json(kEllipsoidBump.direction)},
+          {"bump_width", kEllipsoidBump.width},
+          {"knob_direction", vec_json(kEllipsoidKnob.direction)},
+          {"knob_width", kEllipsoidKnob.width},
+          {"seed", seed},
+          {"shapes", shapes}};
+}
+
+nlohmann::json bent_population(const nlohmann::json& shapes, std::uint64_t seed) {
+  nlohmann::json bumps = nlohmann::json::array();
+  for (const BentBodyBump& bump : kBentBodyBumps) bumps.push_back({{"direction", vec_json(bump.direction)}, {"width", bump.width}});
+  return {{"family", "bent"},
+          {"parameter", "u = normalize(diag(axes)^-1 s), s = (R - |q|, q_y, R atan2(q_z, -q_x)), q = x - (R, 0, 0), "
+                        "R = bend_radius, x = rotation^T (world - translation) / scale"},
+          {"surface", "x(u) = bend(s(u)), s(u) = (1 - waist_depth exp(-(u_z / waist_width)^2) + sum_k bump_heights[k] "
+                      "exp(-(1 - u.bumps[k].direction) / bumps[k].width)) diag(axes) u, bend(s) = (R - (R - s_x) "
+                      "cos(s_z / R), s_y, (R - s_x) sin(s_z / R)), each shape with its axes, waist_depth, "
+                      "bump_heights and bend_radius (R = 2 axes_z / bend_angle)"},
+          {"waist_width", kBentBodyWaistWidth},
+          {"bumps", bumps},
+          {"seed", seed},
+          {"shapes", shapes}};
 }
 
 // Shape i from the i-th number of the seed's sequence: a population is fixed
@@ -64,6 +113,10 @@ void write_population(const GenerateOptions& options) {
     std::snprintf(name, sizeof name, "%s_%03zu.off", options.family.c_str(), i);
     if (options.family == "atrium") {
       write_generated(generate_atrium_variant(shape_seeds.next(), vertices), out / name);
+    } else if (options.family == "bent") {
+      const BentBody shape = generate_bent_body(shape_seeds.next(), vertices);
+      write_generated(shape.mesh, out / name);
+      shapes.push_back(bent_truth(name, shape));
     } else {
       const EllipsoidFamily family = options.family == "radii" ? EllipsoidFamily::radii : EllipsoidFamily::knob;
       const EllipsoidVariant shape = generate_ellipsoid_variant(shape_seeds.next(), vertices, family);
@@ -72,18 +125,8 @@ void write_population(const GenerateOptions& options) {
     }
   }
   if (options.family != "atrium") {
-    const nlohmann::json truth = {
-        {"family", options.family},
-        {"parameter", "u = normalize(diag(axes)^-1 x), x = rotation^T (world - translation) / scale"},
-        {"surface", "x(u) = (1 + bump_height exp(-(1 - u.bump_direction) / bump_width) + knob_height exp(-(1 - "
-                    "u.knob_direction) / knob_width)) diag(axes) u, each shape with its axes, bump_height and "
-                    "knob_height"},
-        {"bump_direction", vec_json(kEllipsoidBump.direction)},
-        {"bump_width", kEllipsoidBump.width},
-        {"knob_direction", vec_json(kEllipsoidKnob.direction)},
-        {"knob_width", kEllipsoidKnob.width},
-        {"seed", options.seed},
-        {"shapes", shapes}};
+    const nlohmann::json truth = options.family == "bent" ? bent_population(shapes, options.seed)
+                                                          : ellipsoid_population(shapes, options.seed, options.family);
     write_file_atomically(out / "population.json", [&](std::ostream& stream) { stream << json_text(truth, 2) << "\n"; });
     std::cerr << "wrote " << (out / "population.json").string() << " (each shape's parameters and pose)\n";
   }
@@ -125,12 +168,14 @@ void add_generate_command(CLI::App& app) {
   add_whole_number_option(*generate, "--population", options->population, kPopulationRange,
                           "Write a population of this many shapes instead, FAMILY_000.off, ..., from --seed");
   generate->add_option("--family", options->family,
-                       "With --population: atrium (each with its own size, body and bulges; for batch benchmarks) "
+                       "With --population: atrium (each with its own size, body and bulges; for batch benchmarks), "
                        "ellipsoid (two true modes, each meshed on its own and posed at random, with the true "
-                       "correspondence in population.json; for correspond) or radii (as ellipsoid, each radius "
+                       "correspondence in population.json; for correspond), radii (as ellipsoid, each radius "
                        "within 20% of 1.25, 1, 0.8 so their order swaps, and a knob of its own height, at times "
-                       "none: shapes whose principal axes cannot pose them)")
-      ->check(CLI::IsMember({"atrium", "ellipsoid", "radii"}))
+                       "none: shapes whose principal axes cannot pose them) or bent (elongated bodies bent 30 to "
+                       "90 degrees, with a waist and three small bumps, posed at random: each shape all but its "
+                       "own half turn, only the bumps telling the two poses apart)")
+      ->check(CLI::IsMember({"atrium", "ellipsoid", "radii", "bent"}))
       ->capture_default_str();
   add_whole_number_option(*generate, "--seed", options->seed, kSeedRange, "Seed of the --population");
   generate->callback([options] { run_generate(*options); });

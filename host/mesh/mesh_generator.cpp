@@ -445,11 +445,18 @@ EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vert
                      knob_height * std::exp(-(1 - dot(u, kEllipsoidKnob.direction)) / kEllipsoidKnob.width);
     return r * Vec3{axes.x * u.x, axes.y * u.y, axes.z * u.z};
   };
+  PosedShape shape = mesh_and_pose_shape(random, vertices, onto_shape, onto_shape);
+  return {std::move(shape.mesh), elongation, height, knob_height, axes, shape.pose.rotation, shape.pose.scale,
+          shape.pose.translation};
+}
+
+PosedShape mesh_and_pose_shape(SplitMix64& random, std::size_t vertices, const std::function<Vec3(Vec3)>& place,
+                               const std::function<Vec3(Vec3)>& project) {
   const int frequency = std::max(2, frequency_for(vertices) + int(random.below(3)) - 1);
   const std::array<Vec3, 3> meshing_turn = random_rotation(random);
   WorkMesh mesh = geodesic_sphere(frequency);
-  for (auto v : mesh.vertices()) mesh.point(v) = to_point(onto_shape(rotate(meshing_turn, to_vec(mesh.point(v)))));
-  improve(mesh, onto_shape);
+  for (auto v : mesh.vertices()) mesh.point(v) = to_point(place(rotate(meshing_turn, to_vec(mesh.point(v)))));
+  improve(mesh, project);
   const SurfaceMesh unposed = to_surface_mesh(mesh);
 
   const std::array<Vec3, 3> rotation = random_rotation(random);
@@ -457,8 +464,7 @@ EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vert
   const Vec3 translation{10 * random.uniform() - 5, 10 * random.uniform() - 5, 10 * random.uniform() - 5};
   std::vector<Vec3> posed;
   for (const Vec3& p : unposed.positions()) posed.push_back(scale * rotate(rotation, p) + translation);
-  return {SurfaceMesh(std::move(posed), unposed.triangles()), elongation, height, knob_height, axes, rotation, scale,
-          translation};
+  return {SurfaceMesh(std::move(posed), unposed.triangles()), {rotation, scale, translation}};
 }
 
 }  // namespace meshparticles

@@ -6,9 +6,11 @@
 // back onto the analytic surface, which leaves irregular valences.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "common/random.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace meshparticles {
@@ -55,6 +57,13 @@ struct EllipsoidBump {
 extern const EllipsoidBump kEllipsoidBump;
 extern const EllipsoidBump kEllipsoidKnob;
 
+// Where a shape of a population lies: world = scale rotation x + translation.
+struct ShapePose {
+  std::array<Vec3, 3> rotation{};  // rows
+  double scale = 1;
+  Vec3 translation{};
+};
+
 struct EllipsoidVariant {
   SurfaceMesh mesh;  // posed
   double elongation = 0, bump_height = 0, knob_height = 0;
@@ -73,5 +82,19 @@ enum class EllipsoidFamily { knob, radii };
 // About `vertices` vertices (the frequency nearest it, give or take one).
 EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vertices,
                                             EllipsoidFamily family = EllipsoidFamily::knob);
+
+// What every family of the test populations shares: a shape meshed on its
+// own and posed at random, each from `random` in turn. The geodesic sphere of
+// the frequency nearest `vertices` (give or take one, drawn), turned at
+// random, each of its unit vectors u placed at place(u), the mesh improved
+// with `project` (any point near the surface onto it, keeping its place's
+// parameter); then a pose drawn: a uniform rotation, a scale 0.5 to 2 (even
+// in its logarithm), a translation within 5 on each axis.
+struct PosedShape {
+  SurfaceMesh mesh;  // posed
+  ShapePose pose;
+};
+PosedShape mesh_and_pose_shape(SplitMix64& random, std::size_t vertices, const std::function<Vec3(Vec3)>& place,
+                               const std::function<Vec3(Vec3)>& project);
 
 }  // namespace meshparticles
