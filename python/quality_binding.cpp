@@ -51,7 +51,7 @@ std::string measure(const Mesh& mesh, const std::vector<py::array>& arrays, cons
   request.sigma = keywords.sigma;
   if (keywords.potential) request.potential = parse_potential(*keywords.potential);
   request.geodesics = geodesics_request(keywords);
-  request.distances = distances_request(keywords, request.geodesics, OptionSpelling::python);
+  request.distances = distances_request(keywords, request.geodesics);
   const CancelScope cancel(options.take_object("cancel"));
   options.refuse_unknown(arrays.size() == 2 ? "compare" : "quality");
   set_refinement(request, refine);

@@ -35,6 +35,4 @@ RunOptionValues take_run_options(KeywordOptions& options) {
   return values;
 }
 
-RunRequest run_request(const RunOptionValues& given) { return meshparticles::run_request(given, OptionSpelling::python); }
-
 }  // namespace meshparticles::python

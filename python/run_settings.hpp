@@ -17,7 +17,4 @@ RunOptionValues take_run_options(KeywordOptions& options, std::initializer_list<
 // mesh, --out and --strict (read_mesh takes strict=).
 RunOptionValues take_run_options(KeywordOptions& options);
 
-// run_request in the keywords' spelling.
-RunRequest run_request(const RunOptionValues& given);
-
 }  // namespace meshparticles::python

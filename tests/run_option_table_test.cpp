@@ -139,7 +139,7 @@ std::string described(const RunRequest& request) {
        << " " << optional(backend.tuning_file) << " " << (request.scheme ? scheme_name(*request.scheme) : "-") << " "
        << optional(request.colors) << " " << init_name(request.init) << " " << optional(request.start_vertex) << " "
        << request.seed << " " << potential_name(request.potential) << " " << optional(request.sigma) << " "
-       << store_kind_name(request.distances.kind) << " " << request.distances.cutoff << " "
+       << store_kind_name(request.distances.kind) << " " << optional(request.distances.cutoff) << " "
        << method_name(geodesics.method) << " " << optional(geodesics.cache_directory) << " " << geodesics.threads
        << " " << geodesics.quiet << " " << geodesics.device << " " << request.geodesic_given << " " << request.quiet;
   return text.str();
@@ -164,13 +164,13 @@ void give_other_value(const RunOptionSpec& option, RunOptionValues& values) {
 
 TEST(RunOptionTable, EveryRowReachesTheRequestByItsOwnField) {
   const RunOptionValues none;
-  const std::string defaults = described(run_request(none, OptionSpelling::command_line));
+  const std::string defaults = described(run_request(none));
   // Not given, each option is RunRequest's own default.
   const RunRequest request;
-  EXPECT_EQ(run_request(none, OptionSpelling::command_line).particles, request.particles);
-  EXPECT_EQ(run_request(none, OptionSpelling::command_line).max_iterations, request.max_iterations);
-  EXPECT_EQ(run_request(none, OptionSpelling::command_line).backend.name, request.backend.name);
-  EXPECT_FALSE(run_request(none, OptionSpelling::command_line).geodesic_given);
+  EXPECT_EQ(run_request(none).particles, request.particles);
+  EXPECT_EQ(run_request(none).max_iterations, request.max_iterations);
+  EXPECT_EQ(run_request(none).backend.name, request.backend.name);
+  EXPECT_FALSE(run_request(none).geodesic_given);
   std::vector<std::string> seen;
   for (const RunOptionSpec& option : run_option_table()) {
     RunOptionValues given;
@@ -179,7 +179,7 @@ TEST(RunOptionTable, EveryRowReachesTheRequestByItsOwnField) {
       EXPECT_TRUE(mesh_read_options(given).strict);
       continue;
     }
-    const std::string changed = described(run_request(given, OptionSpelling::command_line));
+    const std::string changed = described(run_request(given));
     EXPECT_NE(changed, defaults) << "--" << option.name << " given changes nothing in the request";
     EXPECT_EQ(std::find(seen.begin(), seen.end(), changed), seen.end())
         << "--" << option.name << " changes the request as an earlier row does: two rows, one field?";

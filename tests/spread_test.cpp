@@ -264,6 +264,30 @@ TEST(SpreadPlan, DefaultsAndImpliedMethod) {
   }
 }
 
+// The refusal both front ends used to make before planning, made by
+// plan_run for every caller and for either method.
+TEST(PlanRun, RefusesACutoffWithTheDenseTable) {
+  const SurfaceMesh mesh = committed("torus.off");
+  RunRequest request;
+  request.mesh_label = "torus.off";
+  request.particles = 8;
+  request.quiet = true;
+  request.distances.kind = StoreKind::dense;
+  EXPECT_NO_THROW(plan_run(mesh, request));
+  request.distances.cutoff = 6;
+  for (const Method method : {Method::spread, Method::paper}) {
+    request.method = method;
+    try {
+      plan_run(mesh, request);
+      FAIL() << "a cutoff with the dense table was planned";
+    } catch (const std::exception& error) {
+      EXPECT_STREQ(error.what(), "--cutoff applies to --distances local and auto");
+    }
+  }
+  request.distances.kind = StoreKind::local;
+  EXPECT_NO_THROW(plan_run(mesh, request));
+}
+
 TEST(SpreadRun, LandsEveryParticleOnTheInputSurfaceAndMeasuresOnTheWorkingMesh) {
   const SurfaceMesh mesh = committed("atrium.off");
   RunRequest request;

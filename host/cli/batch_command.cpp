@@ -26,7 +26,7 @@ void run_batch_command(const BatchOptions& options) {
   BatchRequest request;
   request.inputs = options.inputs;
   request.out = options.out;
-  request.run = run_request(options.run, OptionSpelling::command_line);
+  request.run = run_request(options.run);
   request.read = mesh_read_options(options.run);
   request.force = options.force;
   if (options.rank_timeout) request.rank_timeout_seconds = *options.rank_timeout;

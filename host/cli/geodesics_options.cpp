@@ -32,7 +32,7 @@ void add_distance_table_options(CLI::App& command, DistanceTableOptions& options
 }
 
 DistancesRequest DistanceStoreOptions::request(const GeodesicsRequest& geodesics) const {
-  return distances_request(geodesics, parse_store_kind(store), cutoff, OptionSpelling::command_line);
+  return {geodesics, parse_store_kind(store), cutoff};
 }
 
 void add_distance_store_options(CLI::App& command, DistanceStoreOptions& options) {

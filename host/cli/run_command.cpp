@@ -55,7 +55,7 @@ void print_summary(const RunResult& result, const nlohmann::json& report, const 
 }
 
 void run_run(RunCommandOptions options) {
-  RunRequest request = run_request(options.run, OptionSpelling::command_line);
+  RunRequest request = run_request(options.run);
   const SurfaceMesh mesh = load_mesh_or_default(options.mesh, request.quiet, mesh_read_options(options.run));
   request.mesh_label = options.mesh;
   const RunPlan plan = plan_run(mesh, request);

@@ -1,5 +1,6 @@
 #include "cli/run_option_values.hpp"
 
+#include "cli/distance_requests.hpp"
 #include "geodesics/geodesic_solver.hpp"
 #include "particles/particle_params.hpp"
 #include "tuning/tuning_store.hpp"
@@ -13,13 +14,12 @@ GeodesicsRequest geodesics_request(const RunOptionValues& given) {
                            given.cache_dir);
 }
 
-DistancesRequest distances_request(const RunOptionValues& given, const GeodesicsRequest& geodesics,
-                                   OptionSpelling spelling) {
+DistancesRequest distances_request(const RunOptionValues& given, const GeodesicsRequest& geodesics) {
   const StoreKind store = given.distances ? parse_store_kind(*given.distances) : DistancesRequest().kind;
-  return distances_request(geodesics, store, given.cutoff, spelling);
+  return {geodesics, store, given.cutoff};
 }
 
-RunRequest run_request(const RunOptionValues& given, OptionSpelling spelling) {
+RunRequest run_request(const RunOptionValues& given) {
   RunRequest request;
   if (given.particles) request.particles = *given.particles;
   if (given.method) request.method = parse_method_option(*given.method);
@@ -34,7 +34,7 @@ RunRequest run_request(const RunOptionValues& given, OptionSpelling spelling) {
   if (given.seed) request.seed = *given.seed;
   request.sigma = given.sigma;
   if (given.potential) request.potential = parse_potential(*given.potential);
-  request.distances = distances_request(given, geodesics_request(given), spelling);
+  request.distances = distances_request(given, geodesics_request(given));
   request.geodesic_given = given.geodesic.has_value();  // else the paper method's default may give a GPU the balls
   if (given.device) request.backend.device = *given.device;
   request.distances.geodesics.device = request.backend.device;

@@ -9,7 +9,6 @@
 #include <optional>
 #include <string>
 
-#include "cli/distance_requests.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -53,15 +52,14 @@ struct RunOptionValues {
 // directory when none is named.
 GeodesicsRequest geodesics_request(const RunOptionValues& given);
 
-// The store and cutoff (distances, cutoff) over `geodesics`; a refusal names
-// the options in `spelling`.
-DistancesRequest distances_request(const RunOptionValues& given, const GeodesicsRequest& geodesics,
-                                   OptionSpelling spelling);
+// The store and cutoff (distances, cutoff) over `geodesics`.
+DistancesRequest distances_request(const RunOptionValues& given, const GeodesicsRequest& geodesics);
 
 // The request, RunRequest's default for each option not given. Throws
 // UserError for a word it does not know (the command line has refused
-// those already, by its row's words).
-RunRequest run_request(const RunOptionValues& given, OptionSpelling spelling);
+// those already, by its row's words). What options given together cannot
+// do is refused by plan_run, for every caller.
+RunRequest run_request(const RunOptionValues& given);
 
 // How the mesh is read (strict).
 MeshReadOptions mesh_read_options(const RunOptionValues& given);
