@@ -25,8 +25,9 @@ std::string run_batch_json(const py::list& inputs, const py::object& out, const 
   BatchRequest request;
   for (const py::handle input : inputs) request.inputs.push_back(path_argument(input, "inputs").string());
   request.out = path_argument(out, "out");
-  request.run = take_run_request(options);
-  const auto n = options.take_whole("n", kParticleRange);
+  const RunOptionValues run = take_run_options(options);
+  request.run = run_request(run);
+  const auto n = run.particles;
   const auto spacing = options.take_positive("spacing");
   const auto per_area = options.take_positive("per_area");
   request.read.strict = options.take_flag("strict").value_or(false);
@@ -37,7 +38,7 @@ std::string run_batch_json(const py::list& inputs, const py::object& out, const 
     throw UserError("batch: give at most one of n, spacing and per_area");
   }
   request.quiet = request.run.quiet;
-  request.count.value = double(n.value_or(request.run.particles));
+  request.count.value = double(request.run.particles);
   if (spacing) request.count = {ParticleCount::Rule::spacing, *spacing};
   if (per_area) request.count = {ParticleCount::Rule::per_area, *per_area};
   {

@@ -45,11 +45,13 @@ std::string measure(const Mesh& mesh, const std::vector<py::array>& arrays, cons
   PointSetsRequest request;
   for (const py::array& array : arrays) request.points.push_back(points_of(array));
   request.names = arrays.size() == 2 ? std::vector<std::string>{"<a>", "<b>"} : std::vector<std::string>{"<points>"};
-  request.sigma = options.take_positive("sigma");
-  request.potential = parse_potential(options.take_word("potential").value_or(potential_name(kDefaultPotential)));
+  const RunOptionValues keywords = take_run_options(
+      options, {"sigma", "potential", "geodesic", "threads", "quiet", "cache-dir", "no-cache", "distances", "cutoff"});
   const std::string refine = options.take_word("refine").value_or("auto");
-  request.geodesics = take_geodesics_request(options);
-  request.distances = take_distances_request(options, request.geodesics);
+  request.sigma = keywords.sigma;
+  if (keywords.potential) request.potential = parse_potential(*keywords.potential);
+  request.geodesics = geodesics_request(keywords);
+  request.distances = distances_request(keywords, request.geodesics);
   const CancelScope cancel(options.take_object("cancel"));
   options.refuse_unknown(arrays.size() == 2 ? "compare" : "quality");
   set_refinement(request, refine);

@@ -6,7 +6,6 @@
 
 #include "argument_values.hpp"
 #include "bindings.hpp"
-#include "cli/run_option_table.hpp"
 #include "cancellation.hpp"
 #include "common/json_text.hpp"
 #include "mesh_object.hpp"
@@ -37,8 +36,7 @@ struct RunOutput {
 
 RunOutput run_mesh(const Mesh& mesh, const py::kwargs& given) {
   KeywordOptions options(given);
-  RunRequest request = take_run_request(options);
-  request.particles = options.take_whole("n", run_option("particles").range).value_or(request.particles);
+  RunRequest request = run_request(take_run_options(options));
   const CancelScope cancel(options.take_object("cancel"));
   options.refuse_unknown("run");
   request.mesh_label = mesh.label;

@@ -1,20 +1,20 @@
 #pragma once
-// The keyword options of run() and quality() turned into the pipeline's
-// requests, by the command line's names and defaults (cli/run_options.cpp,
-// cli/geodesics_options.cpp): `--rebuild-every` is rebuild_every=, and so on.
+// The keyword options of run(), batch(), quality() and compare() taken by
+// the rows of the run options' table (cli/run_option_table.hpp): its
+// keyword (`--rebuild-every` is rebuild_every=), checked as its row says,
+// into RunOptionValues, which the command line's own functions resolve.
+#include <initializer_list>
+
+#include "cli/run_option_values.hpp"
 #include "keyword_options.hpp"
-#include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles::python {
 
-// geodesic=, cache_dir=, no_cache=, threads=, quiet=.
-GeodesicsRequest take_geodesics_request(KeywordOptions& options);
+// The rows named (the command line's names) taken from `options`.
+RunOptionValues take_run_options(KeywordOptions& options, std::initializer_list<const char*> names);
 
-// distances=, cutoff=, over the geodesics request.
-DistancesRequest take_distances_request(KeywordOptions& options, const GeodesicsRequest& geodesics);
-
-// Every option of `meshparticles run` but the mesh, --out and --strict
-// (read_mesh takes strict=). Throws UserError for a word it does not know.
-RunRequest take_run_request(KeywordOptions& options);
+// Every row that has a keyword: every option of `meshparticles run` but the
+// mesh, --out and --strict (read_mesh takes strict=).
+RunOptionValues take_run_options(KeywordOptions& options);
 
 }  // namespace meshparticles::python

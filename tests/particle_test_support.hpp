@@ -14,6 +14,7 @@
 #include "mesh/io/mesh_reader.hpp"
 #include "particles/particle_params.hpp"
 #include "pipeline/distances.hpp"
+#include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles::testing {
 
@@ -83,6 +84,15 @@ inline const std::vector<KernelSize>& kernel_sizes() {
 inline std::string describe(const KernelSize& size) {
   return size.kind + " wg " + std::to_string(size.work_group) +
          (size.kind == "tiled" ? " tile " + std::to_string(size.tile) : "");
+}
+
+// A default run of `particles` on a committed mesh, quiet.
+inline RunRequest quiet_run_request(const std::string& name, std::size_t particles) {
+  RunRequest request;
+  request.mesh_label = name;
+  request.particles = particles;
+  request.quiet = true;
+  return request;
 }
 
 }  // namespace meshparticles::testing

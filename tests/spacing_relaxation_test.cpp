@@ -20,6 +20,7 @@
 #include "particles/initial_placement.hpp"
 #include "particles/spacing_relaxation.hpp"
 #include "pipeline/point_sets.hpp"
+#include "particle_test_support.hpp"
 #include "pipeline/run_pipeline.hpp"
 
 namespace meshparticles::testing {
@@ -45,15 +46,6 @@ Vec3 on_input_position(const SurfaceMesh& input, const SurfaceLocation& point) {
   const auto& x = input.positions();
   const Triangle& corners = input.triangles()[point.triangle];
   return at_weights(point.weights, x[corners[0]], x[corners[1]], x[corners[2]]);
-}
-
-// A default run of `particles` on a committed mesh, quiet.
-RunRequest spread_request(const std::string& name, std::size_t particles) {
-  RunRequest request;
-  request.mesh_label = name;
-  request.particles = particles;
-  request.quiet = true;
-  return request;
 }
 
 // A run as `request` asks, and beside it the sweeps alone (--relax-rounds
@@ -201,7 +193,7 @@ INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphe
 // cover within 1.1x the farthest start's.
 TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
   const SurfaceMesh mesh = committed("sphere.off");
-  const auto [relaxed, swept, start] = run_with_baselines(mesh, spread_request("sphere.off", 256));
+  const auto [relaxed, swept, start] = run_with_baselines(mesh, quiet_run_request("sphere.off", 256));
   EXPECT_EQ(swept.spread->relaxation.kept, swept.spread->relaxation.candidates.size());  // none: the sweeps' vertices
   ASSERT_LT(relaxed.spread->relaxation.kept, relaxed.spread->relaxation.candidates.size());
   const RelaxationCandidate& kept = relaxed.spread->relaxation.candidates[relaxed.spread->relaxation.kept];
@@ -219,7 +211,7 @@ TEST(SpreadRun, RelaxedParticlesAreEvenerThanTheSweepsAndKeepTheCover) {
 // 1.1x the farthest start's, on points that lie on the input surface.
 TEST(SpreadRun, EveningGoesOnWhereTheRelaxationIsNotKept) {
   const SurfaceMesh mesh = committed("sphere.off");
-  RunRequest request = spread_request("sphere.off", 256);
+  RunRequest request = quiet_run_request("sphere.off", 256);
   request.relax_rounds = 1;
   const auto [evened, swept, start] = run_with_baselines(mesh, request);
   EXPECT_FALSE(swept.spread->evening);  // --relax-rounds 0: the sweeps' vertices, as asked
@@ -238,7 +230,7 @@ TEST(SpreadRun, EveningGoesOnWhereTheRelaxationIsNotKept) {
 // covering radius past 1.1x it, measured on the mesh the run ends on.
 TEST(SpreadRun, EveningHoldsTheCoverLimit) {
   const SurfaceMesh mesh = committed("torus.off");
-  RunRequest request = spread_request("torus.off", 128);
+  RunRequest request = quiet_run_request("torus.off", 128);
   request.relax_rounds = 1;
   const auto [evened, swept, start] = run_with_baselines(mesh, request);
   ASSERT_TRUE(evened.spread->evening);
@@ -253,7 +245,7 @@ TEST(SpreadRun, EveningHoldsTheCoverLimit) {
 // run's own figures.
 TEST(QualityOfSurfacePoints, AnEveningRunIsMeasuredAsItMeasuredItself) {
   const SurfaceMesh mesh = committed("sphere.off");
-  RunRequest run = spread_request("sphere.off", 256);
+  RunRequest run = quiet_run_request("sphere.off", 256);
   run.relax_rounds = 1;
   const RunResult evened = run_pipeline(mesh, run);
   ASSERT_TRUE(evened.spread->evening);

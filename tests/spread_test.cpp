@@ -18,6 +18,7 @@
 #include "particles/farthest_point_optimization.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_voronoi.hpp"
+#include "particle_test_support.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
@@ -264,12 +265,30 @@ TEST(SpreadPlan, DefaultsAndImpliedMethod) {
   }
 }
 
+// The refusal both front ends used to make before planning, made by
+// plan_run for every caller and for either method.
+TEST(PlanRun, RefusesACutoffWithTheDenseTable) {
+  const SurfaceMesh mesh = committed("torus.off");
+  RunRequest request = quiet_run_request("torus.off", 8);
+  request.distances.kind = StoreKind::dense;
+  EXPECT_NO_THROW(plan_run(mesh, request));
+  request.distances.cutoff = 6;
+  for (const Method method : {Method::spread, Method::paper}) {
+    request.method = method;
+    try {
+      plan_run(mesh, request);
+      FAIL() << "a cutoff with the dense table was planned";
+    } catch (const std::exception& error) {
+      EXPECT_STREQ(error.what(), "--cutoff applies to --distances local and auto");
+    }
+  }
+  request.distances.kind = StoreKind::local;
+  EXPECT_NO_THROW(plan_run(mesh, request));
+}
+
 TEST(SpreadRun, LandsEveryParticleOnTheInputSurfaceAndMeasuresOnTheWorkingMesh) {
   const SurfaceMesh mesh = committed("atrium.off");
-  RunRequest request;
-  request.mesh_label = "atrium.off";
-  request.particles = 300;
-  request.quiet = true;
+  const RunRequest request = quiet_run_request("atrium.off", 300);
   const RunResult result = run_pipeline(mesh, request);
   ASSERT_TRUE(result.spread);
   EXPECT_EQ(result.distance_to_nearest.size(), result.spread->working->mesh.vertex_count());

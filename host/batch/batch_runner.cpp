@@ -5,6 +5,7 @@
 #include "batch/mesh_queue.hpp"
 #include "batch/node_share.hpp"
 #include "launch/launch_environment.hpp"
+#include "pipeline/distances.hpp"
 #ifdef MESHPARTICLES_WITH_MPI
 #include "batch/mpi_work_queue.hpp"
 #endif
@@ -24,6 +25,7 @@ int run_batch_alone(const BatchPlan& plan) {
 }  // namespace
 
 int run_batch(const BatchRequest& request) {
+  check_distances_request(request.run.distances);  // refused once, not for each mesh
   const MpiLaunch launch = mpi_launch_from_environment();
 #ifdef MESHPARTICLES_WITH_MPI
   if (launch.launched) return run_batch_across_ranks(request);

@@ -16,7 +16,7 @@ namespace {
 struct BatchOptions {
   std::vector<std::string> inputs;
   std::string out;
-  RunOptions run;
+  RunOptionValues run;
   std::optional<double> spacing, per_area;
   std::optional<double> rank_timeout;
   bool force = false;
@@ -26,11 +26,11 @@ void run_batch_command(const BatchOptions& options) {
   BatchRequest request;
   request.inputs = options.inputs;
   request.out = options.out;
-  request.run = options.run.resolved_request();
-  request.read = options.run.read;
+  request.run = run_request(options.run);
+  request.read = mesh_read_options(options.run);
   request.force = options.force;
   if (options.rank_timeout) request.rank_timeout_seconds = *options.rank_timeout;
-  request.quiet = options.run.table.quiet;
+  request.quiet = options.run.quiet;
   request.count.value = double(request.run.particles);
   if (options.spacing) request.count = {ParticleCount::Rule::spacing, *options.spacing};
   if (options.per_area) request.count = {ParticleCount::Rule::per_area, *options.per_area};

@@ -33,7 +33,6 @@ void add_distance_table_options(CLI::App& command, DistanceTableOptions& options
 struct DistanceStoreOptions {
   std::string store = "auto";
   std::optional<double> cutoff;
-  // Throws UserError for --cutoff with --distances dense.
   DistancesRequest request(const GeodesicsRequest& geodesics) const;
 };
 void add_distance_store_options(CLI::App& command, DistanceStoreOptions& options);

@@ -7,13 +7,6 @@
 
 namespace meshparticles {
 
-std::string spelled_option(const std::string& name, OptionSpelling spelling) {
-  if (spelling == OptionSpelling::command_line) return "--" + name;
-  std::string keyword = name;
-  for (char& c : keyword) c = c == '-' ? '_' : c;
-  return keyword;
-}
-
 GeodesicsRequest geodesics_request(GeodesicMethod method, unsigned threads, bool quiet, bool no_cache,
                                    const std::optional<std::filesystem::path>& cache_dir) {
   GeodesicsRequest request;
@@ -29,21 +22,6 @@ GeodesicsRequest geodesics_request(GeodesicMethod method, unsigned threads, bool
     request.cache_directory = default_cache_directory();
   } catch (const UserError& problem) {  // the cache only saves time: go on without it
     if (!quiet) std::cerr << "meshparticles: warning: " << problem.what() << "; not cached\n";
-  }
-  return request;
-}
-
-DistancesRequest distances_request(const GeodesicsRequest& geodesics, StoreKind store,
-                                   std::optional<double> cutoff, OptionSpelling spelling) {
-  DistancesRequest request;
-  request.geodesics = geodesics;
-  request.kind = store;
-  if (cutoff) {
-    if (request.kind == StoreKind::dense) {
-      throw UserError(spelled_option("cutoff", spelling) + " applies to " + spelled_option("distances", spelling) +
-                      " local and auto");
-    }
-    request.cutoff = *cutoff;
   }
   return request;
 }

@@ -6,6 +6,7 @@
 #include "cli/command_guide.hpp"
 #include "cli/commands.hpp"
 #include "cli/option_values.hpp"
+#include "cli/run_option_table.hpp"
 #include "common/text_format.hpp"
 #include "common/version.hpp"
 #include "launch/failure.hpp"
@@ -13,15 +14,11 @@
 namespace meshparticles {
 
 void add_device_option(CLI::App& command, std::string& device_request) {
-  command.add_option("--device", device_request,
-                     "OpenCL device: P:D or part of its name (default: $MESHPARTICLES_DEVICE, else the first GPU, "
-                     "else the first device)");
+  command.add_option("--device", device_request, run_option("device").help);
 }
 
 void add_strict_option(CLI::App& command, MeshReadOptions& read) {
-  command.add_flag("--strict", read.strict,
-                   "Refuse non-manifold edges and vertices and repeated triangles (default: keep them, with a "
-                   "warning)");
+  command.add_flag("--strict", read.strict, run_option("strict").help);
 }
 
 }  // namespace meshparticles

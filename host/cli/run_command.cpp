@@ -22,7 +22,7 @@ namespace {
 struct RunCommandOptions {
   std::string mesh;
   std::string out = "out";
-  RunOptions run;
+  RunOptionValues run;
 };
 
 void print_summary(const RunResult& result, const nlohmann::json& report, const std::string& out) {
@@ -55,8 +55,8 @@ void print_summary(const RunResult& result, const nlohmann::json& report, const 
 }
 
 void run_run(RunCommandOptions options) {
-  RunRequest request = options.run.resolved_request();
-  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, request.quiet, options.run.read);
+  RunRequest request = run_request(options.run);
+  const SurfaceMesh mesh = load_mesh_or_default(options.mesh, request.quiet, mesh_read_options(options.run));
   request.mesh_label = options.mesh;
   const RunPlan plan = plan_run(mesh, request);
   prepare_output_directory(options.out);  // before the long work, not after

@@ -43,6 +43,12 @@ std::string store_kind_name(StoreKind kind) {
   return "?";
 }
 
+void check_distances_request(const DistancesRequest& request) {
+  if (request.cutoff && request.kind == StoreKind::dense) {
+    throw UserError("--cutoff applies to --distances local and auto");
+  }
+}
+
 DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& request, std::size_t particles,
                              bool backend_needs_dense) {
   DistancesPlan plan;
@@ -59,17 +65,18 @@ DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& re
                      "; --distances local holds only balls around the particles");
     return plan;
   }
-  if (request.cutoff < 1) {
-    throw UserError("--cutoff " + format_number("%g", request.cutoff) +
+  const double cutoff = request.cutoff_or_default();
+  if (cutoff < 1) {
+    throw UserError("--cutoff " + format_number("%g", cutoff) +
                     " is under one hexagonal spacing: particles would not see their neighbours");
   }
-  plan.radius = request.cutoff * hexagonal_spacing(mesh.area(), particles);
+  plan.radius = cutoff * hexagonal_spacing(mesh.area(), particles);
   plan.ball_budget_bytes = usable / 2;
   const std::uint64_t needed = estimated_ball_bytes(mesh, plan.radius, particles);
   if (needed > plan.ball_budget_bytes) {
     throw MemoryRefusal("the local distances of " + std::to_string(particles) + " particles on " +
                         std::to_string(mesh.vertex_count()) + " vertices with --cutoff " +
-                        format_number("%g", request.cutoff) + " need about " + gibibytes(double(needed)) +
+                        format_number("%g", cutoff) + " need about " + gibibytes(double(needed)) +
                         " of balls at once but their budget is " + gibibytes(double(plan.ball_budget_bytes)) +
                         " (half of what may be used here, set by " + memory_room().set_by +
                         "): a smaller --cutoff or a larger -n makes the balls smaller");

@@ -6,6 +6,7 @@
 //   (geodesics/local_distances.hpp), for meshes whose table would not fit or
 //   would cost more than the run.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "geodesics/distance_cache.hpp"
@@ -34,8 +35,15 @@ inline constexpr std::size_t kAutoDenseVertices = 6000;
 struct DistancesRequest {
   GeodesicsRequest geodesics;  // solver, table cache, threads, quiet
   StoreKind kind = StoreKind::automatic;
-  double cutoff = kDefaultCutoff;  // local: in hexagonal spacings d_hex of the run's n
+  std::optional<double> cutoff;  // local: in hexagonal spacings d_hex of the run's n; absent: kDefaultCutoff
+
+  double cutoff_or_default() const { return cutoff.value_or(kDefaultCutoff); }
 };
+
+// Refuses what no store does as asked, whatever the mesh: a cutoff with the
+// dense table. plan_run and measure_point_sets call it first; a batch
+// before its first mesh.
+void check_distances_request(const DistancesRequest& request);
 
 // What a plan decided: the store, and for local its radius in mesh units and
 // the cache budget of its balls.

@@ -18,6 +18,7 @@ void set_refinement(PointSetsRequest& request, const std::string& refine) {
 }
 
 PointSetsMeasurement measure_point_sets(const SurfaceMesh& input, const PointSetsRequest& request) {
+  check_distances_request(request.distances);
   if (request.sigma) check_sigma_computable({request.potential, *request.sigma});
   // Points between the input's vertices are measured as vertices of a
   // refined mesh, inserted where they are.

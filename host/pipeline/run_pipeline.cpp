@@ -20,7 +20,8 @@ RunPlan plan_run_unnamed(const SurfaceMesh& mesh, const RunRequest& request) {
   plan.request = request;
   plan.geodesics = request.distances.geodesics;
   plan.geodesics.quiet = request.quiet;
-  plan.cutoff = request.distances.cutoff;
+  plan.cutoff = request.distances.cutoff_or_default();
+  check_distances_request(request.distances);
   if (request.particles == 0) throw UserError("-n must be at least 1");
   if (request.particles > mesh.vertex_count()) {
     throw UserError("-n " + std::to_string(request.particles) + " is more particles than the " +

@@ -21,7 +21,7 @@ namespace {
 DistancesRequest spread_distances(const DistancesRequest& request) {
   DistancesRequest spread = request;
   if (spread.kind == StoreKind::automatic) spread.kind = StoreKind::local;
-  if (spread.cutoff == kDefaultCutoff) spread.cutoff = kSpreadQualityCutoff;  // --cutoff absent (or 7)
+  if (spread.cutoff_or_default() == kDefaultCutoff) spread.cutoff = kSpreadQualityCutoff;  // --cutoff absent (or 7)
   return spread;
 }
 
@@ -36,7 +36,7 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   spread.working_mesh = plan_working_mesh(mesh, request.particles, spread.vertices_per_particle);
   // Planned on the input: the working mesh has its area, so the same radius.
   const DistancesRequest measured = spread_distances(request.distances);
-  plan.cutoff = measured.cutoff;
+  plan.cutoff = measured.cutoff_or_default();
   plan.distances = plan_distances(mesh, measured, request.particles, false);
 }
 
