@@ -14,6 +14,7 @@ PACKAGES=(
   clang-14 libclc-14 libclang-rt-14-dev
   libssl-dev openmpi-bin libopenmpi-dev libnanoflann-dev libexpat1-dev zlib1g-dev
   pybind11-dev python3-dev python3-venv libeigen3-dev
+  ccache
 )
 
 missing=()

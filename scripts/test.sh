@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Every test from a fresh Debian 12 machine: installs what is missing, builds
-# (warnings are errors), runs the whole suite with ctest on PoCL (the CPU
-# OpenCL device), then the fast tests again under AddressSanitizer and
-# UndefinedBehaviorSanitizer (scripts/sanitize.sh), the Python package
-# installed with pip into a fresh venv and its tests (scripts/test_python.sh),
-# two minutes of fuzzing of the mesh readers (scripts/fuzz.sh) and ten real
-# meshes from Debian's libcgal-demo (scripts/real_meshes.sh --subset).
+# (warnings are errors) the program, the tests and the Python module, runs
+# the whole suite with ctest on PoCL (the CPU OpenCL device), then the fast
+# tests again under AddressSanitizer and UndefinedBehaviorSanitizer, built
+# with clang (scripts/sanitize.sh), the Python package installed with pip
+# into a fresh venv and its tests (scripts/test_python.sh), two core-minutes
+# of fuzzing of the mesh readers (scripts/fuzz.sh) and ten real meshes from
+# Debian's libcgal-demo (scripts/real_meshes.sh --subset). docs/PERFORMANCE.md
+# ("The test command, step by step") has each step's time.
 #   scripts/test.sh            everything (what CI runs)
 #   scripts/test.sh ARGS       ctest ARGS only, e.g. -L fast or -R Monotone
 set -euo pipefail
@@ -16,7 +18,16 @@ step_done() {
   step_started=$SECONDS
 }
 # Warnings are errors here, so a change that adds one does not land.
-CMAKE_OPTIONS="-DMESHPARTICLES_STRICT=ON ${CMAKE_OPTIONS:-}"
+# One compile serves the program, the tests and the Python module: the build
+# makes the module too (its objects position-independent), and ccache gives
+# pip's build of the wheel, which compiles the same files with the same
+# compiler and flags (scripts/test_python.sh), those objects back instead of
+# compiling them again. The cache lives in build/ unless CCACHE_DIR says where.
+export CCACHE_DIR="${CCACHE_DIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/build/ccache}"
+# On a miss, ccache reads the compiler's own dependency list (-MD) rather
+# than running the preprocessor a second time.
+export CCACHE_DEPEND="${CCACHE_DEPEND:-true}"
+CMAKE_OPTIONS="-DMESHPARTICLES_STRICT=ON -DMESHPARTICLES_PYTHON=ON -DCMAKE_CXX_COMPILER_LAUNCHER=ccache ${CMAKE_OPTIONS:-}"
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 step_done "install and build"
 cd "$ROOT/build"

@@ -18,8 +18,16 @@ echo "test_python: creating a venv in $VENV" >&2
 "$PYTHON" -m venv "$VENV"
 "$VENV/bin/pip" install --quiet --upgrade pip >&2
 echo "test_python: installing $ROOT (the build's progress follows)" >&2
+# The wheel compiles as build/ did (its compiler, launcher and warnings), so
+# that where build/ went through ccache (scripts/test.sh), pip's build finds
+# every object there instead of compiling it again.
+same_compile=()
+for variable in CMAKE_CXX_COMPILER CMAKE_CXX_COMPILER_LAUNCHER MESHPARTICLES_STRICT; do
+  value=$(sed -n "s/^$variable:[A-Z]*=//p" "$ROOT/build/CMakeCache.txt" 2>/dev/null || true)
+  [ -n "$value" ] && same_compile+=(--config-settings=cmake.define.$variable="$value")
+done
 # The build's lines ([12/92] Building ...) on stderr, so a long first build is visibly moving.
-"$VENV/bin/pip" install --verbose --config-settings=build-dir="$ROOT/build/python-wheel" "$ROOT" 2>&1 |
+"$VENV/bin/pip" install --verbose --config-settings=build-dir="$ROOT/build/python-wheel" "${same_compile[@]}" "$ROOT" 2>&1 |
   sed -n 's/^ *\(\[ *[0-9]*\/[0-9]*\]\)/test_python: \1/p' >&2
 "$VENV/bin/pip" install --quiet pytest >&2
 echo "test_python: running tests/python" >&2

@@ -62,7 +62,13 @@ std::uint64_t mapped_bytes() {
 // maps more as it allocates: a process under it cannot be given an
 // address-space limit. These tests run in the normal build (and in CI's
 // first pass); the sanitizer pass leaves them out, saying why.
-#if defined(__SANITIZE_ADDRESS__)
+// GCC says so with __SANITIZE_ADDRESS__, clang with __has_feature.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MESHPARTICLES_TESTS_UNDER_ASAN
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(MESHPARTICLES_TESTS_UNDER_ASAN)
 constexpr bool kUnderAddressSanitizer = true;
 #else
 constexpr bool kUnderAddressSanitizer = false;

@@ -81,9 +81,9 @@ TEST(NonManifoldGeodesics, PathsBetweenTouchingConesPassThroughTheApex) {
 }
 
 // Three flat fins, each a grid of right triangles in a half-plane that
-// contains the common edge from (0,0,0) to (0,0,kFinLength) on the z-axis.
+// contains the common edge from (0,0,0) to (0,0,kFinRows * kSpacing) on the z-axis.
 constexpr int kFinColumns = 4, kFinRows = 8;
-constexpr double kSpacing = 0.25, kFinLength = kFinRows * kSpacing;
+constexpr double kSpacing = 0.25;
 VertexId fin_vertex(int fin, int column, int row) {
   // Column 0 is the shared edge, one vertex row per height.
   if (column == 0) return VertexId(row);

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "backends/local_device_field_backend.hpp"
+#include "common/half_float.hpp"
 #include "particles/field_units.hpp"
 
 namespace meshparticles {
@@ -151,9 +152,9 @@ std::vector<float> FieldBackend::weights() {
     read_blocking(weights_, 0, entries * sizeof(float), widened.data());
     return widened;
   }
-  std::vector<_Float16> stored(entries);
+  std::vector<cl_half> stored(entries);
   read_blocking(weights_, 0, entries * sizeof(cl_half), stored.data());
-  for (std::size_t i = 0; i < entries; ++i) widened[i] = float(stored[i]);
+  for (std::size_t i = 0; i < entries; ++i) widened[i] = float_from_half_bits(stored[i]);
   return widened;
 }
 

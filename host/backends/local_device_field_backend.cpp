@@ -65,7 +65,6 @@ LocalDeviceFieldBackend::LocalDeviceFieldBackend(const DeviceDescription& device
                                                  const BackendInputs& inputs, const LocalDistances& balls,
                                                  double pool_headroom, std::size_t upload_piece)
     : DeviceBackend(device, inputs.mesh, kernel, /*dense_table=*/false),
-      mesh_(inputs.mesh),
       balls_(balls),
       inv_two_sigma_sq_(float(inputs.energy.inv_two_sigma_sq())),
       rebuild_every_(inputs.rebuild_every),

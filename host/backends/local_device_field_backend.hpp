@@ -74,7 +74,6 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
                         std::size_t item_bytes);
   void set_row_args(cl::Kernel& kernel, cl_uint first);
 
-  const SurfaceMesh& mesh_;
   const LocalDistances& balls_;
   float inv_two_sigma_sq_;
   std::size_t rebuild_every_;

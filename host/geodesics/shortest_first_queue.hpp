@@ -91,9 +91,9 @@ class ShortestFirstQueue {
     distances_[v] = candidate;
     return true;
   }
-  // lower()'s first test alone, without a branch.
+  // lower()'s first test alone, without a branch (| on whole numbers, not ||).
   bool would_lower(VertexId v, double candidate) const {
-    return !(bool(accepted_[v]) | (candidate >= distances_[v]));
+    return (unsigned(accepted_[v] != 0) | unsigned(candidate >= distances_[v])) == 0;
   }
   // Queues v at its distance, or moves it up to it if queued already (a
   // distance only ever drops).

@@ -3,11 +3,13 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <numbers>
 #include <tuple>
+#include <utility>
 
 #include "common/random.hpp"
 #include "common/user_error.hpp"
@@ -57,13 +59,21 @@ WorkMesh geodesic_sphere(int frequency) {
     lattice.emplace(key, handle);
     return handle;
   };
+  // point_at adds the vertices it has not seen, so the order of the calls
+  // numbers them. They are made one statement each, last corner first (the
+  // order GCC evaluated them in as arguments, which the committed meshes
+  // keep): arguments' order is the compiler's choice, and clang's differs.
+  const auto add_triangle = [&](const int face[3], std::array<std::pair<int, int>, 3> at) {
+    const WorkMesh::VertexHandle c = point_at(face, at[2].first, at[2].second);
+    const WorkMesh::VertexHandle b = point_at(face, at[1].first, at[1].second);
+    const WorkMesh::VertexHandle a = point_at(face, at[0].first, at[0].second);
+    mesh.add_face(a, b, c);
+  };
   for (const auto& face : faces) {
     for (int i = 0; i < frequency; ++i) {
       for (int j = 0; i + j < frequency; ++j) {
-        mesh.add_face(point_at(face, i, j), point_at(face, i + 1, j), point_at(face, i, j + 1));
-        if (i + j + 2 <= frequency) {
-          mesh.add_face(point_at(face, i + 1, j), point_at(face, i + 1, j + 1), point_at(face, i, j + 1));
-        }
+        add_triangle(face, {{{i, j}, {i + 1, j}, {i, j + 1}}});
+        if (i + j + 2 <= frequency) add_triangle(face, {{{i + 1, j}, {i + 1, j + 1}, {i, j + 1}}});
       }
     }
   }

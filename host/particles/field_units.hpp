@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 
+#include "common/half_float.hpp"
 #include "common/user_error.hpp"
 #include "particles/particle_params.hpp"
 
@@ -34,7 +35,7 @@ inline float pair_weight_float(Potential potential, float d, float inv_two_sigma
 // The weight as the table stores it: float32, or rounded to the nearest half
 // (as vstore_half_rte does on the device).
 inline float stored_weight(WeightFormat format, float weight) {
-  return format == WeightFormat::half ? float(_Float16(weight)) : weight;
+  return format == WeightFormat::half ? rounded_to_half(weight) : weight;
 }
 
 // Truncated to whole units, as convert_long does.
