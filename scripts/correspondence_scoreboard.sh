@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/correspondence_scoreboard.sh OUT_DIR [N...]
 #
-# What: issue 48's measures of `meshparticles correspond` on every test
+# What: the correspondence measures of `meshparticles correspond` on every test
 # population with a known map, at each N (default 256 512 1024), in one table:
 #   - radii, seed 5 and seed 6; the ellipsoid family, seed 5; bent, seed 5
 #     (`generate --population 12 --family F --vertices 2000 --seed S`);
@@ -27,7 +27,7 @@
 # SCOREBOARD_POPULATIONS picks populations (default "radii5 radii6 ellipsoid5
 # bent5 faust"). Progress on stderr; the table on stdout and in
 # OUT_DIR/scoreboard.md, every figure in OUT_DIR/scoreboard.json.
-# Why: the issue's targets (spread median 0.3 and 90th percentile 0.6, no
+# Why: the targets of docs/CORRESPONDENCE.md (spread median 0.3 and 90th percentile 0.6, no
 # shape over 1 spacing off, rho 0.7, cover 1.15x, better than CPD) checked on
 # every population from one command.
 set -euo pipefail

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/faust_population.sh REPO OUT_DIR [SHAPES]
 #
-# What: issue 48's real population, laid out for correspond and scored by its
+# What: the real test population of docs/CORRESPONDENCE.md, laid out for correspond and scored by its
 # known map. REPO is a copy of llorz/SGA18_orientation_BCICP_dataset (Ren et
 # al. 2018: FAUST's registrations, each remeshed on its own to about 5,000
 # vertices, with corres/NAME.vts: line k the vertex that is sample k on every
