@@ -11,7 +11,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 label=${1:-fast}
 build="$ROOT/build-sanitize"
 # Clang where there is one (setup.sh installs clang-14 for the fuzz build):
-# it compiles the instrumented code in about two thirds of GCC's time, and
+# it compiles the instrumented code in about three quarters of GCC's time, and
 # its warnings, errors here too, are a second compiler's opinion of the code.
 CXX_FOR_SANITIZE="${CXX_FOR_SANITIZE:-$(command -v clang++-14 || command -v clang++ || command -v c++)}"
 launcher=()
