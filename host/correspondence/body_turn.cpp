@@ -1,7 +1,6 @@
 #include "correspondence/body_turn.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -22,48 +21,24 @@ constexpr std::size_t kBodyTurnRounds = 5;
 // with faint features), its fit onto the template decides.
 constexpr double kClearlyBetter = 1.1;
 
-// For each cube rotation T, each grid direction's nearest grid direction after T.
-std::vector<std::vector<Eigen::Index>> turned_indices(const PointSet& grid) {
-  const DirectionTree tree(grid);
-  std::vector<std::vector<Eigen::Index>> indices;
-  for (const Eigen::Matrix3d& turn : cube_rotations()) {
-    const PointSet turned = grid * turn.transpose();
-    std::vector<Eigen::Index>& nearest = indices.emplace_back(std::size_t(grid.rows()));
-    for (Eigen::Index g = 0; g < grid.rows(); ++g) {
-      nearest[std::size_t(g)] = Eigen::Index(tree.nearest(turned.row(g)).front());
-    }
-  }
-  return indices;
-}
-
 }  // namespace
 
-const std::vector<Eigen::Matrix3d>& cube_rotations() {
-  static const std::vector<Eigen::Matrix3d> turns = [] {
-    std::vector<Eigen::Matrix3d> found;
-    std::array<int, 3> order{0, 1, 2};
-    do {
-      for (const Eigen::Vector3d& sign : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, -1, -1),
-                                          Eigen::Vector3d(-1, 1, -1), Eigen::Vector3d(-1, -1, 1),
-                                          Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(-1, 1, 1),
-                                          Eigen::Vector3d(1, -1, 1), Eigen::Vector3d(1, 1, -1)}) {
-        Eigen::Matrix3d turn = Eigen::Matrix3d::Zero();
-        for (int k = 0; k < 3; ++k) turn(k, order[std::size_t(k)]) = sign(k);
-        if (turn.determinant() > 0) found.push_back(turn);
-      }
-    } while (std::next_permutation(order.begin(), order.end()));
-    return found;
-  }();
-  return turns;
-}
-
-PointSet sphere_directions(std::size_t count) {
-  PointSet grid(Eigen::Index(count), 3);
+ProfileGrid profile_grid(std::size_t count) {
+  ProfileGrid grid;
+  grid.directions.resize(Eigen::Index(count), 3);
   const double golden = std::numbers::pi * (3 - std::sqrt(5.0));
   for (std::size_t i = 0; i < count; ++i) {
     const double z = 1 - (2 * double(i) + 1) / double(count);
     const double r = std::sqrt(std::max(0.0, 1 - z * z));
-    grid.row(Eigen::Index(i)) << r * std::cos(golden * double(i)), r * std::sin(golden * double(i)), z;
+    grid.directions.row(Eigen::Index(i)) << r * std::cos(golden * double(i)), r * std::sin(golden * double(i)), z;
+  }
+  const DirectionTree tree(grid.directions);
+  for (const Eigen::Matrix3d& turn : cube_rotations()) {
+    const PointSet turned = grid.directions * turn.transpose();
+    std::vector<Eigen::Index>& nearest = grid.turned.emplace_back(count);
+    for (Eigen::Index g = 0; g < turned.rows(); ++g) {
+      nearest[std::size_t(g)] = Eigen::Index(tree.nearest(turned.row(g)).front());
+    }
   }
   return grid;
 }
@@ -80,24 +55,25 @@ Eigen::VectorXd feature_profile(const EllipsoidBody& body, const PointSet& point
 }
 
 std::vector<double> turn_agreements(const Eigen::VectorXd& profile, const Eigen::VectorXd& reference,
-                                    const PointSet& grid) {
+                                    const ProfileGrid& grid) {
+  const Eigen::Index count = grid.directions.rows();
   std::vector<double> agreements;
-  for (const std::vector<Eigen::Index>& nearest : turned_indices(grid)) {
+  for (const std::vector<Eigen::Index>& nearest : grid.turned) {
     double sum = 0;
-    for (Eigen::Index g = 0; g < grid.rows(); ++g) sum += profile(g) * reference(nearest[std::size_t(g)]);
-    agreements.push_back(sum / double(grid.rows()));
+    for (Eigen::Index g = 0; g < count; ++g) sum += profile(g) * reference(nearest[std::size_t(g)]);
+    agreements.push_back(sum / double(count));
   }
   return agreements;
 }
 
-Eigen::VectorXd turned_profile(const Eigen::VectorXd& profile, const PointSet& grid, std::size_t turn) {
+Eigen::VectorXd turned_profile(const Eigen::VectorXd& profile, const ProfileGrid& grid, std::size_t turn) {
   // The reference's direction h holds the profile's value at T^-1 h.
   const std::vector<Eigen::Matrix3d>& turns = cube_rotations();
   std::size_t inverse = 0;
   while (inverse + 1 < turns.size() && !(turns[inverse] * turns[turn]).isIdentity(1e-12)) ++inverse;
-  const std::vector<Eigen::Index> nearest = turned_indices(grid)[inverse];
-  Eigen::VectorXd turned(grid.rows());
-  for (Eigen::Index h = 0; h < grid.rows(); ++h) turned(h) = profile(nearest[std::size_t(h)]);
+  const std::vector<Eigen::Index>& nearest = grid.turned[inverse];
+  Eigen::VectorXd turned(grid.directions.rows());
+  for (Eigen::Index h = 0; h < turned.size(); ++h) turned(h) = profile(nearest[std::size_t(h)]);
   return turned;
 }
 
@@ -107,13 +83,14 @@ void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, Sh
   if (!reference) return;
   const std::size_t count = meshes.size();
   const std::vector<std::size_t> owned = share.owned();
-  const PointSet grid = sphere_directions(kProfileDirections);
+  const ProfileGrid grid = profile_grid(kProfileDirections);
+  const Eigen::Index directions = grid.directions.rows();
   const std::vector<Eigen::Matrix3d>& turns = cube_rotations();
   std::vector<std::optional<EllipsoidBody>> bodies(count);
   std::vector<std::vector<double>> message(count);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
-    const PointSet vertices = vertex_points(*meshes[k]);
-    bodies[k] = ellipsoid_body(k == 0 ? template_points : vertices);
+    const PointSet vertices = k == 0 ? template_points : vertex_points(*meshes[k]);
+    bodies[k] = k == 0 ? reference : ellipsoid_body(vertices);
     if (!bodies[k]) return;
     std::size_t turn = 0;
     // How far turn t's pose lies from the fitted one (3 less the trace: 0 for the same pose).
@@ -124,7 +101,7 @@ void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, Sh
     for (std::size_t t = 1; t < turns.size(); ++t) {
       if (apart(t) < apart(turn)) turn = t;
     }
-    const Eigen::VectorXd profile = feature_profile(*bodies[k], k == 0 ? template_points : vertices, grid);
+    const Eigen::VectorXd profile = feature_profile(*bodies[k], vertices, grid.directions);
     message[k].push_back(double(turn));
     message[k].insert(message[k].end(), profile.begin(), profile.end());
   });
@@ -136,13 +113,13 @@ void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, Sh
     if (message[k].empty()) continue;
     with_body.push_back(k);
     chosen[k] = std::size_t(message[k].front());
-    profiles[k] = Eigen::Map<const Eigen::VectorXd>(message[k].data() + 1, grid.rows());
+    profiles[k] = Eigen::Map<const Eigen::VectorXd>(message[k].data() + 1, directions);
     placed[k] = turned_profile(profiles[k], grid, chosen[k]);
   }
   if (with_body.size() < 3) return;
   std::vector<std::vector<double>> agreements(count);
   const auto others = [&](std::size_t k) {
-    Eigen::VectorXd sum = Eigen::VectorXd::Zero(grid.rows());
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(directions);
     for (const std::size_t j : with_body) {
       if (j != k) sum += placed[j];
     }

@@ -17,12 +17,14 @@
 
 namespace meshparticles {
 
-// The 24 turns that take the coordinate axes onto themselves: every signed
-// permutation of determinant +1, the identity's order first.
-const std::vector<Eigen::Matrix3d>& cube_rotations();
-
-// Directions spread evenly over the unit sphere (a Fibonacci lattice).
-PointSet sphere_directions(std::size_t count);
+// Directions spread evenly over the unit sphere (a Fibonacci lattice), and
+// for each cube rotation T (cube_rotations) and each direction g, the
+// direction nearest T g: made once for every profile compared on it.
+struct ProfileGrid {
+  PointSet directions;
+  std::vector<std::vector<Eigen::Index>> turned;  // [turn][direction]
+};
+ProfileGrid profile_grid(std::size_t count);
 
 // How far `points` stand off `body`'s unit sphere (its radius less 1) at
 // each of `grid`'s directions (in the body's frame): the nearest point's.
@@ -32,10 +34,10 @@ Eigen::VectorXd feature_profile(const EllipsoidBody& body, const PointSet& point
 // reference's frame) under each cube rotation T (the profile's direction
 // g lies at T g there): the grid mean of the product.
 std::vector<double> turn_agreements(const Eigen::VectorXd& profile, const Eigen::VectorXd& reference,
-                                    const PointSet& grid);
+                                    const ProfileGrid& grid);
 
 // `profile` seen in the reference's frame through cube rotation `turn`.
-Eigen::VectorXd turned_profile(const Eigen::VectorXd& profile, const PointSet& grid, std::size_t turn);
+Eigen::VectorXd turned_profile(const Eigen::VectorXd& profile, const ProfileGrid& grid, std::size_t turn);
 
 // Where the template (its vertices in the common frame: `template_points`)
 // is an ellipsoid body, each other shape with one (of at least 3) takes the

@@ -8,7 +8,6 @@
 #include <numbers>
 #include <utility>
 
-#include "correspondence/body_turn.hpp"
 #include "mesh/point_cloud_tree.hpp"
 
 namespace meshparticles {
@@ -127,6 +126,25 @@ double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSe
 }
 
 }  // namespace
+
+const std::vector<Eigen::Matrix3d>& cube_rotations() {
+  static const std::vector<Eigen::Matrix3d> turns = [] {
+    std::vector<Eigen::Matrix3d> found;
+    std::array<int, 3> order{0, 1, 2};
+    do {
+      for (const Eigen::Vector3d& sign : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, -1, -1),
+                                          Eigen::Vector3d(-1, 1, -1), Eigen::Vector3d(-1, -1, 1),
+                                          Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(-1, 1, 1),
+                                          Eigen::Vector3d(1, -1, 1), Eigen::Vector3d(1, 1, -1)}) {
+        Eigen::Matrix3d turn = Eigen::Matrix3d::Zero();
+        for (int k = 0; k < 3; ++k) turn(k, order[std::size_t(k)]) = sign(k);
+        if (turn.determinant() > 0) found.push_back(turn);
+      }
+    } while (std::next_permutation(order.begin(), order.end()));
+    return found;
+  }();
+  return turns;
+}
 
 PointSet alignment_points(const SurfaceMesh& mesh) { return fit_points(vertex_points(mesh)); }
 

@@ -25,6 +25,11 @@ namespace meshparticles {
 // A mesh's vertices as a PointSet.
 PointSet vertex_points(const SurfaceMesh& mesh);
 
+// The 24 turns that take the coordinate axes onto themselves (the cube's
+// rotations): every signed permutation of determinant +1, the identity's
+// order first. The ways one shape's principal axes can lie on another's.
+const std::vector<Eigen::Matrix3d>& cube_rotations();
+
 // Unit area, centroid at 0, principal axes along x, y, z (largest first).
 Similarity canonical_frame(const SurfaceMesh& mesh);
 
