@@ -23,6 +23,9 @@ constexpr Eigen::Index kMaxFitPoints = 4000;  // vertices fitted, evenly strided
 // given is the better guess.
 constexpr double kGivenPoseKept = 1.02;
 constexpr std::size_t kTrialIterations = 8;
+// Two shapes compared by fitted_shape_distance: the points and iterations of its fit.
+constexpr Eigen::Index kComparedFitPoints = 500;
+constexpr std::size_t kComparedFitIterations = 30;
 // Trials that end this far from the chosen pose are another pose.
 constexpr double kOtherPoseDegrees = 30;
 
@@ -40,7 +43,6 @@ PointSet fit_points(const PointSet& points) {
   return chosen;
 }
 
-using PointsTree = MatrixRowTree<PointSet>;
 
 // A closest-point fit's map (x -> linear x + translation), the rms distance
 // to the nearest points before its last step, and its iterations.
@@ -113,18 +115,6 @@ Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& linear) {
   return u * svd.matrixV().transpose();
 }
 
-// The mean squared distance from `a`'s points to `b`'s nearest.
-double one_way_squared(const PointSet& a, const PointSet& b, const PointsTree& b_tree) {
-  double squared = 0;
-  for (Eigen::Index i = 0; i < a.rows(); ++i) squared += (b.row(b_tree.nearest(a.row(i)).front()) - a.row(i)).squaredNorm();
-  return squared / double(std::max<Eigen::Index>(1, a.rows()));
-}
-
-// The symmetric rms distance between two aligned shapes' points.
-double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree) {
-  return std::sqrt(0.5 * (one_way_squared(a, b, b_tree) + one_way_squared(b, a, a_tree)));
-}
-
 }  // namespace
 
 const std::vector<Eigen::Matrix3d>& cube_rotations() {
@@ -144,6 +134,32 @@ const std::vector<Eigen::Matrix3d>& cube_rotations() {
     return found;
   }();
   return turns;
+}
+
+namespace {
+
+// The mean squared distance from `a`'s points to `b`'s nearest.
+double one_way_squared(const PointSet& a, const PointSet& b, const PointsTree& b_tree) {
+  double squared = 0;
+  for (Eigen::Index i = 0; i < a.rows(); ++i) squared += (b.row(b_tree.nearest(a.row(i)).front()) - a.row(i)).squaredNorm();
+  return squared / double(std::max<Eigen::Index>(1, a.rows()));
+}
+
+}  // namespace
+
+double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree) {
+  return std::sqrt(0.5 * (one_way_squared(a, b, b_tree) + one_way_squared(b, a, a_tree)));
+}
+
+double fitted_shape_distance(const PointSet& a, const PointSet& b, const PointsTree& b_tree) {
+  // The map is fitted on every k-th point: a few hundred fix 12 numbers.
+  const Eigen::Index stride = std::max<Eigen::Index>(1, a.rows() / kComparedFitPoints);
+  PointSet sparse((a.rows() + stride - 1) / stride, 3);
+  for (Eigen::Index i = 0, k = 0; i < a.rows(); i += stride, ++k) sparse.row(k) = a.row(i);
+  const ClosestPointFit fit = affine_closest_point_fit(sparse, b, b_tree, kComparedFitIterations);
+  const PointSet fitted = (a * fit.linear.transpose()).rowwise() + fit.translation.transpose();
+  const PointsTree fitted_tree(fitted);
+  return shape_distance(fitted, fitted_tree, b, b_tree);
 }
 
 PointSet alignment_points(const SurfaceMesh& mesh) { return fit_points(vertex_points(mesh)); }
@@ -217,8 +233,8 @@ Similarity canonical_frame(const SurfaceMesh& mesh) {
   return frame;
 }
 
-MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& template_points,
-                                const Similarity& template_frame) {
+PoseTrials pose_trials(const SurfaceMesh& mesh, const PointSet& template_points, const Similarity& template_frame,
+                       const PointsTree& template_tree) {
   const Similarity own = canonical_frame(mesh);
   // The starts: the pose as given (turned as the template's frame turns
   // the template: shapes of one scanner often arrive roughly aligned, and
@@ -235,46 +251,81 @@ MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& templat
     turned.rotation = turn * own.rotation;
     starts.push_back(turned);
   }
-  const PointSet world = fit_points(vertex_points(mesh));
-  const PointsTree tree(template_points);
+  PoseTrials found;
+  found.points = fit_points(vertex_points(mesh));
   // Each start is judged by an affine fit: a stretch of the whole shape
   // costs nothing, so the radii, which vary from shape to shape, do not
   // outvote the features that say which way round it is.
-  std::vector<ClosestPointFit> trials;
-  std::vector<Eigen::Matrix3d> turns;  // the pose each trial ends in: its map's nearest rotation, after the start
-  std::size_t chosen = 0;
-  for (std::size_t k = 0; k < starts.size(); ++k) {
-    Similarity& start = starts[k];
-    start.translation = -start.scale * (start.rotation * world.colwise().mean().transpose());
-    trials.push_back(affine_closest_point_fit(start.apply(world), template_points, tree, kTrialIterations));
-    turns.push_back(nearest_rotation(trials[k].linear) * start.rotation);
-    if (trials[k].rms < trials[chosen].rms) chosen = k;
+  for (Similarity& start : starts) {
+    start.translation = -start.scale * (start.rotation * found.points.colwise().mean().transpose());
+    const ClosestPointFit fit = affine_closest_point_fit(start.apply(found.points), template_points, template_tree,
+                                                         kTrialIterations);
+    found.trials.push_back({start, fit.linear, fit.translation, fit.rms, nearest_rotation(fit.linear) * start.rotation});
+    if (fit.rms < found.trials[found.best].rms) found.best = found.trials.size() - 1;
   }
-  if (turn_angle(turns.front(), turns[chosen]) < kOtherPoseDegrees ||
-      trials.front().rms <= kGivenPoseKept * trials[chosen].rms) {
-    chosen = 0;
+  const std::vector<PoseTrial>& trials = found.trials;
+  found.chosen = found.best;
+  if (turn_angle(trials.front().turn, trials[found.best].turn) < kOtherPoseDegrees ||
+      trials.front().rms <= kGivenPoseKept * trials[found.best].rms) {
+    found.chosen = 0;
   }
+  return found;
+}
+
+std::vector<std::size_t> PoseTrials::distinct_poses(double within) const {
+  std::vector<std::size_t> poses{chosen};
+  std::vector<std::size_t> order(trials.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return trials[a].rms < trials[b].rms; });
+  for (const std::size_t k : order) {
+    if (trials[k].rms > within * trials[best].rms) break;
+    const bool another = std::all_of(poses.begin(), poses.end(), [&](std::size_t p) {
+      return turn_angle(trials[p].turn, trials[k].turn) >= kOtherPoseDegrees;
+    });
+    if (another) poses.push_back(k);
+  }
+  return poses;
+}
+
+MeshAlignment fit_pose(const PoseTrials& found, std::size_t chosen, const PointSet& template_points,
+                       const PointsTree& template_tree) {
+  const PoseTrial& start = found.trials[chosen];
   // The pose itself: rigid, from the chosen start (a short fit, then to the end).
-  const PointSet started = starts[chosen].apply(world);
-  const ClosestPointFit first = closest_point_fit(started, template_points, tree, kTrialIterations);
+  const PointSet started = start.start.apply(found.points);
+  const ClosestPointFit first = closest_point_fit(started, template_points, template_tree, kTrialIterations);
   const PointSet placed = (started * first.linear.transpose()).rowwise() + first.translation.transpose();
-  const ClosestPointFit finish = closest_point_fit(placed, template_points, tree, kMaxIterations);
+  const ClosestPointFit finish = closest_point_fit(placed, template_points, template_tree, kMaxIterations);
 
   MeshAlignment alignment;
   alignment.from_principal_axes = chosen != 0;
-  alignment.to_common.scale = starts[chosen].scale;
-  alignment.to_common.rotation = finish.linear * first.linear * starts[chosen].rotation;
+  alignment.to_common.scale = start.start.scale;
+  alignment.to_common.rotation = finish.linear * first.linear * start.start.rotation;
   alignment.to_common.translation =
-      finish.linear * (first.linear * starts[chosen].translation + first.translation) + finish.translation;
+      finish.linear * (first.linear * start.start.translation + first.translation) + finish.translation;
   alignment.rms = finish.rms;
   alignment.iterations = first.iterations + finish.iterations;
   // The runner-up: the best trial that ended in another pose.
-  for (std::size_t k = 0; k < starts.size(); ++k) {
-    const double angle = turn_angle(turns[chosen], turns[k]);
-    if (angle < kOtherPoseDegrees || trials[k].rms >= alignment.runner_up.rms) continue;
-    alignment.runner_up = {trials[k].rms / trials[chosen].rms, angle, trials[k].rms};
+  for (const PoseTrial& trial : found.trials) {
+    const double angle = turn_angle(start.turn, trial.turn);
+    if (angle < kOtherPoseDegrees || trial.rms >= alignment.runner_up.rms) continue;
+    alignment.runner_up = {trial.rms / start.rms, angle, trial.rms};
   }
   return alignment;
+}
+
+PointSet stretched_pose(const PoseTrials& found, std::size_t chosen, const PointSet& template_points,
+                        const PointsTree& template_tree) {
+  const MeshAlignment pose = fit_pose(found, chosen, template_points, template_tree);
+  const PointSet posed = pose.to_common.apply(found.points);
+  const ClosestPointFit fit = affine_closest_point_fit(posed, template_points, template_tree, kMaxIterations);
+  return (posed * fit.linear.transpose()).rowwise() + fit.translation.transpose();
+}
+
+MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& template_points,
+                                const Similarity& template_frame) {
+  const PointsTree tree(template_points);
+  const PoseTrials found = pose_trials(mesh, template_points, template_frame, tree);
+  return fit_pose(found, found.chosen, template_points, tree);
 }
 
 }  // namespace meshparticles

@@ -7,10 +7,11 @@
 // start is judged by a short affine fit, so that radii which vary from shape
 // to shape do not outvote the features that place it; the best start's pose
 // is then fitted rigidly. The given pose is kept where it ends in the best
-// start's pose or fits almost as well. Shapes may arrive in any position,
-// size and orientation. The best start that ends in another pose is
-// reported: where it fits almost as well, the shape's geometry cannot tell
-// the two poses apart.
+// start's pose or fits almost as well; where other poses fit almost as well
+// too, the population chooses among them (pose_consensus). Shapes may
+// arrive in any position, size and orientation. The best start that ends in
+// another pose is reported: where it fits almost as well, the shape's
+// geometry cannot tell the two poses apart.
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -54,6 +55,11 @@ struct MeshAlignment {
     double degrees = 0;
     double rms = std::numeric_limits<double>::infinity();
   } runner_up;
+  // Where the population chose among the poses this shape's fit left open
+  // (pose_consensus): the chosen pose's summed distance to the other shapes
+  // over the nearest other pose's (under 1: the population prefers it). 0:
+  // the fit left one pose open, or a body's turn was chosen.
+  double population_ratio = 0;
 };
 
 // A runner-up within this rms ratio of the chosen pose: the shape's geometry
@@ -66,6 +72,16 @@ inline constexpr double kAmbiguousPoseRatio = 1.02;
 
 // The vertices an alignment fits: all, or every k-th of a large mesh.
 PointSet alignment_points(const SurfaceMesh& mesh);
+
+using PointsTree = MatrixRowTree<PointSet>;
+
+// The symmetric rms distance between two shapes' points (each to the
+// other's nearest, the two means of squares averaged).
+double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree);
+
+// shape_distance after `a` is fitted onto `b` by a short affine
+// closest-point fit: what differs once pose and proportions are taken out.
+double fitted_shape_distance(const PointSet& a, const PointSet& b, const PointsTree& b_tree);
 
 // A population's shapes as first aligned (each a shape's alignment_points
 // in the common frame), with a k-d tree over each, built once for the
@@ -91,11 +107,49 @@ class AlignedShapes {
 
  private:
   std::vector<PointSet> shapes_;
-  std::vector<std::unique_ptr<MatrixRowTree<PointSet>>> trees_;
+  std::vector<std::unique_ptr<PointsTree>> trees_;
+};
+
+// One start of a shape's fit onto the template: the similarity it starts
+// from, and the short affine fit that follows it.
+struct PoseTrial {
+  Similarity start;  // the mesh's coordinates -> the common frame, before the fit
+  Eigen::Matrix3d linear = Eigen::Matrix3d::Identity();  // the affine fit: x -> linear x + translation
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  double rms = 0;  // from the fitted points to the template's nearest
+  Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();  // the pose it ends in (the fit's nearest rotation, after the start)
+};
+
+// Every start of a shape (the pose as given first, then the 24 turns of its
+// principal axes onto the template's), each fitted.
+struct PoseTrials {
+  PointSet points;  // the vertices fitted (alignment_points), in the mesh's coordinates
+  std::vector<PoseTrial> trials;
+  std::size_t best = 0;    // the least rms
+  std::size_t chosen = 0;  // the best, or the pose as given where it ends there or fits almost as well
+  // The chosen trial, then the best trial of every other pose (ending at
+  // least 30 degrees from those before it) whose rms is within `within`
+  // times the best's, least rms first: the poses the shape's own fit onto
+  // the template cannot rule out.
+  std::vector<std::size_t> distinct_poses(double within) const;
 };
 
 // `template_points`: the template's vertices in the common frame, which
-// `template_frame` (its canonical_frame) defines.
+// `template_frame` (its canonical_frame) defines; `template_tree` over them.
+PoseTrials pose_trials(const SurfaceMesh& mesh, const PointSet& template_points, const Similarity& template_frame,
+                       const PointsTree& template_tree);
+
+// The pose of trial `chosen`, fitted rigidly onto the template from its
+// start, and its runner-up among the other trials.
+MeshAlignment fit_pose(const PoseTrials& trials, std::size_t chosen, const PointSet& template_points,
+                       const PointsTree& template_tree);
+
+// The shape in trial `chosen`'s pose (fit_pose), then stretched onto the
+// template by an affine closest-point fit: what is left are its features.
+PointSet stretched_pose(const PoseTrials& trials, std::size_t chosen, const PointSet& template_points,
+                        const PointsTree& template_tree);
+
+// pose_trials, then fit_pose of the chosen trial.
 MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& template_points,
                                 const Similarity& template_frame);
 

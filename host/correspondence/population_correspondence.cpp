@@ -16,6 +16,7 @@
 #include "correspondence/body_turn.hpp"
 #include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/joint_refinement.hpp"
+#include "correspondence/pose_consensus.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
 #include "mesh/nearest_on_triangle.hpp"
@@ -36,6 +37,10 @@ namespace {
 // nearer the population than its pose onto the template: where the two are
 // about as near, the template's is kept (and the output as it was).
 constexpr double kNearerPopulation = 1.02;
+// The poses a shape's fit onto the template leaves open: those whose short
+// affine fit is within this ratio of the best's. The bent family's wrong
+// poses fit within 1.03 to 1.09 of its right ones.
+constexpr double kOpenPoseRatio = 1.15;
 
 // The particles measured as `run` measures its own (through the balls of
 // kSpreadQualityCutoff around them, wider where a particle is alone there),
@@ -254,7 +259,18 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
            "): its particles cannot match the template's everywhere, and the model's modes describe the mismatch");
     }
     const MeshAlignment::RunnerUp& runner_up = shape.alignment.runner_up;
-    if (runner_up.rms_ratio < kAmbiguousPoseRatio) {
+    const double population_ratio = shape.alignment.population_ratio;
+    if (population_ratio > 0) {
+      // The population chose among the poses the fit left open.
+      if (population_ratio * kAmbiguousPoseRatio > 1) {
+        warn(shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
+             " degrees from the one chosen is " +
+             (population_ratio < 1 ? format_number("only %.1f%% farther from", 100 * (1 / population_ratio - 1))
+                                   : format_number("%.1f%% nearer", 100 * (1 - 1 / population_ratio))) +
+             " the other shapes: the population barely tells them apart, and its particles may lie turned "
+             "(fit_population_ratio in summary.json)");
+      }
+    } else if (runner_up.rms_ratio < kAmbiguousPoseRatio) {
       const double ratio = runner_up.rms_ratio;
       warn(shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
            " degrees from the one chosen fits the template " +
@@ -266,25 +282,101 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
   }
 }
 
+// A list of point sets as one message: each its row count, then its values.
+std::vector<double> point_sets_message(const std::vector<PointSet>& sets) {
+  std::vector<double> message;
+  for (const PointSet& set : sets) {
+    message.push_back(double(set.rows()));
+    message.insert(message.end(), set.data(), set.data() + set.size());
+  }
+  return message;
+}
+
+std::vector<PointSet> point_sets_from_message(const std::vector<double>& message) {
+  std::vector<PointSet> sets;
+  for (std::size_t at = 0; at < message.size();) {
+    const Eigen::Index rows = Eigen::Index(message[at]);
+    sets.emplace_back(Eigen::Map<const PointSet>(message.data() + at + 1, rows, 3));
+    at += 1 + std::size_t(3 * rows);
+  }
+  return sets;
+}
+
+// Every owned shape's first pose: its fit onto the
+// template where that leaves one pose open, else the one of those the
+// population prefers (PoseCandidates: every process gathers every shape's
+// candidates, each owner measures its shapes' distances, every process
+// makes the same choices). A shape `turned_by_body` keeps its fit's pose
+// (choose_body_turns turns it later).
+std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const std::vector<std::optional<SurfaceMesh>>& meshes,
+                                       ShapeShare& share, const Similarity& template_frame,
+                                       const PointSet& template_points, const std::vector<char>& turned_by_body) {
+  const std::size_t count = meshes.size();
+  const std::vector<std::size_t> owned = share.owned();
+  const PointsTree template_tree(template_points);
+  std::vector<PoseTrials> trials(count);
+  std::vector<std::vector<std::size_t>> poses(count);  // the trials of the poses left open, the fit's choice first
+  std::vector<std::vector<double>> message(count);
+  SharedProgress fitting("align", owned.size(), request.quiet);
+  for_each_index(owned, share.threads(), [&](std::size_t k) {
+    trials[k] = pose_trials(*meshes[k], template_points, template_frame, template_tree);
+    poses[k] = k == 0 || turned_by_body[k] ? std::vector{trials[k].chosen} : trials[k].distinct_poses(kOpenPoseRatio);
+    std::vector<PointSet> placed;
+    for (const std::size_t pose : poses[k]) placed.push_back(stretched_pose(trials[k], pose, template_points, template_tree));
+    message[k] = point_sets_message(placed);
+    fitting.advance();
+  });
+  fitting.finish();
+  share.gather(message);
+  std::vector<std::vector<PointSet>> placed(count);
+  for (std::size_t k = 0; k < count; ++k) placed[k] = point_sets_from_message(message[k]);
+  const PoseCandidates candidates(std::move(placed));
+  std::vector<std::vector<double>> distances(count);
+  std::vector<std::size_t> open;
+  for (const std::size_t k : owned) {
+    if (candidates.candidates(k) > 1) open.push_back(k);
+  }
+  SharedProgress comparing("poses", open.size(), request.quiet);
+  for_each_index(open, share.threads(), [&](std::size_t k) {
+    distances[k] = candidates.distances(k);
+    comparing.advance();
+  });
+  comparing.finish();
+  share.gather(distances);
+  const std::vector<PoseChoice> choices = candidates.choose(distances);
+  std::vector<MeshAlignment> alignments(count);
+  for_each_index(owned, share.threads(), [&](std::size_t k) {
+    alignments[k] = fit_pose(trials[k], poses[k][choices[k].chosen], template_points, template_tree);
+    alignments[k].population_ratio = choices[k].ratio;
+  });
+  return alignments;
+}
+
 // Every owned shape's pose in the common frame (loading its mesh). A first
-// alignment onto the template; then the shape nearest the others (the
-// medoid) is a second reference, and each shape, the template too, takes
-// its pose onto the medoid where that lies clearly nearer the whole
-// population: a template whose radii or pose differ from most shapes' then
-// pulls them less. Every process gathers every shape's aligned points (its
-// rotation first) and chooses the same medoid. `template_points` follow the
-// template where it moves.
+// pose (first_poses); then the shape nearest the others (the medoid) is a
+// second reference, and each shape, the template too, takes its pose onto
+// the medoid where that lies clearly nearer the whole population: a
+// template whose radii or pose differ from most shapes' then pulls them
+// less. Every process gathers every shape's aligned points (its rotation
+// first) and chooses the same medoid. Shapes with an ellipsoid body, where
+// the template has one, take their turn from the population's features
+// (choose_body_turns). `template_points` follow the template where it moves.
 std::vector<MeshAlignment> align_population(const PopulationRequest& request,
                                             std::vector<std::optional<SurfaceMesh>>& meshes, ShapeShare& share,
                                             const Similarity& template_frame, PointSet& template_points) {
   const std::size_t count = meshes.size();
   const std::vector<std::size_t> owned = share.owned();
   const SurfaceMesh& template_mesh = *meshes.front();
-  std::vector<MeshAlignment> alignments(count);
-  std::vector<std::vector<double>> aligned_message(count);
+  const bool body_template = ellipsoid_body(template_points).has_value();
+  std::vector<char> turned_by_body(count, 0);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
     if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], request.quiet, {}));
-    alignments[k] = align_to_template(*meshes[k], template_points, template_frame);
+    turned_by_body[k] = k != 0 && body_template && ellipsoid_body(vertex_points(*meshes[k])).has_value();
+  });
+  std::vector<MeshAlignment> alignments =
+      first_poses(request, meshes, share, template_frame, template_points, turned_by_body);
+  std::vector<std::vector<double>> aligned_message(count);
+  for_each_index(owned, share.threads(), [&](std::size_t k) {
     const PointSet placed = alignments[k].to_common.apply(alignment_points(*meshes[k]));
     std::vector<double>& shape_message = aligned_message[k];
     const Eigen::Matrix3d& rotation = alignments[k].to_common.rotation;
@@ -323,18 +415,12 @@ std::vector<MeshAlignment> align_population(const PopulationRequest& request,
       const double after = aligned.distance_to_population(again.to_common.apply(points), k);
       return after * kNearerPopulation < before ? std::optional(again) : std::nullopt;
     };
-    // Shapes with an ellipsoid body, where the template has one, take their
-    // turn from the population's features instead (choose_body_turns).
-    const bool body_template = ellipsoid_body(template_points).has_value();
-    const auto turned_by_body = [&](std::size_t k) {
-      return body_template && ellipsoid_body(vertex_points(*meshes[k])).has_value();
-    };
     const std::optional<MeshAlignment> template_again =
         body_template ? std::nullopt
                       : realign(0, template_mesh, align_to_template(template_mesh, template_points, template_frame));
     if (template_again) template_points = template_again->to_common.apply(vertex_points(template_mesh));
     for_each_index(owned, share.threads(), [&](std::size_t k) {
-      if (k != 0 && turned_by_body(k)) return;
+      if (turned_by_body[k]) return;
       const std::optional<MeshAlignment> again = k == 0 ? template_again : realign(k, *meshes[k], alignments[k]);
       if (again) alignments[k] = *again;
     });

@@ -62,6 +62,8 @@ nlohmann::json runner_up_json(const MeshAlignment::RunnerUp& runner_up) {
   return {{"rms_ratio", runner_up.rms_ratio}, {"degrees", runner_up.degrees}, {"rms", runner_up.rms}};
 }
 
+nlohmann::json population_ratio_json(double ratio) { return ratio > 0 ? nlohmann::json(ratio) : nlohmann::json(nullptr); }
+
 nlohmann::json alignment_json(const MeshAlignment& alignment) {
   const Similarity& to_common = alignment.to_common;
   nlohmann::json rotation = nlohmann::json::array();
@@ -72,7 +74,8 @@ nlohmann::json alignment_json(const MeshAlignment& alignment) {
           {"rms", alignment.rms},
           {"iterations", alignment.iterations},
           {"from_principal_axes", alignment.from_principal_axes},
-          {"runner_up", runner_up_json(alignment.runner_up)}};
+          {"runner_up", runner_up_json(alignment.runner_up)},
+          {"population_ratio", population_ratio_json(alignment.population_ratio)}};
 }
 
 MeshAlignment alignment_from_json(const nlohmann::json& json) {
@@ -85,6 +88,8 @@ MeshAlignment alignment_from_json(const nlohmann::json& json) {
   alignment.rms = json.at("rms").get<double>();
   alignment.iterations = json.at("iterations").get<std::size_t>();
   alignment.from_principal_axes = json.at("from_principal_axes").get<bool>();
+  const nlohmann::json& population_ratio = json.at("population_ratio");
+  if (!population_ratio.is_null()) alignment.population_ratio = population_ratio.get<double>();
   const nlohmann::json& runner_up = json.at("runner_up");
   if (!runner_up.is_null()) {
     alignment.runner_up = {runner_up.at("rms_ratio").get<double>(), runner_up.at("degrees").get<double>(),
