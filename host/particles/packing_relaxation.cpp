@@ -167,16 +167,6 @@ std::vector<Vec3> PackingRelaxation::normals() const {
   return normals;
 }
 
-std::vector<SurfaceLocation> PackingRelaxation::points() const {
-  std::vector<SurfaceLocation> points(particles_.size());
-  for (std::size_t k = 0; k < particles_.size(); ++k) {
-    const Particle& p = particles_[k];
-    const SurfaceLocation reached = walk_.walk(p.triangle, p.at);
-    points[order_[k]] = SurfaceLocation{p.triangle, reached.weights, reached.at};
-  }
-  return points;
-}
-
 std::vector<SurfaceLocation> PackingRelaxation::locations() const {
   std::vector<SurfaceLocation> locations(particles_.size());
   for (std::size_t k = 0; k < particles_.size(); ++k) {

@@ -52,7 +52,6 @@ class PackingRelaxation {
   std::vector<Vec3> normals() const;
 
   // In the caller's order.
-  std::vector<SurfaceLocation> points() const;
   std::vector<SurfaceLocation> locations() const;
 
   const std::vector<Particle>& particles() const { return particles_; }

@@ -157,7 +157,7 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
   }
   for (std::size_t k = 0; k < kept.size(); ++k) {
     relaxation.restore(kept[k]);
-    outcome.candidates[k].points = relaxation.points();
+    outcome.candidates[k].points = relaxation.locations();
   }
   outcome.kept = outcome.candidates.size();
   outcome.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
