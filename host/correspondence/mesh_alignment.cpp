@@ -313,10 +313,9 @@ MeshAlignment fit_pose(const PoseTrials& found, std::size_t chosen, const PointS
   return alignment;
 }
 
-PointSet stretched_pose(const PoseTrials& found, std::size_t chosen, const PointSet& template_points,
+PointSet stretched_pose(const PointSet& points, const MeshAlignment& pose, const PointSet& template_points,
                         const PointsTree& template_tree) {
-  const MeshAlignment pose = fit_pose(found, chosen, template_points, template_tree);
-  const PointSet posed = pose.to_common.apply(found.points);
+  const PointSet posed = pose.to_common.apply(points);
   const ClosestPointFit fit = affine_closest_point_fit(posed, template_points, template_tree, kMaxIterations);
   return (posed * fit.linear.transpose()).rowwise() + fit.translation.transpose();
 }

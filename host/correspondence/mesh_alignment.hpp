@@ -144,9 +144,10 @@ PoseTrials pose_trials(const SurfaceMesh& mesh, const PointSet& template_points,
 MeshAlignment fit_pose(const PoseTrials& trials, std::size_t chosen, const PointSet& template_points,
                        const PointsTree& template_tree);
 
-// The shape in trial `chosen`'s pose (fit_pose), then stretched onto the
-// template by an affine closest-point fit: what is left are its features.
-PointSet stretched_pose(const PoseTrials& trials, std::size_t chosen, const PointSet& template_points,
+// `points` (a shape's, as PoseTrials holds them) in `pose` (fit_pose), then
+// stretched onto the template by an affine closest-point fit: what is left
+// are the shape's features.
+PointSet stretched_pose(const PointSet& points, const MeshAlignment& pose, const PointSet& template_points,
                         const PointsTree& template_tree);
 
 // pose_trials, then fit_pose of the chosen trial.

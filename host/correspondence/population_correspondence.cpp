@@ -314,16 +314,23 @@ std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const s
   const std::size_t count = meshes.size();
   const std::vector<std::size_t> owned = share.owned();
   const PointsTree template_tree(template_points);
-  std::vector<PoseTrials> trials(count);
-  std::vector<std::vector<std::size_t>> poses(count);  // the trials of the poses left open, the fit's choice first
+  // Each owned shape's open poses, each fitted rigidly, its fit's choice first.
+  std::vector<std::vector<MeshAlignment>> poses(count);
   std::vector<std::vector<double>> message(count);
   SharedProgress fitting("align", owned.size(), request.quiet);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
-    trials[k] = pose_trials(*meshes[k], template_points, template_frame, template_tree);
-    poses[k] = k == 0 || turned_by_body[k] ? std::vector{trials[k].chosen} : trials[k].distinct_poses(kOpenPoseRatio);
-    std::vector<PointSet> placed;
-    for (const std::size_t pose : poses[k]) placed.push_back(stretched_pose(trials[k], pose, template_points, template_tree));
-    message[k] = point_sets_message(placed);
+    const PoseTrials trials = pose_trials(*meshes[k], template_points, template_frame, template_tree);
+    const std::vector<std::size_t> open =
+        k == 0 || turned_by_body[k] ? std::vector{trials.chosen} : trials.distinct_poses(kOpenPoseRatio);
+    for (const std::size_t trial : open) poses[k].push_back(fit_pose(trials, trial, template_points, template_tree));
+    // A settled shape serves the others only as a reference.
+    if (open.size() > 1 || k < PoseCandidates::kReferences) {
+      std::vector<PointSet> placed;
+      for (const MeshAlignment& pose : poses[k]) {
+        placed.push_back(stretched_pose(trials.points, pose, template_points, template_tree));
+      }
+      message[k] = point_sets_message(placed);
+    }
     fitting.advance();
   });
   fitting.finish();
@@ -345,10 +352,10 @@ std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const s
   share.gather(distances);
   const std::vector<PoseChoice> choices = candidates.choose(distances);
   std::vector<MeshAlignment> alignments(count);
-  for_each_index(owned, share.threads(), [&](std::size_t k) {
-    alignments[k] = fit_pose(trials[k], poses[k][choices[k].chosen], template_points, template_tree);
+  for (const std::size_t k : owned) {
+    alignments[k] = poses[k][choices[k].chosen];
     alignments[k].population_ratio = choices[k].ratio;
-  });
+  }
   return alignments;
 }
 

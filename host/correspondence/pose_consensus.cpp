@@ -8,7 +8,6 @@ namespace meshparticles {
 
 namespace {
 
-constexpr std::size_t kReferences = 16;
 // A candidate replaces the held pose only where its summed distance is this
 // much less: where the population barely tells them apart, the shape's own
 // fit onto the template stands.

@@ -25,10 +25,13 @@ struct PoseChoice {
 
 class PoseCandidates {
  public:
+  // The shapes every shape is compared with: the first this many.
+  static constexpr std::size_t kReferences = 16;
+
   // `placed[k]`: shape k's points in the common frame in each of its
   // candidate poses (stretched_pose), its own fit's choice first. One
   // candidate: the shape's pose is settled (the template's, a body's), and
-  // it only serves the others.
+  // it only serves the others; none: a settled shape past the references.
   explicit PoseCandidates(std::vector<std::vector<PointSet>> placed);
   PoseCandidates(const PoseCandidates&) = delete;  // the trees read the points where they are
   PoseCandidates& operator=(const PoseCandidates&) = delete;
