@@ -32,10 +32,6 @@
 namespace meshparticles::testing {
 namespace {
 
-Vec3 unrotate(const std::array<Vec3, 3>& rows, Vec3 p) {
-  return p.x * rows[0] + p.y * rows[1] + p.z * rows[2];  // the transpose's product
-}
-
 double bump_term(const EllipsoidBump& bump, Vec3 u) { return std::exp(-(1 - dot(u, bump.direction)) / bump.width); }
 
 // The parameter of an unposed surface point, as population.json says.
@@ -47,7 +43,7 @@ TEST(EllipsoidPopulation, EveryVertexLiesOnItsShapeAtItsParameter) {
   const EllipsoidVariant shape = generate_ellipsoid_variant(7, 1500);
   double worst = 0;
   for (const Vec3& world : shape.mesh.positions()) {
-    const Vec3 unposed = (1 / shape.scale) * unrotate(shape.rotation, world + (-1.0) * shape.translation);
+    const Vec3 unposed = shape.pose.unposed(world);
     const Vec3 u = parameter_of(shape, unposed);
     const double r = 1 + shape.bump_height * bump_term(kEllipsoidBump, u) + kEllipsoidKnob.height * bump_term(kEllipsoidKnob, u);
     const Vec3 on_surface = r * Vec3{shape.axes.x * u.x, shape.axes.y * u.y, shape.axes.z * u.z};
@@ -73,7 +69,7 @@ TEST(EllipsoidPopulation, TheRadiiFamilySwapsTheOrderOfItsRadii) {
     swapped = swapped || shape.axes.y < shape.axes.z || shape.axes.x < shape.axes.y;
     double worst = 0;
     for (const Vec3& world : shape.mesh.positions()) {
-      const Vec3 unposed = (1 / shape.scale) * unrotate(shape.rotation, world + (-1.0) * shape.translation);
+      const Vec3 unposed = shape.pose.unposed(world);
       const Vec3 u = parameter_of(shape, unposed);
       const double r = 1 + shape.bump_height * bump_term(kEllipsoidBump, u) + shape.knob_height * bump_term(kEllipsoidKnob, u);
       worst = std::max(worst, norm(r * Vec3{shape.axes.x * u.x, shape.axes.y * u.y, shape.axes.z * u.z} + (-1.0) * unposed));
@@ -103,7 +99,7 @@ TEST(GeneratedPopulation, BentBodiesLieWhereTheirParametersSay) {
     const double R = shape.bend_radius;
     double worst = 0;
     for (const Vec3& world : shape.mesh.positions()) {
-      const Vec3 x = (1 / shape.pose.scale) * unrotate(shape.pose.rotation, world + (-1.0) * shape.pose.translation);
+      const Vec3 x = shape.pose.unposed(world);
       const Vec3 s{R - std::hypot(x.x - R, x.z), x.y, R * std::atan2(x.z, R - x.x)};
       const Vec3 u = normalized({s.x / shape.axes.x, s.y / shape.axes.y, s.z / shape.axes.z});
       double r = 1 - shape.waist_depth * std::exp(-std::pow(u.z / kBentBodyWaistWidth, 2));
@@ -120,7 +116,7 @@ TEST(EllipsoidPopulation, ShapesAreMeshedEachOnItsOwnAndPosedAtRandom) {
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     const EllipsoidVariant shape = generate_ellipsoid_variant(seed, 1500);
     sizes.insert(shape.mesh.vertex_count());
-    const Vec3 unposed = (1 / shape.scale) * unrotate(shape.rotation, shape.mesh.positions()[0] + (-1.0) * shape.translation);
+    const Vec3 unposed = shape.pose.unposed(shape.mesh.positions()[0]);
     first_vertex_parameters.push_back(parameter_of(shape, unposed));
   }
   EXPECT_GE(sizes.size(), 2u) << "every shape has the same vertex count";
@@ -178,7 +174,7 @@ TEST(EllipsoidBody, FindsTheAxesAndRadiiUnderTheFeatures) {
     ASSERT_TRUE(body) << seed;
     const std::array<double, 3> radii{shape.axes.x, shape.axes.y, shape.axes.z};
     const auto entry = [&](int row, int column) {
-      const Vec3& r = shape.rotation[std::size_t(row)];
+      const Vec3& r = shape.pose.rotation[std::size_t(row)];
       return column == 0 ? r.x : column == 1 ? r.y : r.z;
     };
     for (int k = 0; k < 3; ++k) {
@@ -194,7 +190,7 @@ TEST(EllipsoidBody, FindsTheAxesAndRadiiUnderTheFeatures) {
         }
       }
       EXPECT_GT(best, std::cos(std::numbers::pi / 180)) << seed << " axis " << k;
-      EXPECT_NEAR(body->radii(k) / shape.scale, radii[std::size_t(along)], 0.02) << seed << " axis " << k;
+      EXPECT_NEAR(body->radii(k) / shape.pose.scale, radii[std::size_t(along)], 0.02) << seed << " axis " << k;
     }
   }
   EXPECT_FALSE(ellipsoid_body(vertex_points(generate_mesh("torus"))));
@@ -299,7 +295,7 @@ class SmallPopulation : public ::testing::Test {
         const auto& p = population.shapes[s].particles;
         const Vec3 world{p(i, 0), p(i, 1), p(i, 2)};
         directions.push_back(
-            parameter_of(shape, (1 / shape.scale) * unrotate(shape.rotation, world + (-1.0) * shape.translation)));
+            parameter_of(shape, shape.pose.unposed(world)));
         sum = sum + directions.back();
       }
       for (const Vec3& u : directions) total += std::acos(std::clamp(dot(u, normalized(sum)), -1.0, 1.0));

@@ -54,7 +54,7 @@ nlohmann::json ellipsoid_truth(const std::string& file, const EllipsoidVariant& 
                           {"bump_height", shape.bump_height},
                           {"knob_height", shape.knob_height},
                           {"axes", vec_json(shape.axes)}};
-  truth.update(pose_truth({shape.rotation, shape.scale, shape.translation}));
+  truth.update(pose_truth(shape.pose));
   return truth;
 }
 

@@ -456,8 +456,7 @@ EllipsoidVariant generate_ellipsoid_variant(std::uint64_t seed, std::size_t vert
     return r * Vec3{axes.x * u.x, axes.y * u.y, axes.z * u.z};
   };
   PosedShape shape = mesh_and_pose_shape(random, vertices, onto_shape, onto_shape);
-  return {std::move(shape.mesh), elongation, height, knob_height, axes, shape.pose.rotation, shape.pose.scale,
-          shape.pose.translation};
+  return {std::move(shape.mesh), elongation, height, knob_height, axes, shape.pose};
 }
 
 PosedShape mesh_and_pose_shape(SplitMix64& random, std::size_t vertices, const std::function<Vec3(Vec3)>& place,

@@ -62,15 +62,18 @@ struct ShapePose {
   std::array<Vec3, 3> rotation{};  // rows
   double scale = 1;
   Vec3 translation{};
+  // A posed point where the shape was made: the pose undone.
+  Vec3 unposed(Vec3 world) const {
+    const Vec3 p = (1 / scale) * (world + (-1.0) * translation);
+    return p.x * rotation[0] + p.y * rotation[1] + p.z * rotation[2];  // the rotation's transpose
+  }
 };
 
 struct EllipsoidVariant {
   SurfaceMesh mesh;  // posed
   double elongation = 0, bump_height = 0, knob_height = 0;
   Vec3 axes{};
-  std::array<Vec3, 3> rotation{};  // rows of the pose's rotation
-  double scale = 1;
-  Vec3 translation{};
+  ShapePose pose;
 };
 
 // knob: the family above. radii: issue 48's, which hides nothing from the
