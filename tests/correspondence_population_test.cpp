@@ -11,12 +11,14 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <set>
 #include <vector>
 
 #include "correspondence/ellipsoid_body.hpp"
+#include "correspondence/joint_refinement.hpp"
 #include "correspondence/mesh_alignment.hpp"
 #include "correspondence/population_correspondence.hpp"
 #include "correspondence/pose_consensus.hpp"
@@ -259,11 +261,14 @@ class SmallPopulation : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
 
-  PopulationCorrespondence correspond(std::size_t iterations, double weight, bool pack) const {
-    return correspond(files_, iterations, weight, pack);
+  // `even_enough` 1: the refinement's places, none held back.
+  PopulationCorrespondence correspond(std::size_t iterations, double weight, bool pack,
+                                      double even_enough = JointRefinementOptions{}.even_enough) const {
+    return correspond(files_, iterations, weight, pack, even_enough);
   }
   static PopulationCorrespondence correspond(const std::vector<std::filesystem::path>& files, std::size_t iterations,
-                                             double weight, bool pack) {
+                                             double weight, bool pack,
+                                             double even_enough = JointRefinementOptions{}.even_enough) {
     PopulationRequest request;
     request.meshes = files;
     request.run.particles = kParticles;
@@ -271,7 +276,18 @@ class SmallPopulation : public ::testing::Test {
     request.refinement.iterations = iterations;
     request.refinement.correspondence_weight = weight;
     request.refinement.pack = pack;
+    request.refinement.even_enough = even_enough;
     return correspond_population(request);
+  }
+
+  // Shape s's closest pair of particles (straight), in its hexagonal spacings.
+  double closest_pair(const PopulationCorrespondence& population, std::size_t s) const {
+    const PointSet& p = population.shapes[s].particles;
+    double closest = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < p.rows(); ++i) {
+      for (Eigen::Index j = i + 1; j < p.rows(); ++j) closest = std::min(closest, (p.row(i) - p.row(j)).norm());
+    }
+    return closest / hexagonal_spacing(shapes_[s].mesh.area(), kParticles);
   }
 
   // Shape s's nn_cv when its own run (the default) spreads the particles.
@@ -319,9 +335,9 @@ class SmallPopulation : public ::testing::Test {
 // what keeps particle i in place while it does: without it (weight 0) the
 // same iterations let the particles drift apart across shapes.
 TEST_F(SmallPopulation, JointRefinementEvensShapesOutWhileTheCorrespondenceHolds) {
-  const PopulationCorrespondence transferred = correspond(0, 0.1, false);
-  const PopulationCorrespondence refined = correspond(600, 0.1, false);
-  const PopulationCorrespondence unheld = correspond(600, 0.0, false);
+  const PopulationCorrespondence transferred = correspond(0, 0.1, false, 1.0);
+  const PopulationCorrespondence refined = correspond(600, 0.1, false, 1.0);
+  const PopulationCorrespondence unheld = correspond(600, 0.0, false, 1.0);
   EXPECT_EQ(refined.refinement.overlap.size(), 600u);
   EXPECT_LT(worst_nn_cv(refined), 0.8 * worst_nn_cv(transferred))
       << "refined " << worst_nn_cv(refined) << ", transferred " << worst_nn_cv(transferred);
@@ -348,13 +364,35 @@ TEST_F(SmallPopulation, PackingEvensEachShapeAsItsOwnRunDoes) {
   EXPECT_LT(spread(packed), 0.3);
 }
 
+// Each shape keeps only as much of its evening as keeps its closest pair
+// `even_enough` spacings apart: particle i then lies nearer its places on
+// the other shapes than where the refinement left it.
+TEST_F(SmallPopulation, EachShapeKeepsOnlyTheEveningItNeeds) {
+  const PopulationCorrespondence evened = correspond(200, 0.1, true, 1.0);
+  const PopulationCorrespondence held = correspond(200, 0.1, true, 0.75);
+  EXPECT_EQ(evened.refinement.evening_kept, std::vector<double>(shapes_.size(), 1.0));
+  ASSERT_EQ(held.refinement.evening_kept.size(), shapes_.size());
+  std::size_t held_back = 0;
+  for (std::size_t s = 0; s < shapes_.size(); ++s) {
+    const double kept = held.refinement.evening_kept[s];
+    EXPECT_GE(kept, 0.0);
+    EXPECT_LE(kept, 1.0);
+    if (kept == 1.0) continue;
+    ++held_back;
+    EXPECT_GE(closest_pair(held, s), 0.75) << "shape " << s << " kept " << kept;
+    EXPECT_GE(held.shapes[s].quality.rho.value(), 0.75) << "shape " << s;
+  }
+  EXPECT_GT(held_back, 0u);
+  EXPECT_LT(spread(held), spread(evened)) << "held " << spread(held) << ", evened " << spread(evened);
+}
+
 // Where the packing leaves the shapes less spread than the iterations did,
 // it is undone: on sheets thinner than a spacing its particles on the two
 // sides, which do not face each other, come together (as on a body's hands),
 // so the iterations' places stay. On the ellipsoids it spreads, and stays.
 TEST_F(SmallPopulation, PackingIsUndoneWhereItLeavesTheShapesLessSpread) {
-  const PopulationCorrespondence iterated = correspond(200, 0.1, false);
-  const PopulationCorrespondence packed = correspond(200, 0.1, true);
+  const PopulationCorrespondence iterated = correspond(200, 0.1, false, 1.0);
+  const PopulationCorrespondence packed = correspond(200, 0.1, true, 1.0);
   EXPECT_FALSE(packed.refinement.packing_undone);
   EXPECT_NE(packed.shapes.front().particles, iterated.shapes.front().particles);
   std::vector<std::filesystem::path> sheets;
@@ -364,8 +402,8 @@ TEST_F(SmallPopulation, PackingIsUndoneWhereItLeavesTheShapesLessSpread) {
     sheets.push_back(directory_ / ("sheet_" + std::to_string(s) + ".off"));
     write_mesh(SurfaceMesh(flattened, shapes_[s].mesh.triangles()), sheets.back());
   }
-  const PopulationCorrespondence sheet_iterated = correspond(sheets, 200, 0.1, false);
-  const PopulationCorrespondence sheet_packed = correspond(sheets, 200, 0.1, true);
+  const PopulationCorrespondence sheet_iterated = correspond(sheets, 200, 0.1, false, 1.0);
+  const PopulationCorrespondence sheet_packed = correspond(sheets, 200, 0.1, true, 1.0);
   EXPECT_TRUE(sheet_packed.refinement.packing_undone);
   EXPECT_GT(sheet_packed.refinement.packing_rounds, 0u);
   for (std::size_t s = 0; s < sheets.size(); ++s) {

@@ -73,6 +73,12 @@ void add_correspond_command(CLI::App& app) {
                       "correspondence)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
+  command->add_option("--even-enough", options->request.refinement.even_enough,
+                      "Then each shape keeps only as much of the refinement's evening as keeps its closest pair this "
+                      "many spacings apart, its particles nearer where the transfer put them (0: as near as its holes "
+                      "and the other shapes allow; 1: the refinement's places)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   add_whole_number_option(*command, "--threads", options->request.threads, kThreadRange,
                           "Threads per process for its shapes (0: the cores, shared among the ranks of a node); the "
                           "result is the same for any number");

@@ -21,7 +21,8 @@ nlohmann::json correspond_params(const CorrespondRequest& request) {
           {"refine_iterations", request.refinement.iterations},
           {"correspondence_weight", request.refinement.correspondence_weight},
           {"packing", request.refinement.pack},
-          {"packing_hold", request.refinement.packing_hold}};
+          {"packing_hold", request.refinement.packing_hold},
+          {"even_enough", request.refinement.even_enough}};
 }
 
 nlohmann::json checkpoint_fingerprint(const CorrespondRequest& request, const std::vector<std::string>& meshes) {

@@ -44,7 +44,8 @@ nlohmann::json refinement_summary(const JointRefinementRecord& refinement) {
                        {"released", refinement.packing_released},
                        {"undone", refinement.packing_undone},
                        {"smallest_spacing", refinement.packing_spacing},
-                       {"correspondence_step", refinement.packing_correspondence_step}}}};
+                       {"correspondence_step", refinement.packing_correspondence_step}}},
+          {"evening_kept", refinement.evening_kept}};
 }
 
 nlohmann::json shape_summary(const ShapeCorrespondence& shape) {

@@ -17,6 +17,7 @@
 #include "particles/particle_params.hpp"
 #include "particles/spacing_relaxation.hpp"
 #include "shape_model/point_sets.hpp"
+#include "shape_model/procrustes.hpp"
 
 namespace meshparticles {
 
@@ -46,6 +47,12 @@ constexpr std::size_t kPackingRounds = 1000;
 // 1.13 at n = 1,024 (the packing cannot close a hole while the pull holds
 // it open).
 constexpr double kHeldOpenCover = 0.9;
+// A shape held back from its evening may leave holes at most this much
+// wider than the evened shape's (straight covers).
+constexpr double kHeldCover = 1.05;
+// ... and lie at most this much farther (squared) from the other shapes'
+// mean (aligned as the model aligns them) than the evened shape does.
+constexpr double kHeldOffTheOthers = 2;
 
 PointSet positions(const std::vector<SurfaceLocation>& at) {
   PointSet points(Eigen::Index(at.size()), 3);
@@ -315,6 +322,64 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
   record.packing_undone = median_smallest_spacing(after, spacings, share) < median_smallest_spacing(before, spacings, share);
   if (record.packing_undone) return;
   for (const std::size_t k : share.owned()) shapes[k].at = std::move(packed[k]);
+}
+
+void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<std::vector<SurfaceLocation>>& transferred,
+                       std::size_t particles, const JointRefinementOptions& options, ShapeShare& share,
+                       JointRefinementRecord& record) {
+  const std::vector<double> spacings = population_spacings(shapes, particles, share);
+  // Every shape's evened places, aligned as the model aligns them: each
+  // shape is judged against the mean of the others.
+  std::vector<ShapePoints> evened(shapes.size());
+  for (const std::size_t k : share.owned()) evened[k].points = positions(shapes[k].at);
+  share.gather_points(evened, particles);
+  std::vector<PointSet> points;
+  for (const ShapePoints& shape : evened) points.push_back(shape.points);
+  const ProcrustesAlignment aligned = align_procrustes(points);
+  PointSet mean = PointSet::Zero(Eigen::Index(particles), 3);
+  for (const PointSet& shape : aligned.aligned) mean += shape;
+  const double others = double(shapes.size() - 1);
+
+  std::vector<std::vector<double>> kept(shapes.size());
+  for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
+    const SurfaceMesh& mesh = *shapes[k].mesh;
+    const SurfaceWalk walk(mesh);
+    const PointSet others_mean = (mean - aligned.aligned[k]) / others;
+    const auto normals = [&](const std::vector<SurfaceLocation>& at) {
+      std::vector<Vec3> found;
+      for (const SurfaceLocation& particle : at) found.push_back(walk.normal(particle.triangle));
+      return found;
+    };
+    const std::vector<SurfaceLocation>& refined = shapes[k].at;
+    const double refined_cover = straight_cover(mesh, refined, normals(refined));
+    const auto off_the_others = [&](const std::vector<SurfaceLocation>& at) {
+      return (aligned.transforms[k].apply(positions(at)) - others_mean).squaredNorm();
+    };
+    std::vector<SurfaceLocation> best = refined;
+    const double refined_off = off_the_others(refined);
+    double share_kept = 1;
+    for (std::size_t tenths = 0; tenths < 10; ++tenths) {
+      const double fraction = double(tenths) / 10;
+      std::vector<SurfaceLocation> held(particles);
+      for (std::size_t i = 0; i < particles; ++i) {
+        const Vec3 from = transferred[k][i].at, to = refined[i].at;
+        held[i] = walk.walk(refined[i].triangle, from + fraction * (to + (-1.0) * from));
+      }
+      if (smallest_distance(held) < options.even_enough * spacings[k] ||
+          straight_cover(mesh, held, normals(held)) > kHeldCover * refined_cover ||
+          off_the_others(held) > kHeldOffTheOthers * refined_off) {
+        continue;
+      }
+      best = std::move(held);
+      share_kept = fraction;
+      break;
+    }
+    shapes[k].at = std::move(best);
+    kept[k] = {share_kept};
+  });
+  share.gather(kept);
+  record.evening_kept.clear();
+  for (const std::vector<double>& value : kept) record.evening_kept.push_back(value.front());
 }
 
 }  // namespace meshparticles

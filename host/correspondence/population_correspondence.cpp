@@ -501,11 +501,14 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   });
   transferring.finish();
 
+  std::vector<std::vector<SurfaceLocation>> transferred(count);  // where the refinement's moves start
+  for (const std::size_t k : owned) transferred[k] = particles[k].at;
   refinement_stage("iterated", particles, particle_count, share, checkpoint, population.refinement, [&] {
     iterate_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
   });
   refinement_stage("packed", particles, particle_count, share, checkpoint, population.refinement, [&] {
     pack_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
+    hold_back_evening(particles, transferred, particle_count, request.refinement, share, population.refinement);
   });
 
   // Each shape measured on its own surface; then every process holds every shape's result.

@@ -176,7 +176,8 @@ nlohmann::json refinement_json(const JointRefinementRecord& record) {
           {"packing_correspondence_step", record.packing_correspondence_step},
           {"packing_rounds", record.packing_rounds},
           {"packing_released", record.packing_released},
-          {"packing_undone", record.packing_undone}};
+          {"packing_undone", record.packing_undone},
+          {"evening_kept", record.evening_kept}};
 }
 
 JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
@@ -188,6 +189,7 @@ JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
   record.packing_rounds = json.at("packing_rounds").get<std::size_t>();
   record.packing_released = json.at("packing_released").get<std::size_t>();
   record.packing_undone = json.value("packing_undone", false);
+  json.at("evening_kept").get_to(record.evening_kept);
   return record;
 }
 

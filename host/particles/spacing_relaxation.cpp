@@ -92,6 +92,13 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
   return straight_cover(mesh, normals, at, facing);
 }
 
+double straight_cover(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles,
+                      const std::vector<Vec3>& particle_normals) {
+  std::vector<Vec3> at;
+  for (const SurfaceLocation& particle : particles) at.push_back(particle.at);
+  return straight_cover(mesh, vertex_normals(mesh), at, particle_normals);
+}
+
 double straight_cover(const SurfaceMesh& mesh, const PackingRelaxation& particles) {
   return straight_cover(mesh, vertex_normals(mesh), particles.positions(), particles.normals());
 }

@@ -45,6 +45,9 @@ struct RelaxationOutcome {
 // relaxation measures its candidates' (a few tens of milliseconds on a
 // million vertices).
 double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles);
+// The same of particles on the surface, each facing `particle_normals`' way.
+double straight_cover(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles,
+                      const std::vector<Vec3>& particle_normals);
 // The same of particles that a relaxation holds.
 double straight_cover(const SurfaceMesh& mesh, const PackingRelaxation& particles);
 
