@@ -32,7 +32,8 @@ std::vector<Vec3> grid(const std::vector<Vec3>& missing = {}) {
 // A hole between the vertices is found: particles on the corners leave the
 // middle 0.707 away, where no vertex lies (the vertices alone say 0).
 TEST(HolePull, FindsAHoleBetweenTheVertices) {
-  const HolePull holes(unit_square(), 0.05);
+  const SurfaceMesh square = unit_square();
+  const HolePull holes(square, 0.05);
   EXPECT_GT(holes.size(), 200u);
   const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   EXPECT_NEAR(holes.cover(corners), std::sqrt(0.5), 0.05);
@@ -43,10 +44,11 @@ TEST(HolePull, FindsAHoleBetweenTheVertices) {
 // no pull. A particle taken out of the middle leaves a hole its four
 // neighbours are drawn into, each straight toward it; far particles stay.
 TEST(HolePull, DrawsTheNeighboursOfAHoleIntoIt) {
-  HolePull holes(unit_square(), 0.02);
-  for (const Vec3& pull : holes.pull(grid(), 0.15, 0.03, 0.04)) EXPECT_EQ(norm(pull), 0.0);
+  const SurfaceMesh square = unit_square();
+  HolePull holes(square, 0.02);
+  for (const Vec3& pull : holes.pull(grid(), 0.15, 0.04)) EXPECT_EQ(norm(pull), 0.0);
   const std::vector<Vec3> at = grid({{0.5, 0.5, 0}});
-  const std::vector<Vec3> pulls = holes.pull(at, 0.15, 0.03, 0.04);
+  const std::vector<Vec3> pulls = holes.pull(at, 0.15, 0.04);
   for (std::size_t i = 0; i < at.size(); ++i) {
     const Vec3 toward = Vec3{0.5, 0.5, 0} - at[i];
     if (std::abs(norm(toward) - 0.2) < 1e-9) {
@@ -58,15 +60,16 @@ TEST(HolePull, DrawsTheNeighboursOfAHoleIntoIt) {
   }
 }
 
-// Called again with the particles moved less than the margin, it looks only
-// at the points that were near a hole, and gives what a fresh look gives.
+// Called again with the particles moved, it looks only at the points their
+// moves may have taken beyond the reach, and gives what a fresh look gives.
 TEST(HolePull, AgainAfterSmallMovesGivesWhatAFreshLookGives) {
-  HolePull again(unit_square(), 0.02);
+  const SurfaceMesh square = unit_square();
+  HolePull again(square, 0.02);
   std::vector<Vec3> at = grid({{0.5, 0.5, 0}, {0.1, 0.9, 0}});
-  again.pull(at, 0.15, 0.03, 0.04);
+  again.pull(at, 0.15, 0.04);
   for (Vec3& p : at) p = p + Vec3{0.004 * p.y, -0.003 * p.x, 0};
-  HolePull fresh(unit_square(), 0.02);
-  const std::vector<Vec3> expected = fresh.pull(at, 0.15, 0.03, 0.04), found = again.pull(at, 0.15, 0.03, 0.04);
+  HolePull fresh(square, 0.02);
+  const std::vector<Vec3> expected = fresh.pull(at, 0.15, 0.04), found = again.pull(at, 0.15, 0.04);
   for (std::size_t i = 0; i < at.size(); ++i) {
     EXPECT_EQ(found[i].x, expected[i].x) << i;
     EXPECT_EQ(found[i].y, expected[i].y) << i;

@@ -20,32 +20,40 @@ namespace meshparticles {
 
 class HolePull {
  public:
-  // Points of `mesh`'s surface none farther than about `step` from the
-  // next: each triangle cut into equal parts with edges under `step`, the
-  // parts' centroids, each standing for its part's area.
+  // The points of `mesh`'s surface (which must outlive this), none farther
+  // than about `step` from the next: each triangle cut into equal parts
+  // with edges under `step`, the parts' centroids, each standing for its
+  // part's area.
   HolePull(const SurfaceMesh& mesh, double step);
 
   // Per particle of `particles`: over the points farther than `reach` from
   // their nearest particle, that particle's sum of (point - particle) times
   // (1 - reach / distance) times the point's area, over `cell_area` (the
   // descent of the squared overshoots, in a cell's terms). Called again
-  // with the same particles moved a little, it looks only at the points
-  // that were then farther than `reach - margin` (the others are still
-  // nearer than `reach` while no particle has moved `margin`): the same
-  // result at a tenth of the cost.
-  std::vector<Vec3> pull(const std::vector<Vec3>& particles, double reach, double margin, double cell_area);
+  // with the same particles moved, it looks again only at the points that
+  // the particles' moves may have taken beyond `reach` (a point's distance
+  // at the last full look plus how far its nearest particle has moved since):
+  // the same pulls at a fraction of the cost.
+  std::vector<Vec3> pull(const std::vector<Vec3>& particles, double reach, double cell_area);
 
   // The largest distance from a point to its nearest particle.
   double cover(const std::vector<Vec3>& particles) const;
 
-  std::size_t size() const { return points_.size(); }
+  std::size_t size() const { return size_; }
 
  private:
-  std::vector<Vec3> points_;
-  std::vector<double> area_;
-  std::vector<Vec3> at_full_;             // the particles when every point was last looked at
-  std::vector<std::uint32_t> far_;        // the points then farther than reach - margin
-  double far_from_ = 0;                   // that reach - margin
+  // Calls visit(index, point, area) for every point, in index order.
+  template <typename Visit>
+  void for_each_point(Visit&& visit) const;
+
+  const SurfaceMesh& mesh_;
+  std::vector<std::uint8_t> parts_;  // per triangle, its parts along an edge
+  std::size_t size_ = 0;
+  // At the last full look: the particles, each point's nearest and its
+  // distance (rounded up).
+  std::vector<Vec3> looked_from_;
+  std::vector<std::uint32_t> nearest_;
+  std::vector<float> distance_;
 };
 
 }  // namespace meshparticles
