@@ -16,7 +16,6 @@
 #include "particles/hole_pull.hpp"
 #include "particles/packing_relaxation.hpp"
 #include "particles/particle_params.hpp"
-#include "particles/spacing_relaxation.hpp"
 #include "shape_model/point_sets.hpp"
 #include "shape_model/procrustes.hpp"
 
@@ -64,8 +63,11 @@ constexpr double kHoleSampleStep = 0.25;
 // Own runs cover about 0.75.
 constexpr double kHeldOpenCover = 0.9;
 // A shape held back from its evening may leave holes at most this much
-// wider than the evened shape's (straight covers).
+// wider than the evened shape's (straight covers at points of its surface
+// kHeldCoverSampleStep of its spacing apart: at the vertices alone, with
+// 2 to 4 of them a particle, the holes between them went unseen).
 constexpr double kHeldCover = 1.05;
+constexpr double kHeldCoverSampleStep = 0.15;
 // ... and lie at most this much farther (squared) from the other shapes'
 // mean (aligned as the model aligns them) than the evened shape does.
 constexpr double kHeldOffTheOthers = 2;
@@ -374,13 +376,14 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
     const SurfaceMesh& mesh = *shapes[k].mesh;
     const SurfaceWalk walk(mesh);
     const PointSet others_mean = (mean - aligned.aligned[k]) / others;
-    const auto normals = [&](const std::vector<SurfaceLocation>& at) {
-      std::vector<Vec3> found;
-      for (const SurfaceLocation& particle : at) found.push_back(walk.normal(particle.triangle));
-      return found;
-    };
     const std::vector<SurfaceLocation>& refined = shapes[k].at;
-    const double refined_cover = straight_cover(mesh, refined, normals(refined));
+    const HolePull holes(mesh, kHeldCoverSampleStep * spacings[k]);
+    const auto cover = [&](const std::vector<SurfaceLocation>& at) {
+      std::vector<Vec3> places;
+      for (const SurfaceLocation& particle : at) places.push_back(particle.at);
+      return holes.cover(places);
+    };
+    const double refined_cover = cover(refined);
     const auto off_the_others = [&](const std::vector<SurfaceLocation>& at) {
       return (aligned.transforms[k].apply(positions(at)) - others_mean).squaredNorm();
     };
@@ -395,7 +398,7 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
         held[i] = walk.walk(refined[i].triangle, from + fraction * (to + (-1.0) * from));
       }
       if (smallest_distance(held) < options.even_enough * spacings[k] ||
-          straight_cover(mesh, held, normals(held)) > kHeldCover * refined_cover ||
+          cover(held) > kHeldCover * refined_cover ||
           off_the_others(held) > kHeldOffTheOthers * refined_off) {
         continue;
       }
