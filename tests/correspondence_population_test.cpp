@@ -391,8 +391,8 @@ TEST_F(SmallPopulation, EachShapeKeepsOnlyTheEveningItNeeds) {
 // open on a knob or a flank, between the vertices, where a cover measured
 // at the vertices did not see them: on these shapes (`generate
 // --population 4 --family radii --seed 6 --vertices 1700`) shape 1 ended
-// at 1.23 times its own run's cover at n = 512. The packing's hole pull
-// closes them (all four at 0.94 to 0.96 times).
+// at 1.17 to 1.23 times its own run's cover at n = 512. The packing's hole
+// pull closes them.
 TEST(RadiiPopulation, PackingLeavesNoHoleBetweenTheVertices) {
   constexpr std::size_t kParticles = 512;
   const std::filesystem::path directory =
