@@ -99,10 +99,6 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<SurfaceLocation
   return straight_cover(mesh, vertex_normals(mesh), at, particle_normals);
 }
 
-double straight_cover(const SurfaceMesh& mesh, const PackingRelaxation& particles) {
-  return straight_cover(mesh, vertex_normals(mesh), particles.positions(), particles.normals());
-}
-
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
                                 std::size_t max_rounds, const std::vector<double>& cover_limits,
                                 double start_geodesic_cover, bool quiet) {

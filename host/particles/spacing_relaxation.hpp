@@ -48,8 +48,6 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 // The same of particles on the surface, each facing `particle_normals`' way.
 double straight_cover(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles,
                       const std::vector<Vec3>& particle_normals);
-// The same of particles that a relaxation holds.
-double straight_cover(const SurfaceMesh& mesh, const PackingRelaxation& particles);
 
 // From particles on the vertices `start` of `mesh`, at most `max_rounds`
 // rounds (0: the start as it is): first kFoamRounds pushing for a radius a
