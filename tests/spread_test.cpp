@@ -247,8 +247,17 @@ TEST(SpreadPlan, DefaultsAndImpliedMethod) {
   EXPECT_GE(double(refined_vertex_count(mesh, working.levels)), kSpreadVerticesPerParticle * 200);
   EXPECT_LT(double(refined_vertex_count(mesh, working.levels - 1)), kSpreadVerticesPerParticle * 200);
 
+  EXPECT_FALSE(working.capped);
   request.vertices_per_particle = 100;  // asked for: more rounds
   EXPECT_GT(plan_run(mesh, request).spread->working_mesh.levels, working.levels);
+  EXPECT_FALSE(plan_run(mesh, request).spread->working_mesh.capped);
+  request.vertices_per_particle = 1e12;  // more than the cap allows: said, not silent
+  request.quiet = true;
+  const WorkingMeshPlan capped = plan_run(mesh, request).spread->working_mesh;
+  EXPECT_TRUE(capped.capped);
+  EXPECT_LE(refined_vertex_count(mesh, capped.levels), capped.max_vertices);
+  EXPECT_GT(refined_vertex_count(mesh, capped.levels + 1), capped.max_vertices);
+  request.quiet = false;
   request.vertices_per_particle.reset();
 
   request.scheme = Scheme::sequential;

@@ -17,6 +17,7 @@ WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particle
          refined_vertex_count(input, plan.levels + 1) <= plan.max_vertices) {
     ++plan.levels;
   }
+  plan.capped = double(refined_vertex_count(input, plan.levels)) < vertices_per_particle * double(particles);
   plan.longest_edge = kSpreadLongestEdge * hexagonal_spacing(input.area(), particles);
   return plan;
 }

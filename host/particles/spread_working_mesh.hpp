@@ -32,6 +32,8 @@ struct WorkingMeshPlan {
   unsigned levels = 0;             // midpoint rounds everywhere
   double longest_edge = 0;         // then split edges longer than this (mesh units)
   std::size_t max_vertices = 0;    // the cap, at least the input's vertices
+  // Fewer vertices than the particles asked for: the next round would pass the cap.
+  bool capped = false;
 };
 
 WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particles, double vertices_per_particle);

@@ -1,11 +1,14 @@
 #include "pipeline/spread_method.hpp"
 
 #include <chrono>
+#include <iostream>
 
 #include "common/elapsed.hpp"
 #include "common/memory_limits.hpp"
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/solver_factory.hpp"
+#include "mesh/midpoint_refinement.hpp"
 #include "mesh/point_insertion.hpp"
 #include "mesh/surface_walk.hpp"
 #include "pipeline/paper_method.hpp"
@@ -34,6 +37,13 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   SpreadPlan& spread = plan.spread.emplace();
   spread.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
   spread.working_mesh = plan_working_mesh(mesh, request.particles, spread.vertices_per_particle);
+  if (spread.working_mesh.capped && request.vertices_per_particle && !request.quiet) {
+    std::cerr << "meshparticles: warning: --vertices-per-particle " << format_number("%g", spread.vertices_per_particle)
+              << " asks for " << format_number("%.3g", spread.vertices_per_particle * double(request.particles))
+              << " vertices; the working mesh stops at "
+              << refined_vertex_count(mesh, spread.working_mesh.levels) << " (the cap for time and memory: "
+              << spread.working_mesh.max_vertices << ")\n";
+  }
   // Planned on the input: the working mesh has its area, so the same radius.
   const DistancesRequest measured = spread_distances(request.distances);
   plan.cutoff = measured.cutoff_or_default();
