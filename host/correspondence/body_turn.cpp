@@ -157,8 +157,7 @@ void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, Sh
       const double ratio = agreement[chosen[k]] / agreement[t];
       if (ratio >= alignment.runner_up.rms_ratio) continue;
       const Eigen::Matrix3d other = reference->axes.transpose() * turns[t] * bodies[k]->axes;
-      const double cosine = std::clamp(((other.transpose() * pose.rotation).trace() - 1) / 2, -1.0, 1.0);
-      alignment.runner_up = {ratio, std::acos(cosine) * 180 / std::numbers::pi, agreement[t]};
+      alignment.runner_up = {ratio, turn_angle(other, pose.rotation), agreement[t]};
     }
   }
 }

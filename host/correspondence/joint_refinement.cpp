@@ -387,7 +387,6 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
     const auto off_the_others = [&](const std::vector<SurfaceLocation>& at) {
       return (aligned.transforms[k].apply(positions(at)) - others_mean).squaredNorm();
     };
-    std::vector<SurfaceLocation> best = refined;
     const double refined_off = off_the_others(refined);
     double share_kept = 1;
     for (std::size_t tenths = 0; tenths < 10; ++tenths) {
@@ -402,11 +401,10 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
           off_the_others(held) > kHeldOffTheOthers * refined_off) {
         continue;
       }
-      best = std::move(held);
+      shapes[k].at = std::move(held);  // `refined` is read no more
       share_kept = fraction;
       break;
     }
-    shapes[k].at = std::move(best);
     kept[k] = {share_kept};
   });
   share.gather(kept);

@@ -29,20 +29,17 @@ constexpr std::size_t kComparedFitIterations = 30;
 // Trials that end this far from the chosen pose are another pose.
 constexpr double kOtherPoseDegrees = 30;
 
-// The angle of the turn from `a` to `b`, in degrees.
-double turn_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
-  const double cosine = std::clamp(((a.transpose() * b).trace() - 1) / 2, -1.0, 1.0);
-  return std::acos(cosine) * 180 / std::numbers::pi;
-}
-
-// The vertices the fit uses: all, or every k-th of a large mesh.
-PointSet fit_points(const PointSet& points) {
-  const Eigen::Index stride = std::max<Eigen::Index>(1, (points.rows() + kMaxFitPoints - 1) / kMaxFitPoints);
+// Every `stride`-th row of `points`, from the first.
+PointSet every_kth_row(const PointSet& points, Eigen::Index stride) {
   PointSet chosen((points.rows() + stride - 1) / stride, 3);
   for (Eigen::Index i = 0, k = 0; i < points.rows(); i += stride, ++k) chosen.row(k) = points.row(i);
   return chosen;
 }
 
+// The vertices the fit uses: all, or every k-th of a large mesh.
+PointSet fit_points(const PointSet& points) {
+  return every_kth_row(points, std::max<Eigen::Index>(1, (points.rows() + kMaxFitPoints - 1) / kMaxFitPoints));
+}
 
 // A closest-point fit's map (x -> linear x + translation), the rms distance
 // to the nearest points before its last step, and its iterations.
@@ -117,6 +114,11 @@ Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& linear) {
 
 }  // namespace
 
+double turn_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
+  const double cosine = std::clamp(((a.transpose() * b).trace() - 1) / 2, -1.0, 1.0);
+  return std::acos(cosine) * 180 / std::numbers::pi;
+}
+
 const std::vector<Eigen::Matrix3d>& cube_rotations() {
   static const std::vector<Eigen::Matrix3d> turns = [] {
     std::vector<Eigen::Matrix3d> found;
@@ -153,9 +155,7 @@ double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSe
 
 double fitted_shape_distance(const PointSet& a, const PointSet& b, const PointsTree& b_tree) {
   // The map is fitted on every k-th point: a few hundred fix 12 numbers.
-  const Eigen::Index stride = std::max<Eigen::Index>(1, a.rows() / kComparedFitPoints);
-  PointSet sparse((a.rows() + stride - 1) / stride, 3);
-  for (Eigen::Index i = 0, k = 0; i < a.rows(); i += stride, ++k) sparse.row(k) = a.row(i);
+  const PointSet sparse = every_kth_row(a, std::max<Eigen::Index>(1, a.rows() / kComparedFitPoints));
   const ClosestPointFit fit = affine_closest_point_fit(sparse, b, b_tree, kComparedFitIterations);
   const PointSet fitted = (a * fit.linear.transpose()).rowwise() + fit.translation.transpose();
   const PointsTree fitted_tree(fitted);

@@ -31,6 +31,9 @@ PointSet vertex_points(const SurfaceMesh& mesh);
 // order first. The ways one shape's principal axes can lie on another's.
 const std::vector<Eigen::Matrix3d>& cube_rotations();
 
+// The angle of the turn from rotation `a` to rotation `b`, in degrees.
+double turn_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b);
+
 // Unit area, centroid at 0, principal axes along x, y, z (largest first).
 Similarity canonical_frame(const SurfaceMesh& mesh);
 

@@ -286,8 +286,9 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
 std::vector<double> point_sets_message(const std::vector<PointSet>& sets) {
   std::vector<double> message;
   for (const PointSet& set : sets) {
+    const Eigen::VectorXd flat = flattened(set);
     message.push_back(double(set.rows()));
-    message.insert(message.end(), set.data(), set.data() + set.size());
+    message.insert(message.end(), flat.begin(), flat.end());
   }
   return message;
 }
@@ -296,18 +297,18 @@ std::vector<PointSet> point_sets_from_message(const std::vector<double>& message
   std::vector<PointSet> sets;
   for (std::size_t at = 0; at < message.size();) {
     const Eigen::Index rows = Eigen::Index(message[at]);
-    sets.emplace_back(Eigen::Map<const PointSet>(message.data() + at + 1, rows, 3));
+    sets.push_back(unflattened(Eigen::Map<const Eigen::VectorXd>(message.data() + at + 1, 3 * rows)));
     at += 1 + std::size_t(3 * rows);
   }
   return sets;
 }
 
-// Every owned shape's first pose: its fit onto the
-// template where that leaves one pose open, else the one of those the
-// population prefers (PoseCandidates: every process gathers every shape's
-// candidates, each owner measures its shapes' distances, every process
-// makes the same choices). A shape `turned_by_body` keeps its fit's pose
-// (choose_body_turns turns it later).
+// Every owned shape's first pose: its fit onto the template where that
+// leaves one pose open, else the one of those the population prefers
+// (PoseCandidates: every process gathers the candidates, each owner
+// measures its shapes' distances, every process makes the same choices). A
+// shape `turned_by_body` keeps its fit's pose (choose_body_turns turns it
+// later).
 std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const std::vector<std::optional<SurfaceMesh>>& meshes,
                                        ShapeShare& share, const Similarity& template_frame,
                                        const PointSet& template_points, const std::vector<char>& turned_by_body) {

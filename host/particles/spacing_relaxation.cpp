@@ -92,13 +92,6 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
   return straight_cover(mesh, normals, at, facing);
 }
 
-double straight_cover(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles,
-                      const std::vector<Vec3>& particle_normals) {
-  std::vector<Vec3> at;
-  for (const SurfaceLocation& particle : particles) at.push_back(particle.at);
-  return straight_cover(mesh, vertex_normals(mesh), at, particle_normals);
-}
-
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
                                 std::size_t max_rounds, const std::vector<double>& cover_limits,
                                 double start_geodesic_cover, bool quiet) {

@@ -45,9 +45,6 @@ struct RelaxationOutcome {
 // relaxation measures its candidates' (a few tens of milliseconds on a
 // million vertices).
 double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles);
-// The same of particles on the surface, each facing `particle_normals`' way.
-double straight_cover(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles,
-                      const std::vector<Vec3>& particle_normals);
 
 // From particles on the vertices `start` of `mesh`, at most `max_rounds`
 // rounds (0: the start as it is): first kFoamRounds pushing for a radius a
