@@ -363,8 +363,8 @@ set_tests_properties(cli.input_files PROPERTIES LABELS "fast;device" TIMEOUT 120
 add_test(NAME cli.shape_model COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/shape_model.sh $<TARGET_FILE:meshparticles>
                                       ${CMAKE_CURRENT_BINARY_DIR}/shape_model)
 set_tests_properties(cli.shape_model PROPERTIES LABELS fast)
-# correspond: a mesh and two copies moved, turned, scaled (one renumbered):
-# every particle on its own vertex on each copy.
+# correspond: a mesh and three copies moved, turned, scaled (one renumbered, one rounded):
+# every particle where it lies on the mesh (within 1% of the spacing) on each copy.
 add_test(NAME cli.correspond COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
                                      ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond)
 set_tests_properties(cli.correspond PROPERTIES LABELS fast)
