@@ -355,6 +355,11 @@ set_tests_properties(cli.address_space_opencl cli.address_space_serial cli.pocl_
 # of address space): label `rlimit`, which scripts/sanitize.sh leaves out.
 set_tests_properties(cli.address_space_opencl cli.address_space_serial cli.address_space_dense_table
                      PROPERTIES LABELS "fast;device;rlimit")
+# What a run decides does not hang on the machine's free memory, or the run
+# says so (the distance store auto picks; spread's working mesh cap).
+add_test(NAME cli.machine_rules COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/machine_rules.sh $<TARGET_FILE:meshparticles> ${SPHERE}
+                                        ${CMAKE_CURRENT_BINARY_DIR}/machine_rules)
+set_tests_properties(cli.machine_rules PROPERTIES LABELS "fast;rlimit" TIMEOUT 300)
 # Files that are not regular files (FIFOs) refused at once by every reader.
 add_test(NAME cli.input_files COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/input_files.sh $<TARGET_FILE:meshparticles> ${TETRA}
                                       ${CMAKE_CURRENT_BINARY_DIR}/input_files)

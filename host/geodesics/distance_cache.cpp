@@ -191,17 +191,6 @@ void store_cached_table(const std::filesystem::path& file, const CacheKey& key, 
       true);
 }
 
-bool table_is_cached(const SurfaceMesh& mesh, const GeodesicsRequest& request) {
-  if (!request.cache_directory || cache_directory_problem(*request.cache_directory)) return false;
-  const CacheKey key{mesh_content_hash(mesh), std::uint32_t(mesh.vertex_count()), request.method};
-  const std::filesystem::path file = key.file_in(*request.cache_directory);
-  std::error_code error;
-  if (!std::filesystem::exists(file, error) || cache_file_problem(file)) return false;
-  std::ifstream in(file, std::ios::binary);
-  std::string problem;
-  return in && matching_header(in, file, key, problem).has_value();
-}
-
 DistanceTable load_or_compute_distances(const SurfaceMesh& mesh, const GeodesicsRequest& request,
                                         TableSource& source) {
   source = {};

@@ -58,11 +58,6 @@ struct GeodesicsRequest {
   std::string device;  // --device: where fim solves local balls
 };
 
-// Whether the cache holds what looks like this mesh's table (header and size
-// right; the checksum is read only when it is loaded): a quick look, for
-// choosing the dense store when its table costs nothing to get.
-bool table_is_cached(const SurfaceMesh& mesh, const GeodesicsRequest& request);
-
 // The table from the cache when it holds a valid one, else computed and
 // stored. The directory is created 0700; one that is not this user's, or
 // that others can write, is not used, and a file in it that is not this

@@ -190,13 +190,17 @@ RefinedMesh refine_by_midpoints_then_long_edges(const SurfaceMesh& input, unsign
     return distance(refiner.positions()[a], refiner.positions()[b]) > longest;
   };
   unsigned rounds = levels;
+  bool stopped_at_cap = false;
   while (true) {
     const std::size_t splits = refiner.count_edges(too_long);
-    if (splits == 0 || refiner.vertex_count() + splits > max_vertices) break;
+    stopped_at_cap = splits != 0 && refiner.vertex_count() + splits > max_vertices;
+    if (splits == 0 || stopped_at_cap) break;
     refiner.split_round(too_long);
     ++rounds;
   }
-  return refiner.finish(rounds);
+  RefinedMesh refined = refiner.finish(rounds);
+  refined.stopped_at_cap = stopped_at_cap;
+  return refined;
 }
 
 }  // namespace meshparticles

@@ -24,6 +24,9 @@ struct RefinedMesh {
   SurfaceMesh mesh;
   unsigned levels = 0;  // rounds of splitting
   std::vector<SurfaceLocation> on_input;  // per vertex of `mesh`: where it lies on the input
+  // refine_by_midpoints_then_long_edges stopped with edges still longer than
+  // asked: the next round would have passed its vertex cap.
+  bool stopped_at_cap = false;
 };
 
 // `levels` rounds of midpoint subdivision. At 0, the input itself (copied).

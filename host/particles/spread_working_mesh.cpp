@@ -9,10 +9,12 @@ namespace meshparticles {
 
 WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particles, double vertices_per_particle) {
   WorkingMeshPlan plan;
-  plan.max_vertices = std::max(
-      std::size_t(std::min(double(kSpreadMaxWorkingVertices),
-                           0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex)),
-      input.vertex_count());
+  const double memory_holds = 0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex;
+  plan.max_vertices =
+      std::max(std::size_t(std::min(double(kSpreadMaxWorkingVertices), memory_holds)), input.vertex_count());
+  if (memory_holds < double(kSpreadMaxWorkingVertices) && input.vertex_count() < kSpreadMaxWorkingVertices) {
+    plan.cap_set_by_memory = usable_host_memory_name();
+  }
   while (double(refined_vertex_count(input, plan.levels)) < vertices_per_particle * double(particles) &&
          refined_vertex_count(input, plan.levels + 1) <= plan.max_vertices) {
     ++plan.levels;

@@ -8,6 +8,7 @@
 // on the same mesh.
 #include <cstddef>
 #include <optional>
+#include <string>
 
 #include "mesh/midpoint_refinement.hpp"
 
@@ -24,7 +25,9 @@ inline constexpr double kSpreadLongestEdge = 0.5;
 // At most this many vertices (time grows with them: the 1M sphere at
 // n = 100,000 takes 4M, 101 s against 31 s unrefined, for rho 0.78 against
 // 0.69), or half the usable memory at this many bytes a vertex (measured
-// peak of that run: 4.46 GB for 3,994,242 vertices).
+// peak of that run: 4.46 GB for 3,994,242 vertices). Only where memory sets
+// the cap and the cap cuts the mesh short do a run's particles depend on the
+// machine: the run says so on stderr and in report.json.
 inline constexpr std::size_t kSpreadMaxWorkingVertices = 5'000'000;
 inline constexpr double kSpreadBytesPerWorkingVertex = 1200;
 
@@ -32,6 +35,9 @@ struct WorkingMeshPlan {
   unsigned levels = 0;             // midpoint rounds everywhere
   double longest_edge = 0;         // then split edges longer than this (mesh units)
   std::size_t max_vertices = 0;    // the cap, at least the input's vertices
+  // What set the cap: empty for kSpreadMaxWorkingVertices (or the input's
+  // size), else the memory that did (memory_guard's name for it).
+  std::string cap_set_by_memory;
   // Fewer vertices than the particles asked for: the next round would pass the cap.
   bool capped = false;
 };

@@ -53,12 +53,12 @@ DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& re
                              bool backend_needs_dense) {
   DistancesPlan plan;
   const std::uint64_t usable = usable_host_memory_bytes();
-  const double table_bytes = double(mesh.vertex_count()) * double(mesh.vertex_count()) * sizeof(float);
   plan.kind = request.kind;
   if (plan.kind == StoreKind::automatic) {
-    const bool fits = table_bytes <= 0.25 * double(usable);
-    const bool cheap = mesh.vertex_count() <= kAutoDenseVertices || table_is_cached(mesh, request.geodesics);
-    plan.kind = backend_needs_dense || (fits && cheap) ? StoreKind::dense : StoreKind::local;
+    // By the mesh alone, never by this machine's free memory or cache: the
+    // two stores need not make the same moves, and a run's particles must
+    // not depend on where it ran. A table that does not fit is refused below.
+    plan.kind = backend_needs_dense || mesh.vertex_count() <= kAutoDenseVertices ? StoreKind::dense : StoreKind::local;
   }
   if (plan.kind == StoreKind::dense) {
     check_table_fits(mesh.vertex_count(), sizeof(float), usable, "distance table", usable_host_memory_name(),

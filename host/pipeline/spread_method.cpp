@@ -37,7 +37,8 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   SpreadPlan& spread = plan.spread.emplace();
   spread.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
   spread.working_mesh = plan_working_mesh(mesh, request.particles, spread.vertices_per_particle);
-  if (spread.working_mesh.capped && request.vertices_per_particle && !request.quiet) {
+  if (spread.working_mesh.capped && spread.working_mesh.cap_set_by_memory.empty() && request.vertices_per_particle &&
+      !request.quiet) {
     std::cerr << "meshparticles: warning: --vertices-per-particle " << format_number("%g", spread.vertices_per_particle)
               << " asks for " << format_number("%.3g", spread.vertices_per_particle * double(request.particles))
               << " vertices; the working mesh stops at "
@@ -127,6 +128,23 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
 
 }  // namespace
 
+namespace {
+
+// Where this machine's memory cut the working mesh short, the particles
+// differ from a run on a machine with more: said, not silent.
+void warn_of_memory_cap(const RunPlan& plan, const RefinedMesh& working) {
+  const WorkingMeshPlan& planned = plan.spread->working_mesh;
+  if (planned.cap_set_by_memory.empty() || plan.request.quiet) return;
+  std::cerr << "meshparticles: warning: " << plan.request.mesh_label << ": the working mesh stops at "
+            << working.mesh.vertex_count() << " vertices, short of the resolution asked ("
+            << format_number("%g", plan.spread->vertices_per_particle) << " vertices per particle, no edge over "
+            << format_number("%g", kSpreadLongestEdge) << " spacings): half the memory usable here (set by "
+            << planned.cap_set_by_memory << ") holds " << planned.max_vertices
+            << "; with more memory the particles differ (report.json: working_mesh.vertex_cap_set_by)\n";
+}
+
+}  // namespace
+
 RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   RunResult result;
   result.plan = plan;
@@ -138,6 +156,8 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   auto working = naming_memory_failures(label, "refining the working mesh", [&] {
     return std::make_shared<RefinedMesh>(build_working_mesh(mesh, plan.spread->working_mesh));
   });
+  details.working_mesh_cut_short = plan.spread->working_mesh.capped || working->stopped_at_cap;
+  if (details.working_mesh_cut_short) warn_of_memory_cap(plan, *working);
   const std::shared_ptr<RefinedMesh> swept = working;  // the solver's mesh, kept while it lives
   const SurfaceMesh& surface = swept->mesh;
   const auto solver = make_geodesic_solver(surface, plan.march_method);

@@ -65,6 +65,9 @@ struct SpreadDetails {
   // The mesh the particles live on, the input refined; the result's
   // positions, start and distance_to_nearest are on it.
   std::shared_ptr<const RefinedMesh> working;
+  // The working mesh as built (before points are inserted) has fewer
+  // vertices than asked: its cap cut it short (WorkingMeshPlan says what set it).
+  bool working_mesh_cut_short = false;
   std::vector<SweepRecord> sweeps;
   RelaxationOutcome relaxation;           // the kept candidate's points are inserted into `working`
   std::optional<EveningOutcome> evening;  // unless --relax-rounds 0 (its points are inserted into `working`)

@@ -141,14 +141,20 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
   double ms_sum = 0;
   for (const SweepRecord& sweep : spread.sweeps) ms_sum += sweep.ms;
   const SurfaceMesh& working = spread.working->mesh;
+  const WorkingMeshPlan& planned = result.plan.spread->working_mesh;
   nlohmann::json report = {
       {"version", program_version()},
       {"mesh", mesh_json(mesh, result, mesh_sha256)},
       {"working_mesh", {{"refinement_rounds", spread.working->levels},
-                        {"longest_edge", result.plan.spread->working_mesh.longest_edge},
+                        {"longest_edge", planned.longest_edge},
                         {"vertices", working.vertex_count()},
                         {"faces", working.triangle_count()},
-                        {"vertices_per_particle", double(working.vertex_count()) / double(result.plan.request.particles)}}},
+                        {"vertices_per_particle", double(working.vertex_count()) / double(result.plan.request.particles)},
+                        {"vertex_cap", planned.max_vertices},
+                        {"vertex_cap_set_by", planned.cap_set_by_memory.empty()
+                                                  ? "the vertex limit"
+                                                  : "memory: half of what may be used, set by " + planned.cap_set_by_memory},
+                        {"cut_short", spread.working_mesh_cut_short}}},
       {"params", run_parameters(result.plan, out)},
       {"device", result.device},
       {"distances", distances_json(result)},
