@@ -16,6 +16,7 @@
 #include "correspondence/body_turn.hpp"
 #include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/joint_refinement.hpp"
+#include "correspondence/population_doubts.hpp"
 #include "correspondence/pose_consensus.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
@@ -247,38 +248,9 @@ void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& par
 // torus's hole has no match on a sphere), and the model's modes describe
 // the mismatch; a shape whose pose another fits almost as well may lie turned.
 void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
-  const MeshTopology template_topology = population.shapes.front().topology;  // the template is shape 0
-  const auto warn = [&](std::string line) {
+  for (std::string& line : population_doubts(population.shapes)) {
     if (!quiet) std::cerr << "meshparticles: warning: " << line << "\n";
     population.warnings.push_back(std::move(line));
-  };
-  for (const ShapeCorrespondence& shape : population.shapes) {
-    if (shape.topology != template_topology) {
-      warn(shape.mesh.string() + " (" + describe(shape.topology) + ") is not of the template's topology (" +
-           describe(template_topology) +
-           "): its particles cannot match the template's everywhere, and the model's modes describe the mismatch");
-    }
-    const MeshAlignment::RunnerUp& runner_up = shape.alignment.runner_up;
-    const double population_ratio = shape.alignment.population_ratio;
-    if (population_ratio > 0) {
-      // The population chose among the poses the fit left open.
-      if (population_ratio * kAmbiguousPoseRatio > 1) {
-        warn(shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
-             " degrees from the one chosen is " +
-             (population_ratio < 1 ? format_number("only %.1f%% farther from", 100 * (1 / population_ratio - 1))
-                                   : format_number("%.1f%% nearer", 100 * (1 - 1 / population_ratio))) +
-             " the other shapes: the population barely tells them apart, and its particles may lie turned "
-             "(fit_population_ratio in summary.json)");
-      }
-    } else if (runner_up.rms_ratio < kAmbiguousPoseRatio) {
-      const double ratio = runner_up.rms_ratio;
-      warn(shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
-           " degrees from the one chosen fits the template " +
-           (ratio < 0.9995 ? format_number("%.1f%% better", 100 * (1 - ratio))
-                           : format_number("within %.1f%%", std::max(0.0, 100 * (ratio - 1)))) +
-           ": the shape's geometry barely tells them apart, and its particles may lie turned (fit_runner_up in "
-           "summary.json)");
-    }
   }
 }
 

@@ -30,9 +30,8 @@ struct PopulationRequest {
 
 struct PopulationCorrespondence {
   DistributionQuality template_quality;  // its own run's (on the leader)
-  // What the result cannot promise, a line each (on stderr too): a shape of
-  // another topology than the template's (shapes.front()), a pose another fits
-  // almost as well.
+  // What the result cannot promise, a line each (on stderr too):
+  // population_doubts.
   std::vector<std::string> warnings;
   std::vector<ShapeCorrespondence> shapes;
   JointRefinementRecord refinement;
