@@ -50,7 +50,7 @@ def parameters(points, shape, population):
     rotation = np.array(shape["rotation"])
     axes = np.array(shape["axes"])
     unposed = (points - np.array(shape["translation"])) @ rotation / shape["scale"]
-    if population.get("family") == "bent":
+    if population.get("family") in ("bent", "bent-either"):
         return bent_parameters(unposed, shape, population)
     u = unposed / axes
     u /= np.linalg.norm(u, axis=1, keepdims=True)
@@ -65,15 +65,20 @@ def bent_parameters(unposed, shape, population):
     """The bent family's parameters: each unposed point unbent off its arc onto the straight body, whose
     parameter is the ellipsoid families' (population.json's "parameter" and "surface" say how)."""
     axes, bend_radius = np.array(shape["axes"]), shape["bend_radius"]
+    # A body bent towards -x is the body turned half round its long axis,
+    # bent towards +x and turned back (proper rotations: the bumps keep
+    # their side).
+    turn_half = np.array([-1.0, -1.0, 1.0]) if shape.get("bend_side", 1) < 0 else np.ones(3)
+    unposed = unposed * turn_half
     across = np.hypot(unposed[:, 0] - bend_radius, unposed[:, 2])
     angle = np.arctan2(unposed[:, 2], bend_radius - unposed[:, 0])
-    straight = np.stack([bend_radius - across, unposed[:, 1], bend_radius * angle], axis=1)
+    straight = np.stack([bend_radius - across, unposed[:, 1], bend_radius * angle], axis=1) * turn_half
     u = straight / axes
     u /= np.linalg.norm(u, axis=1, keepdims=True)
     radius = 1 - shape["waist_depth"] * np.exp(-(u[:, 2] / population["waist_width"]) ** 2)
     for bump, height in zip(population["bumps"], shape["bump_heights"]):
         radius += height * np.exp(-(1 - u @ np.array(bump["direction"])) / bump["width"])
-    on_straight = radius[:, None] * axes * u
+    on_straight = radius[:, None] * axes * u * turn_half
     turn = on_straight[:, 2] / bend_radius
     on_surface = np.stack([bend_radius - (bend_radius - on_straight[:, 0]) * np.cos(turn), on_straight[:, 1],
                            (bend_radius - on_straight[:, 0]) * np.sin(turn)], axis=1)

@@ -4,7 +4,8 @@
 # What: the correspondence measures of `meshparticles correspond` on every test
 # population with a known map, at each N (default 256 512 1024), in one table:
 #   - radii, seed 5 and seed 6; the ellipsoid family, seed 5; bent, seed 5
-#     and seed 6 (`generate --population 12 --family F --vertices 2000 --seed S`);
+#     and seed 6; bent-either (bent to either side), seed 5
+#     (`generate --population 12 --family F --vertices 2000 --seed S`);
 #   - FAUST (pose 0 of 10 people, scripts/faust_population.sh) where
 #     $FAUST_REPO names a copy of llorz/SGA18_orientation_BCICP_dataset;
 #     without it, a line says it is skipped (the data is never fetched here).
@@ -25,7 +26,7 @@
 # (pure numpy: about 20 minutes a population at n = 256 on 2 cores);
 # SCOREBOARD_CPD=0 leaves it out (its columns read "-"), and
 # SCOREBOARD_POPULATIONS picks populations (default "radii5 radii6 ellipsoid5
-# bent5 bent6 faust"). Progress on stderr; the table on stdout and in
+# bent5 bent6 either5 faust"). Progress on stderr; the table on stdout and in
 # OUT_DIR/scoreboard.md, every figure in OUT_DIR/scoreboard.json.
 # Why: the targets of docs/CORRESPONDENCE.md (spread median 0.3 and 90th percentile 0.6, no
 # shape over 1 spacing off, rho 0.7, cover 1.15x, better than CPD) checked on
@@ -38,7 +39,7 @@ out=${1:?usage: correspondence_scoreboard.sh OUT_DIR [N...]}
 shift
 ns=("$@")
 [ ${#ns[@]} -gt 0 ] || ns=(256 512 1024)
-populations=${SCOREBOARD_POPULATIONS:-radii5 radii6 ellipsoid5 bent5 bent6 faust}
+populations=${SCOREBOARD_POPULATIONS:-radii5 radii6 ellipsoid5 bent5 bent6 either5 faust}
 [ -x "$bin" ] || { echo "build first: scripts/setup.sh" >&2; exit 2; }
 mkdir -p "$out"
 say() { echo "scoreboard: $*" >&2; }
@@ -54,6 +55,7 @@ make_population() {
     ellipsoid5) "$bin" generate --population 12 --family ellipsoid --vertices 2000 --seed 5 --out-dir "$dir/shapes" 2>/dev/null ;;
     bent5) "$bin" generate --population 12 --family bent --vertices 2000 --seed 5 --out-dir "$dir/shapes" 2>/dev/null ;;
     bent6) "$bin" generate --population 12 --family bent --vertices 2000 --seed 6 --out-dir "$dir/shapes" 2>/dev/null ;;
+    either5) "$bin" generate --population 12 --family bent-either --vertices 2000 --seed 5 --out-dir "$dir/shapes" 2>/dev/null ;;
     faust)
       if [ -z "${FAUST_REPO:-}" ] || [ ! -e "$FAUST_REPO" ]; then
         say "faust: skipped, no data (set FAUST_REPO to a copy of llorz/SGA18_orientation_BCICP_dataset)"
@@ -121,7 +123,8 @@ import numpy as np
 
 out, populations, ns = Path(sys.argv[1]), sys.argv[2].split(), [int(n) for n in sys.argv[3:]]
 LABELS = {"radii5": "radii, seed 5", "radii6": "radii, seed 6", "ellipsoid5": "ellipsoid family, seed 5",
-          "bent5": "bent, seed 5", "bent6": "bent, seed 6", "faust": "FAUST, 10 people"}
+          "bent5": "bent, seed 5", "bent6": "bent, seed 6",
+          "either5": "bent either way, seed 5", "faust": "FAUST, 10 people"}
 
 
 def quality(file):

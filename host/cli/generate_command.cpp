@@ -66,7 +66,8 @@ nlohmann::json bent_truth(const std::string& file, const BentBody& shape) {
                           {"waist_depth", shape.waist_depth},
                           {"bump_heights", shape.bump_heights},
                           {"bend_angle", shape.bend_angle},
-                          {"bend_radius", shape.bend_radius}};
+                          {"bend_radius", shape.bend_radius},
+                          {"bend_side", shape.bend_side}};
   truth.update(pose_truth(shape.pose));
   return truth;
 }
@@ -85,16 +86,18 @@ nlohmann::json ellipsoid_population(const nlohmann::json& shapes, std::uint64_t 
           {"shapes", shapes}};
 }
 
-nlohmann::json bent_population(const nlohmann::json& shapes, std::uint64_t seed) {
+nlohmann::json bent_population(const nlohmann::json& shapes, std::uint64_t seed, const std::string& family) {
   nlohmann::json bumps = nlohmann::json::array();
   for (const BentBodyBump& bump : kBentBodyBumps) bumps.push_back({{"direction", vec_json(bump.direction)}, {"width", bump.width}});
-  return {{"family", "bent"},
-          {"parameter", "u = normalize(diag(axes)^-1 s), s = (R - |q|, q_y, R atan2(q_z, -q_x)), q = x - (R, 0, 0), "
-                        "R = bend_radius, x = rotation^T (world - translation) / scale"},
+  return {{"family", family},
+          {"parameter", "u = normalize(diag(axes)^-1 s), s = T (R - |q|, q_y, R atan2(q_z, -q_x)), q = T x - (R, 0, 0), "
+                        "R = bend_radius, x = rotation^T (world - translation) / scale, T = diag(-1, -1, 1) where "
+                        "bend_side is -1, else the identity"},
           {"surface", "x(u) = bend(s(u)), s(u) = (1 - waist_depth exp(-(u_z / waist_width)^2) + sum_k bump_heights[k] "
                       "exp(-(1 - u.bumps[k].direction) / bumps[k].width)) diag(axes) u, bend(s) = (R - (R - s_x) "
-                      "cos(s_z / R), s_y, (R - s_x) sin(s_z / R)), each shape with its axes, waist_depth, "
-                      "bump_heights and bend_radius (R = 2 axes_z / bend_angle)"},
+                      "cos(s_z / R), s_y, (R - s_x) sin(s_z / R)) where bend_side is 1, T bend(T s) where it is -1, each "
+                      "shape with its axes, waist_depth, bump_heights, bend_radius (R = 2 axes_z / bend_angle) and "
+                      "bend_side"},
           {"waist_width", kBentBodyWaistWidth},
           {"bumps", bumps},
           {"seed", seed},
@@ -113,8 +116,9 @@ void write_population(const GenerateOptions& options) {
     std::snprintf(name, sizeof name, "%s_%03zu.off", options.family.c_str(), i);
     if (options.family == "atrium") {
       write_generated(generate_atrium_variant(shape_seeds.next(), vertices), out / name);
-    } else if (options.family == "bent") {
-      const BentBody shape = generate_bent_body(shape_seeds.next(), vertices);
+    } else if (options.family == "bent" || options.family == "bent-either") {
+      const BentBody shape = generate_bent_body(shape_seeds.next(), vertices,
+                                                options.family == "bent" ? BendSides::one : BendSides::either);
       write_generated(shape.mesh, out / name);
       shapes.push_back(bent_truth(name, shape));
     } else {
@@ -125,8 +129,9 @@ void write_population(const GenerateOptions& options) {
     }
   }
   if (options.family != "atrium") {
-    const nlohmann::json truth = options.family == "bent" ? bent_population(shapes, options.seed)
-                                                          : ellipsoid_population(shapes, options.seed, options.family);
+    const bool bent = options.family == "bent" || options.family == "bent-either";
+    const nlohmann::json truth = bent ? bent_population(shapes, options.seed, options.family)
+                                      : ellipsoid_population(shapes, options.seed, options.family);
     write_file_atomically(out / "population.json", [&](std::ostream& stream) { stream << json_text(truth, 2) << "\n"; });
     std::cerr << "wrote " << (out / "population.json").string() << " (each shape's parameters and pose)\n";
   }
@@ -172,10 +177,11 @@ void add_generate_command(CLI::App& app) {
                        "ellipsoid (two true modes, each meshed on its own and posed at random, with the true "
                        "correspondence in population.json; for correspond), radii (as ellipsoid, each radius "
                        "within 20% of 1.25, 1, 0.8 so their order swaps, and a knob of its own height, at times "
-                       "none: shapes whose principal axes cannot pose them) or bent (elongated bodies bent 30 to "
+                       "none: shapes whose principal axes cannot pose them), bent (elongated bodies bent 30 to "
                        "90 degrees, with a waist and three small bumps, posed at random: each shape all but its "
-                       "own half turn, only the bumps telling the two poses apart)")
-      ->check(CLI::IsMember({"atrium", "ellipsoid", "radii", "bent"}))
+                       "own half turn, only the bumps telling the two poses apart) or bent-either (as bent, each "
+                       "bent to either side: a mode that goes both ways around a nearly straight mean)")
+      ->check(CLI::IsMember({"atrium", "ellipsoid", "radii", "bent", "bent-either"}))
       ->capture_default_str();
   add_whole_number_option(*generate, "--seed", options->seed, kSeedRange, "Seed of the --population");
   generate->callback([options] { run_generate(*options); });

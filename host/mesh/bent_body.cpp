@@ -24,6 +24,10 @@ struct BentShape {
   double waist_depth;
   std::array<double, 3> bump_heights;
   double bend_radius;
+  int bend_side = 1;
+
+  // T = diag(-1, -1, 1) for a body bent towards -x (its own inverse).
+  Vec3 sided(Vec3 x) const { return bend_side > 0 ? x : Vec3{-x.x, -x.y, x.z}; }
 
   Vec3 straight_point(Vec3 u) const {
     double r = 1 - waist_depth * std::exp(-(u.z / kBentBodyWaistWidth) * (u.z / kBentBodyWaistWidth));
@@ -43,17 +47,17 @@ struct BentShape {
     return {bend_radius - std::hypot(qx, x.z), x.y, bend_radius * std::atan2(x.z, -qx)};
   }
 
-  Vec3 surface_point(Vec3 u) const { return bend(straight_point(normalized(u))); }
+  Vec3 surface_point(Vec3 u) const { return sided(bend(sided(straight_point(normalized(u))))); }
 
   Vec3 parameter_of(Vec3 x) const {
-    const Vec3 s = unbend(x);
+    const Vec3 s = sided(unbend(sided(x)));
     return normalized({s.x / axes.x, s.y / axes.y, s.z / axes.z});
   }
 };
 
 }  // namespace
 
-BentBody generate_bent_body(std::uint64_t seed, std::size_t vertices) {
+BentBody generate_bent_body(std::uint64_t seed, std::size_t vertices, BendSides sides) {
   SplitMix64 random(seed);
   BentShape shape{};
   shape.axes = {0.5 * uniform_in(random, 0.9, 1.1), 0.5 * uniform_in(random, 0.9, 1.1),
@@ -62,14 +66,15 @@ BentBody generate_bent_body(std::uint64_t seed, std::size_t vertices) {
   for (double& height : shape.bump_heights) height = uniform_in(random, 0.05, 0.2);
   const double bend_angle = uniform_in(random, 30, 90) * std::numbers::pi / 180;
   shape.bend_radius = 2 * shape.axes.z / bend_angle;
+  if (sides == BendSides::either) shape.bend_side = random.uniform() < 0.5 ? -1 : 1;
   // The mesh's vertices placed by their parameter (the length's stretch
   // shared with the girth's, not piled at the middle as a central
   // projection would), and any point projected through its parameter.
   PosedShape posed = mesh_and_pose_shape(
       random, vertices, [&shape](Vec3 u) { return shape.surface_point(u); },
       [&shape](Vec3 x) { return shape.surface_point(shape.parameter_of(x)); });
-  return {std::move(posed.mesh), shape.axes, shape.waist_depth, shape.bump_heights, bend_angle, shape.bend_radius,
-          posed.pose};
+  return {std::move(posed.mesh), shape.axes,         shape.waist_depth, shape.bump_heights, bend_angle,
+          shape.bend_radius,       shape.bend_side, posed.pose};
 }
 
 }  // namespace meshparticles

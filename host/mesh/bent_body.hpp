@@ -17,6 +17,12 @@
 // Without its bumps a shape is its own turn half round about x (u to
 // (u_x, -u_y, -u_z)); only the bumps, small and of each shape's own height,
 // tell the true pose from that one.
+//
+// Bent either way (`--family bent-either`), half the shapes bend towards -x:
+// the straight body turned half round its long axis (T = diag(-1, -1, 1)),
+// bent as above and turned back, x = T bend(T s), so the bumps keep their
+// side. The population's mean is then nearly straight, and its bend a mode
+// that goes both ways around it, as real populations' modes do.
 #include <array>
 #include <cstdint>
 
@@ -38,12 +44,15 @@ struct BentBody {
   std::array<double, 3> bump_heights{};
   double bend_angle = 0;  // radians, the whole axis's turn
   double bend_radius = 0;
+  int bend_side = 1;  // +1: towards +x; -1: towards -x, x = T bend(T s)
   ShapePose pose;
 };
 
 // Each across radius within 10% of 0.5 (their order swaps), the long one
 // within 10% of 1.5, the waist 0.1 to 0.35 deep, each bump 0.05 to 0.2 high,
-// the bend 30 to 90 degrees; about `vertices` vertices.
-BentBody generate_bent_body(std::uint64_t seed, std::size_t vertices);
+// the bend 30 to 90 degrees; about `vertices` vertices. Bent either way,
+// each shape draws its side too (the one-way family's shapes unchanged).
+enum class BendSides { one, either };
+BentBody generate_bent_body(std::uint64_t seed, std::size_t vertices, BendSides sides = BendSides::one);
 
 }  // namespace meshparticles
