@@ -34,9 +34,9 @@ constexpr const char* kOtherRequest = "its header names another request";
 EntryCheck check_entry(const std::filesystem::path& file, const std::string& name, const std::string& request) {
   // Not followed: an entry is a file we wrote, never a link, a folder or a FIFO.
   std::error_code error;
-  if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(file, error))) {
-    return {std::nullopt, "it is not a file"};
-  }
+  const std::filesystem::file_status status = std::filesystem::symlink_status(file, error);
+  if (!std::filesystem::exists(status)) return {std::nullopt, "it is missing"};
+  if (!std::filesystem::is_regular_file(status)) return {std::nullopt, "it is not a file"};
   std::ifstream in(file, std::ios::binary);
   if (!in) return {std::nullopt, "it cannot be read"};
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
