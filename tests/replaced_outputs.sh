@@ -15,7 +15,10 @@
 #   leftovers  temporaries inside --out (and beside it) named with another
 #              host and a living PID (this shell's), or with this host and
 #              PID 1 (a run that was PID 1 of its container): the rerun of
-#              correspond and of batch removes them and goes on
+#              correspond and of batch removes them and goes on; a set that
+#              a swap without exchange retired on another host, --out gone,
+#              is put back (correspond resumes from its checkpoint, batch
+#              keeps the folder)
 set -euo pipefail
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0"
 bin=$1 shim=$2 disk_shim=$3 meshes=$4 work=$5
@@ -135,6 +138,20 @@ cp -r "$work/old/shapes" "$out/.shapes.old-$other-$$-4"
 [ "$(which_set "$out" "correspond, leftovers")" = new ] || fail "correspond, leftovers: not the new set"
 no_temporaries "correspond, another host's leftovers"
 echo "ok: correspond: leftovers of another host, a living PID and PID 1 removed; the run went on"
+# A swap without exchange (NFS) killed between its renames on another node:
+# --out gone, the old set and its whole checkpoint retired beside it. The
+# rerun puts them back and goes on from the checkpoint.
+out="$work/retired"
+cp -r "$work/old" "$out"
+KILL_AT_RENAME="$out" KILL_AT_RENAME_WHEN=before LD_PRELOAD="$shim" \
+  bash -c '"$@"; exit $?' _ "$bin" correspond "${new_options[@]}" --out "$out" > /dev/null 2>&1 || true
+[ -f "$out/checkpoint/packed.json" ] || fail "retired: no whole checkpoint to retire"
+mv "$out" "$work/.retired.old-$other-$$-0"
+"$bin" correspond "${new_options[@]}" --out "$out" > /dev/null 2> "$work/retired.log" || { cat "$work/retired.log"; fail "retired: the rerun"; }
+grep -q "resuming from" "$work/retired.log" || { cat "$work/retired.log"; fail "retired: the old set and checkpoint were not put back"; }
+[ "$(which_set "$out" "retired")" = new ] || fail "retired: not the new set"
+no_temporaries "correspond, a retired set of another host"
+echo "ok: correspond: a set another host retired put back, its checkpoint resumed"
 out="$work/batch_leftovers"
 cp -r "$work/batch_new" "$out"
 mkdir "$out/.sphere.tmp-$other-$$-0" "$out/.torus.tmp-$host-1-1"

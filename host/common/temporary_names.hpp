@@ -29,9 +29,10 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& destination
                                         TemporaryKind kind = TemporaryKind::staging);
 
 // Removes the stale temporaries in `directory` (with `destination`, only
-// those of the output set of that name); a stale retired output set whose destination is
-// missing (killed between the two renames of a swap) is put back instead.
-// Errors are ignored: clean-up is best effort and must not stop the work.
+// those of the output set of that name); a stale retired output set whose
+// destination is missing (killed between the two renames of a swap) is put
+// back instead. Errors are ignored: clean-up is best effort and must not
+// stop the work.
 void remove_stale_temporaries(const std::filesystem::path& directory, Writers writers = Writers::anyone,
                               const std::string& destination = "");
 
