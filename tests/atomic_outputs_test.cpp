@@ -99,6 +99,52 @@ TEST_F(AtomicOutputsTest, StaleTemporariesOfDeadProcessesAreRemovedOthersKept) {
   EXPECT_EQ(read(root / "gone" / "a.txt"), "kept");
 }
 
+// Under the directory's lock (common/directory_lock) no writer of it is
+// alive: every temporary is stale, whatever host or PID made it - another
+// node of a shared file system, a living PID of another PID namespace, or
+// PID 1 of a container (issue 61).
+TEST_F(AtomicOutputsTest, InALockedDirectoryEveryTemporaryIsStale) {
+  const std::string living = std::to_string(::getppid());  // alive, and not this process
+  const auto other_host = root / (".out.tmp-elsewhere-" + living + "-0");
+  const auto other_host_file = root / (".summary.tmp-elsewhere-" + living + "-1.json");
+  const auto first_of_a_container = root / ".shapes.tmp-elsewhere-1-2";
+  const auto users_file = root / ".notes.tmp";
+  for (const auto& path : {other_host, first_of_a_container}) std::filesystem::create_directories(path / "inside");
+  for (const auto& path : {other_host_file, users_file}) std::ofstream(path) << "x";
+  remove_stale_temporaries(root);
+  EXPECT_TRUE(std::filesystem::exists(other_host)) << "unlocked, another host's process may be alive";
+  remove_stale_temporaries(root, Writers::none);
+  EXPECT_FALSE(std::filesystem::exists(other_host));
+  EXPECT_FALSE(std::filesystem::exists(other_host_file));
+  EXPECT_FALSE(std::filesystem::exists(first_of_a_container));
+  EXPECT_TRUE(std::filesystem::exists(users_file)) << "not a name of ours";
+
+  // Beside a locked output set: only that set's temporaries.
+  const auto beside = root / (".out.old-elsewhere-" + living + "-3");
+  const auto other_set = root / (".other.tmp-elsewhere-" + living + "-4");
+  for (const auto& path : {beside, other_set}) std::filesystem::create_directories(path);
+  std::filesystem::create_directories(out);
+  remove_leftovers_beside(out);
+  EXPECT_FALSE(std::filesystem::exists(beside)) << "out is in place: its retired set goes";
+  EXPECT_TRUE(std::filesystem::exists(other_set)) << "another output set's";
+}
+
+// A swap without exchange killed between its renames on another host: the
+// set it retired comes back before the lock is taken.
+TEST_F(AtomicOutputsTest, ARetiredSetComesBackWhoeverRetiredIt) {
+  const auto retired = root / (".out.old-elsewhere-" + std::to_string(::getppid()) + "-0");
+  std::filesystem::create_directories(retired);
+  std::ofstream(retired / "a.txt") << "kept";
+  restore_retired_directory(out);
+  EXPECT_EQ(read(out / "a.txt"), "kept");
+  EXPECT_FALSE(std::filesystem::exists(retired));
+  // One in place is never replaced.
+  std::filesystem::create_directories(retired);
+  restore_retired_directory(out);
+  EXPECT_TRUE(std::filesystem::exists(retired));
+  EXPECT_EQ(read(out / "a.txt"), "kept");
+}
+
 TEST_F(AtomicOutputsTest, WritableChecksCreateAFile) {
   EXPECT_NO_THROW(check_writable(root / "file.csv"));
   EXPECT_EQ(entries_in(root), 0u) << "the probe is removed";

@@ -393,6 +393,13 @@ add_test(NAME cli.correspond_checkpoint
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_checkpoint.sh $<TARGET_FILE:meshparticles>
                  $<TARGET_FILE:kill_at_rename_shim> ${CMAKE_CURRENT_BINARY_DIR}/correspond_checkpoint)
 set_tests_properties(cli.correspond_checkpoint PROPERTIES LABELS slow TIMEOUT 900)
+# correspond and batch over an older complete set: killed at every write, a
+# full disk, leftovers of another host or PID namespace (docs/OUTPUTS.md).
+add_test(NAME cli.replaced_outputs
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/replaced_outputs.sh $<TARGET_FILE:meshparticles>
+                 $<TARGET_FILE:kill_at_rename_shim> $<TARGET_FILE:full_disk_shim> ${PROJECT_SOURCE_DIR}/meshes
+                 ${CMAKE_CURRENT_BINARY_DIR}/replaced_outputs)
+set_tests_properties(cli.replaced_outputs PROPERTIES LABELS "slow;device" TIMEOUT 600)
 if(MPI_CXX_FOUND)
   correspond_share_test(mpi ${MPIEXEC_EXECUTABLE})
 else()

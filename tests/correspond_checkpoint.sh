@@ -10,7 +10,10 @@
 #   damage   a checkpoint edited, cut short, moved or of another request: the
 #            run says it is damaged and starts anew; values that pass the
 #            digest yet no run could have written (an id past the mesh, a row
-#            short): one line, exit 2, the checkpoint removed; never a crash
+#            short, a particle count other than -n, weights outside [0, 1] or
+#            not summing to 1, an entry of another shape's mesh, two shapes'
+#            entries swapped): one line, exit 2, the checkpoint removed; an
+#            entry made a folder: damaged, run anew; never a crash
 #   lock     a second run into the --out of one in progress is refused in one
 #            line; the first ends with its own outputs
 set -euo pipefail
@@ -57,6 +60,7 @@ import hashlib, json, os, sys
 path, edit = sys.argv[1], sys.argv[2]
 lines = open(path).read().split("\n")[:2]
 values = json.loads(lines[1])
+rows = lambda v: v["locations"] if isinstance(v, dict) else v  # a stage's shape entry: its rows
 if edit != "pass":
     exec(edit)
     if "lines" not in edit:
@@ -78,11 +82,11 @@ anew() {  # anew WHAT
   [ "$status" -eq 137 ] || { cat "$out.log"; fail "$1: it did not start anew (exit $status)"; }
   echo "ok: $1: $(grep -o 'damaged (.*)' "$out.log")"
 }
-damaged packed/001.json 'values[5][0] = 99999999'
+damaged packed/001.json 'rows(values)[5][0] = 99999999'
 anew "a triangle id edited"
 damaged template.json 'values["particles"][0] = -5'
 anew "a template corner edited"
-damaged packed/001.json 'values = values[:-1]'
+damaged packed/001.json 'del rows(values)[-1]'
 anew "a row cut"
 damaged packed/001.json 'values = json.dumps(values).replace(",", ",,", 1)'
 anew "a number missing"
@@ -104,6 +108,12 @@ anew "an entry moved onto another shape's"
 damaged packed/001.json 'pass'
 touch "$work/damaged/checkpoint/notes.txt"
 anew "a file that is no entry"
+# An entry made a folder: damaged like any other, never an internal error.
+for name in template.json request.json packed.json packed/002.json; do
+  damaged packed/001.json 'pass'
+  rm "$work/damaged/checkpoint/$name" && mkdir "$work/damaged/checkpoint/$name"
+  anew "$name made a folder"
+done
 # The whole damaged run goes on to the reference's outputs.
 damaged transfer/002.json 'values["alignment"]["scale"] *= 2'
 "$bin" correspond "${options[@]}" --out "$work/damaged" > /dev/null 2> "$work/damaged.log"
@@ -120,22 +130,53 @@ refused() {  # refused WHAT PATTERN
   [ -e "$out/checkpoint" ] && fail "$1: the damaged checkpoint was kept"
   echo "ok: $1: $(cat "$out.log")"
 }
-FORGE=1 damaged packed/001.json 'values[5][0] = 99999999'
+FORGE=1 damaged packed/001.json 'rows(values)[5][0] = 99999999'
 refused "a forged triangle id" "triangle 99999999 of"
-FORGE=1 damaged packed/001.json 'values[5][0] = 2**32'
+FORGE=1 damaged packed/001.json 'rows(values)[5][0] = 2**32'
 refused "a forged triangle id of 2^32" "triangle 4294967296 of"
 FORGE=1 damaged template.json 'values["particles"][0] = -5'
 refused "a forged template corner" "vertex -5"
 FORGE=1 damaged template.json 'values["particles"][0:3] = values["particles"][2::-1]'
 refused "forged template corners, a triangle turned over" "are no triangle of the template"
-FORGE=1 damaged packed/001.json 'values = values[:-1]'
+FORGE=1 damaged packed/001.json 'del rows(values)[-1]'
 refused "a forged row cut" "47 rows for 48 particles"
-FORGE=1 damaged packed/001.json 'values[5] = values[5][:3]'
+FORGE=1 damaged packed/001.json 'rows(values)[5] = rows(values)[5][:3]'
 refused "a forged number missing" "json.exception"
 FORGE=1 damaged settled/001.json 'values["locations"][2][6] = 5000'
 refused "a forged settled vertex" "vertex 5000 of"
 FORGE=1 damaged transfer/002.json 'del values["alignment"]["rotation"]'
 refused "a forged alignment without rotation" "rotation"
+# Forged against what the request fixes: the count of -n, barycentric
+# weights, the mesh of each shape's slot.
+FORGE=1 damaged template.json 'values["particles"] = values["particles"][:-6]'
+# As killed once the template was kept: the shapes' entries would have 48 rows.
+find "$work/damaged/checkpoint" -mindepth 1 ! -name request.json ! -name template.json -delete
+refused "a forged template one particle short" "47 particles, not the 48 of -n"
+FORGE=1 damaged template.json 'values["particles"][3:6] = [0.5, 0.5, 0.5]'
+refused "forged template weights that sum to 1.5" "that sum to 1.5, not 1"
+FORGE=1 damaged packed/001.json 'rows(values)[5][1] += 0.25'
+refused "forged weights that sum to 1.25" "that sum to .*, not 1"
+FORGE=1 damaged settled/001.json 'values["locations"][4][3:6] = [1.5, -0.25, -0.25]'
+refused "a forged weight outside [0, 1], the sum 1" "weight 1.5 outside \\[0, 1\\]"
+# swapped A B: entries A and B of the whole checkpoint swapped, each re-signed under its own name.
+swapped() {
+  rm -rf "$work/damaged" && cp -r "$killed" "$work/damaged"
+  /usr/bin/python3 - "$work/damaged/checkpoint" "$1" "$2" <<'PY'
+import hashlib, json, sys
+folder, a, b = sys.argv[1:]
+text = {name: open(f"{folder}/{name}.json").read().split("\n")[:2] for name in (a, b)}
+for name, other in ((a, b), (b, a)):
+    header, values = json.loads(text[name][0]), text[other][1]
+    header["bytes"], header["sha256"] = len(values.encode()), hashlib.sha256(values.encode()).hexdigest()
+    open(f"{folder}/{name}.json", "w").write(json.dumps(header, separators=(",", ":")) + "\n" + values + "\n")
+PY
+}
+swapped settled/001 settled/002
+refused "two shapes' settled entries swapped, re-signed" "an entry of mesh .*ellipsoid_00[12].off.*, not .*ellipsoid_00[12].off"
+swapped transfer/003 transfer/001
+refused "two shapes' transfers swapped, re-signed" "an entry of mesh .*ellipsoid_00[13].off.*, not .*ellipsoid_00[13].off"
+swapped packed/002 packed/004
+refused "two shapes' packed entries swapped, re-signed" "an entry of mesh .*ellipsoid_00[24].off.*, not .*ellipsoid_00[24].off"
 # A checkpoint of other parameters is not taken.
 rm -rf "$work/other" && cp -r "$killed" "$work/other"
 "$bin" correspond "$work/shapes" -n 40 --samples 10 --refine-iterations 60 --out "$work/other" > /dev/null 2> "$work/other.log"

@@ -4,6 +4,7 @@
 
 #include "batch/output_names.hpp"
 #include "common/atomic_file.hpp"
+#include "common/temporary_names.hpp"
 #include "common/user_error.hpp"
 
 namespace meshparticles {
@@ -21,7 +22,13 @@ BatchPlan plan_batch(const BatchRequest& request, bool lock_out) {
   const std::vector<std::string> names = output_names(meshes);
   for (std::size_t i = 0; i < meshes.size(); ++i) plan.items.push_back({std::move(meshes[i]), names[i]});
   create_directory_for(request.out, "output directory");
-  if (lock_out) plan.out_lock = std::make_shared<const DirectoryLock>(request.out, "batch");
+  if (lock_out) {
+    plan.out_lock = std::make_shared<const DirectoryLock>(request.out, "batch");
+    // What a killed batch left while writing (a mesh's .NAME.tmp-… set, a
+    // summary's temporary), whatever host, container or process it ran in:
+    // the lock proves it is gone, and no rank writes before this one plans.
+    remove_stale_temporaries(request.out, Writers::none);
+  }
   check_writable_directory(request.out);
   return plan;
 }

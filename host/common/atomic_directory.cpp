@@ -113,6 +113,32 @@ void check_replaceable_directory(const std::filesystem::path& given, const std::
   check_writable_directory(parent_of(directory));
 }
 
+void restore_retired_directory(const std::filesystem::path& given) {
+  const std::filesystem::path directory = resolved(given);
+  std::error_code error;
+  if (directory.filename().empty() || std::filesystem::exists(std::filesystem::symlink_status(directory, error))) {
+    return;
+  }
+  std::string prefix = ".";
+  prefix += directory.filename().string();
+  prefix += ".old-";
+  for (const auto& entry : std::filesystem::directory_iterator(parent_of(directory), error)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix) || !entry.is_directory(error)) continue;
+    // NOREPLACE: a directory made meanwhile (a run beside this one) is not replaced.
+    if (::renameat2(AT_FDCWD, entry.path().c_str(), AT_FDCWD, directory.c_str(), RENAME_NOREPLACE) == 0) return;
+    if (errno == EINVAL || errno == ENOSYS) {  // no flags on this file system (NFS): a plain rename
+      std::filesystem::rename(entry.path(), directory, error);
+    }
+    return;
+  }
+}
+
+void remove_leftovers_beside(const std::filesystem::path& given) {
+  const std::filesystem::path directory = resolved(given);
+  remove_stale_temporaries(parent_of(directory), Writers::none, directory.filename().string());
+}
+
 void write_directory_atomically(const std::filesystem::path& given, const std::set<std::string>& names,
                                 const std::function<void(const std::filesystem::path& staging)>& fill) {
   const std::filesystem::path directory = resolved(given);

@@ -21,6 +21,18 @@ namespace meshparticles {
 // (what would be lost otherwise is named; nothing else is ever deleted).
 void check_replaceable_directory(const std::filesystem::path& directory, const std::set<std::string>& names);
 
+// For a `directory` about to be locked (common/directory_lock) and then
+// replaced as a whole: where it is missing because a swap without exchange
+// was killed between its two renames, puts back the previous set that swap
+// retired (.NAME.old-HOST-PID-N beside it), whoever retired it. Best effort.
+void restore_retired_directory(const std::filesystem::path& directory);
+
+// For a `directory` this process now holds locked, before it writes
+// anything there: removes what a killed replacement of it left beside it
+// (its staging set, or the previous set it retired), whoever made them -
+// the lock proves that no writer of it is alive (common/temporary_names.hpp).
+void remove_leftovers_beside(const std::filesystem::path& directory);
+
 // Calls fill(staging) to write every file into an empty staging directory
 // (with write_new_file), then puts it in place of `directory`.
 void write_directory_atomically(const std::filesystem::path& directory, const std::set<std::string>& names,

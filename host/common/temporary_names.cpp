@@ -45,7 +45,8 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& destination
   return destination.parent_path() / name;
 }
 
-void remove_stale_temporaries(const std::filesystem::path& directory) {
+void remove_stale_temporaries(const std::filesystem::path& directory, Writers writers,
+                              const std::string& destination) {
   // .NAME.(tmp|old)-HOST-PID-N[.EXT]
   static const std::regex pattern(R"(\.(.+)\.(tmp|old)-([A-Za-z0-9_]+)-([0-9]{1,9})-[0-9]+(\.[^.]*)?)");
   std::error_code error;
@@ -54,13 +55,15 @@ void remove_stale_temporaries(const std::filesystem::path& directory) {
   for (const auto& entry : entries) {
     const std::string name = entry.path().filename().string();
     std::smatch match;
-    if (!std::regex_match(name, match, pattern) || match[3] != host_tag() || !process_is_gone(std::stol(match[4]))) {
-      continue;
-    }
+    if (!std::regex_match(name, match, pattern)) continue;
+    // What it was to become: a staging name keeps the extension after its counter.
+    const std::string of = match[1].str() + (match[2] == "tmp" ? match[5].str() : "");
+    if (!destination.empty() && of != destination) continue;
+    if (writers == Writers::anyone && (match[3] != host_tag() || !process_is_gone(std::stol(match[4])))) continue;
     if (match[2] == "old") {
-      const std::filesystem::path destination = entry.path().parent_path() / match[1].str();
-      if (!std::filesystem::exists(std::filesystem::symlink_status(destination, error))) {
-        std::filesystem::rename(entry.path(), destination, error);
+      const std::filesystem::path retired_from = entry.path().parent_path() / match[1].str();
+      if (!std::filesystem::exists(std::filesystem::symlink_status(retired_from, error))) {
+        std::filesystem::rename(entry.path(), retired_from, error);
         continue;
       }
     }

@@ -36,6 +36,9 @@ nlohmann::json checkpoint_fingerprint(const CorrespondRequest& request, const st
   nlohmann::json fingerprint = correspond_params(request);
   for (const char* name : kModelOnlyParams) fingerprint.erase(name);
   fingerprint["version"] = program_version();
+  // The entries' layout: a checkpoint of an earlier one (each shape's entry
+  // without its mesh) is of another request, and the run starts anew.
+  fingerprint["layout"] = 2;
   fingerprint["inputs"] = inputs;
   return fingerprint;
 }

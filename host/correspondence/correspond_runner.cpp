@@ -7,6 +7,7 @@
 #include "launch/batch_inputs.hpp"
 #include "launch/failure.hpp"
 #include "launch/launch_environment.hpp"
+#include "common/atomic_directory.hpp"
 #include "common/directory_lock.hpp"
 #include "common/user_error.hpp"
 #include "common/version.hpp"
@@ -95,6 +96,7 @@ std::optional<CorrespondOutcome> correspond_shared(const CorrespondRequest& requ
   // One run at a time in --out; then, before the work, the checks that it can take the outputs.
   std::optional<DirectoryLock> lock;
   if (share.leads()) {
+    restore_retired_directory(request.out);  // a swap killed between its renames (no exchange) left none
     lock.emplace(request.out, "correspond");
     prepare_correspondence_directory(request.out, meshes);
   }
@@ -103,9 +105,9 @@ std::optional<CorrespondOutcome> correspond_shared(const CorrespondRequest& requ
                                         population_asked.quiet);
   const PopulationCorrespondence population = correspond_population(population_asked, share, &checkpoint);
   if (!share.leads()) return std::nullopt;
-  CorrespondOutcome outcome = write_results(request, meshes, population);
-  checkpoint.remove();
-  return outcome;
+  // The checkpoint goes with the folder the new set replaces; a removal
+  // after it could hit the checkpoint of a run that took --out since.
+  return write_results(request, meshes, population);
 }
 
 }  // namespace

@@ -29,7 +29,14 @@ struct EntryCheck {
   std::string problem;
 };
 
+constexpr const char* kOtherRequest = "its header names another request";
+
 EntryCheck check_entry(const std::filesystem::path& file, const std::string& name, const std::string& request) {
+  // Not followed: an entry is a file we wrote, never a link, a folder or a FIFO.
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::symlink_status(file, error);
+  if (!std::filesystem::exists(status)) return {std::nullopt, "it is missing"};
+  if (!std::filesystem::is_regular_file(status)) return {std::nullopt, "it is not a file"};
   std::ifstream in(file, std::ios::binary);
   if (!in) return {std::nullopt, "it cannot be read"};
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -40,7 +47,7 @@ EntryCheck check_entry(const std::filesystem::path& file, const std::string& nam
     return header.is_object() ? header.value(key, nlohmann::json()) : nlohmann::json();
   };
   if (field("entry") != name) return {std::nullopt, "its header does not name it " + name};
-  if (field("request") != request) return {std::nullopt, "its header names another request"};
+  if (field("request") != request) return {std::nullopt, kOtherRequest};
   const std::string values_line = text.substr(header_end + 1);
   if (values_line.empty() || values_line.back() != '\n' || values_line.find('\n') != values_line.size() - 1) {
     return {std::nullopt, "it is not two whole lines"};
@@ -63,8 +70,9 @@ std::string first_damaged_entry(const std::filesystem::path& folder, const std::
        !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
     const std::filesystem::path relative = it->path().lexically_relative(folder);
     if (it->path().filename().string().starts_with(".")) continue;
-    if (it->is_directory(error)) continue;
     std::string name = relative.generic_string();
+    // A stage's folder of shapes; one named like an entry is no entry, and is not read.
+    if (it->is_directory(error) && !it->is_symlink(error) && !name.ends_with(kExtension)) continue;
     if (!name.ends_with(kExtension)) return name + ": it is not a checkpoint entry";
     name.resize(name.size() - std::string(kExtension).size());
     const EntryCheck check = check_entry(it->path(), name, request);
@@ -93,7 +101,10 @@ CorrespondCheckpoint::CorrespondCheckpoint(const std::filesystem::path& director
   }
   const EntryCheck request = check_entry(entry_file(folder_, kRequestEntry), kRequestEntry, request_digest_);
   std::string why_anew;
-  if (!request.values || *request.values != fingerprint) {
+  if (!request.values && request.problem != kOtherRequest) {
+    why_anew = folder_.string() + " is damaged (" + std::string(kRequestEntry) + kExtension + ": " + request.problem +
+               "): removed it";
+  } else if (!request.values || *request.values != fingerprint) {
     why_anew = folder_.string() + " is of other inputs or parameters";
   } else if (const std::string damaged = first_damaged_entry(folder_, request_digest_); !damaged.empty()) {
     why_anew = folder_.string() + " is damaged (" + damaged + "): removed it";
@@ -139,11 +150,6 @@ void CorrespondCheckpoint::write(const std::string& name, const nlohmann::json& 
                                  {"bytes", values_text.size()},
                                  {"sha256", text_sha256(values_text)}};
   write_file_atomically(file, [&](std::ostream& out) { out << json_text(header) << "\n" << values_text << "\n"; });
-}
-
-void CorrespondCheckpoint::remove() const {
-  std::error_code error;
-  std::filesystem::remove_all(folder_, error);  // what is left is harmless: the next run of these inputs reuses it
 }
 
 }  // namespace meshparticles

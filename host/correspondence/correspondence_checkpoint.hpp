@@ -6,16 +6,21 @@
 // stage with its record), and each shape's measured result. A run of other
 // inputs (their paths, sizes and times) or other parameters starts anew.
 // Each file is written whole (atomically); a stage counts only once its
-// record is written, after every shape's file of it. The folder is removed
-// once the outputs are in place.
+// record is written, after every shape's file of it. The folder goes once
+// the outputs are in place: it stays in the --out that the new set replaces
+// whole (correspondence_outputs.hpp).
 //
 // A checkpoint is not trusted blindly. Each entry is two lines: a header
 // naming the entry, the request it belongs to and the size and SHA-256 of
 // the second line, the values. The leader checks every entry before the
 // run takes any: one that was edited, cut short or moved makes the whole
-// checkpoint damaged, and the run removes it and starts anew. A decode that
-// finds values no run of this request could have written (an id past the
-// mesh, a row short) refuses in one line, after removing the checkpoint.
+// checkpoint damaged, and the run removes it and starts anew; so does an
+// entry that is not a file (a folder named like one). A decode that finds
+// values no run of this request could have written refuses in one line,
+// after removing the checkpoint: checked against what the request fixes,
+// so an entry re-signed after an edit is not taken either - an id past the
+// mesh, a row short, a particle count other than -n, barycentric weights
+// outside [0, 1] or not summing to 1, an entry of another shape's mesh.
 #include <atomic>
 #include <filesystem>
 #include <mutex>
@@ -53,8 +58,6 @@ class CorrespondCheckpoint {
     }
   }
   void write(const std::string& name, const nlohmann::json& values) const;
-  // Once the outputs are written: the folder goes.
-  void remove() const;
 
   static constexpr const char* kFolder = "checkpoint";
 

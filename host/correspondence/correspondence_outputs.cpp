@@ -14,6 +14,9 @@ namespace meshparticles {
 
 namespace {
 
+// What --out holds: the outputs, and the checkpoint until they are written.
+const std::set<std::string> kOutputNames = {"shapes", "model", "summary.json", CorrespondCheckpoint::kFolder};
+
 std::set<std::string> shape_files(const std::vector<std::string>& shapes) {
   std::set<std::string> names;
   for (const std::string& stem : indexed_stems(shapes)) {
@@ -23,31 +26,11 @@ std::set<std::string> shape_files(const std::vector<std::string>& shapes) {
   return names;
 }
 
-}  // namespace
-
-void prepare_correspondence_directory(const std::filesystem::path& directory, const std::vector<std::string>& shapes) {
-  std::error_code error;
-  // What a killed run left while writing its outputs (.shapes.tmp-…,
-  // .summary.tmp-….json) goes first: the checkpoint beside it lets the
-  // same command go on, as the README promises.
-  remove_stale_temporaries(directory);
-  if (std::filesystem::exists(directory, error)) {
-    for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
-      const std::string name = entry.path().filename().string();
-      if (name != "shapes" && name != "model" && name != "summary.json" && name != CorrespondCheckpoint::kFolder) {
-        throw UserError("output directory " + directory.string() + " holds " + name +
-                        ", which is not an output of correspond: give a directory of its own");
-      }
-    }
-  }
-  check_replaceable_directory(directory / "shapes", shape_files(shapes));
-  prepare_shape_model_directory(directory / "model", shapes);
-}
-
-void write_correspondence(const std::filesystem::path& directory, const PopulationCorrespondence& population,
-                          const ShapeModelOutputs& model, nlohmann::json summary) {
-  const std::vector<std::string> stems = indexed_stems(model.shapes);
-  write_directory_atomically(directory / "shapes", shape_files(model.shapes), [&](const std::filesystem::path& staging) {
+// shapes/ of the set being built in `set`.
+void write_shape_files(const std::filesystem::path& set, const PopulationCorrespondence& population,
+                       const std::vector<std::string>& shapes) {
+  const std::vector<std::string> stems = indexed_stems(shapes);
+  write_directory_atomically(set / "shapes", shape_files(shapes), [&](const std::filesystem::path& staging) {
     for (std::size_t s = 0; s < population.shapes.size(); ++s) {
       const ShapeCorrespondence& shape = population.shapes[s];
       char line[320];
@@ -71,8 +54,43 @@ void write_correspondence(const std::filesystem::path& directory, const Populati
       });
     }
   });
-  write_shape_model(directory / "model", model);
-  write_file_atomically(directory / "summary.json", [&](std::ostream& out) { out << json_text(summary, 2) << "\n"; });
+}
+
+}  // namespace
+
+void prepare_correspondence_directory(const std::filesystem::path& directory, const std::vector<std::string>& shapes) {
+  std::error_code error;
+  // What a killed run left while writing its outputs goes first, whatever
+  // host, container or process it ran in (the caller holds --out's lock, so
+  // no writer of it is alive): beside --out the new set it was writing or
+  // the old set it was removing, and inside it the temporaries of earlier
+  // versions (.shapes.tmp-…). The checkpoint lets the same command go on.
+  remove_leftovers_beside(directory);
+  remove_stale_temporaries(directory, Writers::none);
+  if (std::filesystem::exists(directory, error)) {
+    for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+      const std::string name = entry.path().filename().string();
+      if (!kOutputNames.count(name)) {
+        throw UserError("output directory " + directory.string() + " holds " + name +
+                        ", which is not an output of correspond: give a directory of its own");
+      }
+    }
+  }
+  check_replaceable_directory(directory / "shapes", shape_files(shapes));
+  prepare_shape_model_directory(directory / "model", shapes);
+  check_replaceable_directory(directory, kOutputNames);  // its parent takes the new set; no mount point
+}
+
+void write_correspondence(const std::filesystem::path& directory, const PopulationCorrespondence& population,
+                          const ShapeModelOutputs& model, nlohmann::json summary) {
+  // The whole set is built beside --out, then swapped in for it at once: a
+  // reader, or a run killed at any moment, finds the old set or the new one,
+  // whole. The old set and the checkpoint go with the directory it replaces.
+  write_directory_atomically(directory, kOutputNames, [&](const std::filesystem::path& set) {
+    write_shape_files(set, population, model.shapes);
+    write_shape_model(set / "model", model);
+    write_file_atomically(set / "summary.json", [&](std::ostream& out) { out << json_text(summary, 2) << "\n"; });
+  });
 }
 
 }  // namespace meshparticles

@@ -9,8 +9,12 @@
 //                              mean, modes, transforms, measures)
 //   summary.json               the template's run, each shape's fit and the
 //                              model's measures
-// Each of the three is replaced as a whole (shapes/ and model/ as folders,
-// summary.json as a file, last).
+//   checkpoint/                while the run goes (correspondence_checkpoint)
+// The set is replaced as a whole: built beside the folder and swapped in
+// for it at once (common/atomic_directory), the old set and the checkpoint
+// going with the folder it replaces; a reader or a kill finds the old set
+// or the new one, whole. So the folder's parent must take new entries, and
+// the folder cannot be a mount point (both refused before the work).
 #include <filesystem>
 #include <vector>
 
@@ -22,6 +26,8 @@
 namespace meshparticles {
 
 // Throws UserError before any work when the folder cannot take the outputs.
+// Called holding the folder's lock: first removes what a killed run left
+// in it and beside it, whatever host or process that run had.
 void prepare_correspondence_directory(const std::filesystem::path& directory, const std::vector<std::string>& shapes);
 
 void write_correspondence(const std::filesystem::path& directory, const PopulationCorrespondence& population,

@@ -156,12 +156,16 @@ std::vector<SurfaceLocation> template_from_message(const SurfaceMesh& template_m
 }
 
 // The template's particles as a checkpoint keeps them, checked against the
-// template before they are used (std::invalid_argument).
+// template and the -n asked before they are used (std::invalid_argument).
 std::vector<SurfaceLocation> template_from_checkpoint(const nlohmann::json& kept, const SurfaceMesh& template_mesh,
-                                                      DistributionQuality& quality) {
+                                                      std::size_t particles, DistributionQuality& quality) {
   const std::vector<double> message = kept.at("particles").get<std::vector<double>>();
   if (message.empty() || message.size() % 6 != 0) {
     throw std::invalid_argument(std::to_string(message.size()) + " numbers, not 6 per particle");
+  }
+  if (message.size() / 6 != particles) {
+    throw std::invalid_argument(std::to_string(message.size() / 6) + " particles, not the " +
+                                std::to_string(particles) + " of -n");
   }
   for (std::size_t i = 0; i < message.size(); ++i) {
     const double value = message[i];
@@ -169,6 +173,9 @@ std::vector<SurfaceLocation> template_from_checkpoint(const nlohmann::json& kept
     const bool valid = corner ? value >= 0 && value < double(template_mesh.vertex_count()) && value == std::floor(value)
                               : std::isfinite(value);
     if (!valid) throw std::invalid_argument((corner ? "vertex " : "weight ") + nlohmann::json(value).dump());
+  }
+  for (std::size_t i = 0; i < message.size(); i += 6) {
+    check_barycentric({message[i + 3], message[i + 4], message[i + 5]});
   }
   quality = quality_from_json(kept.at("quality"), message.size() / 6);
   return template_from_message(template_mesh, message);
@@ -180,7 +187,7 @@ std::vector<SurfaceLocation> sample_template(const SurfaceMesh& template_mesh, c
                                              const CorrespondCheckpoint* checkpoint, DistributionQuality& quality) {
   if (checkpoint) {
     const auto kept = checkpoint->read("template", [&](const nlohmann::json& values) {
-      return template_from_checkpoint(values, template_mesh, quality);
+      return template_from_checkpoint(values, template_mesh, request.run.particles, quality);
     });
     if (kept) return *kept;
   }
@@ -214,16 +221,19 @@ class SharedProgress {
 };
 
 // A refinement stage ("iterated", "packed"): taken from the checkpoint where
-// an earlier run finished it, else run and kept. Every process takes the same branch.
+// an earlier run finished it, else run and kept. Every process takes the same
+// branch. Each shape's entry names its mesh (`meshes`, the request's).
 void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& particles, std::size_t particle_count,
-                      ShapeShare& share, const CorrespondCheckpoint* checkpoint, JointRefinementRecord& record,
+                      const std::vector<std::filesystem::path>& meshes, ShapeShare& share,
+                      const CorrespondCheckpoint* checkpoint, JointRefinementRecord& record,
                       const std::function<void()>& run) {
   const auto kept = checkpoint ? checkpoint->read(stage, refinement_from_json) : std::nullopt;
   if (kept) {
     for (const std::size_t k : share.owned()) {
       const SurfaceMesh& mesh = *particles[k].mesh;
       auto shape = checkpoint->read(shape_entry(stage, k), [&](const nlohmann::json& values) {
-        return locations_from_json(values, mesh.triangle_count(), particle_count);
+        check_entry_mesh(values.at("mesh"), meshes[k].string());
+        return locations_from_json(values.at("locations"), mesh.triangle_count(), particle_count);
       });
       if (!shape) {
         throw UserError("checkpoint stage " + stage + " lacks shape " + std::to_string(k) + ": remove " +
@@ -236,7 +246,10 @@ void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& par
   }
   run();
   if (!checkpoint) return;
-  for (const std::size_t k : share.owned()) checkpoint->write(shape_entry(stage, k), locations_json(particles[k].at));
+  for (const std::size_t k : share.owned()) {
+    checkpoint->write(shape_entry(stage, k),
+                      {{"mesh", meshes[k].string()}, {"locations", locations_json(particles[k].at)}});
+  }
   std::vector<std::vector<double>> written(share.shapes());
   share.gather(written);  // every shape's file is written before the stage's record
   if (share.leads()) checkpoint->write(stage, refinement_json(record));
@@ -451,6 +464,7 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   for_each_index(owned, share.threads(), [&](std::size_t k) {
     const SurfaceMesh& mesh = *meshes[k];
     const auto transferred = [&](const nlohmann::json& values) {
+      check_entry_mesh(values.at("mesh"), request.meshes[k].string());
       return std::pair(alignment_from_json(values.at("alignment")),
                        locations_from_json(values.at("locations"), mesh.triangle_count(), particle_count));
     };
@@ -466,7 +480,8 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
       population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, alignments[k],
                                       template_particles, particles[k]);
       if (checkpoint) {
-        checkpoint->write(shape_entry("transfer", k), {{"alignment", alignment_json(population.shapes[k].alignment)},
+        checkpoint->write(shape_entry("transfer", k), {{"mesh", request.meshes[k].string()},
+                                                       {"alignment", alignment_json(population.shapes[k].alignment)},
                                                        {"locations", locations_json(particles[k].at)}});
       }
     }
@@ -476,10 +491,11 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
 
   std::vector<std::vector<SurfaceLocation>> transferred(count);  // where the refinement's moves start
   for (const std::size_t k : owned) transferred[k] = particles[k].at;
-  refinement_stage("iterated", particles, particle_count, share, checkpoint, population.refinement, [&] {
+  const std::vector<std::filesystem::path>& paths = request.meshes;  // what each shape's entry names
+  refinement_stage("iterated", particles, particle_count, paths, share, checkpoint, population.refinement, [&] {
     iterate_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
   });
-  refinement_stage("packed", particles, particle_count, share, checkpoint, population.refinement, [&] {
+  refinement_stage("packed", particles, particle_count, paths, share, checkpoint, population.refinement, [&] {
     pack_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
     hold_back_evening(particles, transferred, particle_count, request.refinement, share, population.refinement);
   });
@@ -490,7 +506,7 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   std::vector<std::string> results(count);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
     const auto settled = [&](const nlohmann::json& values) {
-      check_shape_json(values, meshes[k]->vertex_count(), particle_count);
+      check_shape_json(values, request.meshes[k].string(), meshes[k]->vertex_count(), particle_count);
       return values;
     };
     const auto kept = checkpoint ? checkpoint->read(shape_entry("settled", k), settled) : std::nullopt;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/json_text.hpp"
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {
@@ -24,6 +25,10 @@ double finite_number(const nlohmann::json& value, const char* what) {
   return number;
 }
 
+// The slack a run's weights can be off [0, 1] and their sum off 1 by:
+// rounding, many orders of magnitude below any edit that moves a particle.
+constexpr double kWeightSlack = 1e-9;
+
 void check_rows(const nlohmann::json& rows, std::size_t particles) {
   if (!rows.is_array() || rows.size() != particles) {
     throw std::invalid_argument(std::to_string(rows.size()) + " rows for " + std::to_string(particles) + " particles");
@@ -31,6 +36,26 @@ void check_rows(const nlohmann::json& rows, std::size_t particles) {
 }
 
 }  // namespace
+
+void check_barycentric(const std::array<double, 3>& weights) {
+  double sum = 0;
+  for (const double weight : weights) {
+    if (!(weight >= -kWeightSlack && weight <= 1 + kWeightSlack)) {
+      throw std::invalid_argument("weight " + nlohmann::json(weight).dump() + " outside [0, 1]");
+    }
+    sum += weight;
+  }
+  if (!(std::abs(sum - 1) <= kWeightSlack)) {
+    throw std::invalid_argument("weights " + nlohmann::json(weights).dump() + " that sum to " +
+                                nlohmann::json(sum).dump() + ", not 1");
+  }
+}
+
+void check_entry_mesh(const nlohmann::json& recorded, const std::string& mesh) {
+  if (recorded != as_written(mesh)) {
+    throw std::invalid_argument("an entry of mesh " + recorded.dump() + ", not " + as_written(mesh).dump());
+  }
+}
 
 nlohmann::json locations_json(const std::vector<SurfaceLocation>& locations) {
   nlohmann::json rows = nlohmann::json::array();
@@ -48,6 +73,7 @@ std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json, std
     SurfaceLocation at;
     at.triangle = std::uint32_t(index_below(row.at(0), triangles, "triangle"));
     for (std::size_t k = 0; k < 3; ++k) at.weights[k] = finite_number(row.at(1 + k), "weight");
+    check_barycentric(at.weights);
     at.at = {finite_number(row.at(4), "coordinate"), finite_number(row.at(5), "coordinate"),
              finite_number(row.at(6), "coordinate")};
     locations.push_back(at);
@@ -137,7 +163,9 @@ ShapeCorrespondence shape_from_json(const nlohmann::json& json) {
   return shape;
 }
 
-void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::size_t particles) {
+void check_shape_json(const nlohmann::json& json, const std::string& mesh, std::size_t vertices,
+                      std::size_t particles) {
+  check_entry_mesh(json.at("mesh"), mesh);
   if (json.at("vertices") != vertices) {
     throw std::invalid_argument("a mesh of " + json.at("vertices").dump() + " vertices, not " +
                                 std::to_string(vertices));
@@ -148,7 +176,8 @@ void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::siz
   for (const nlohmann::json& row : rows) {
     for (std::size_t k = 0; k < 3; ++k) index_below(row.at(k), vertices, "vertex");
     index_below(row.at(6), vertices, "vertex");
-    for (const std::size_t k : {3, 4, 5}) finite_number(row.at(k), "weight");
+    check_barycentric({finite_number(row.at(3), "weight"), finite_number(row.at(4), "weight"),
+                       finite_number(row.at(5), "weight")});
     for (const std::size_t k : {7, 8, 9}) finite_number(row.at(k), "coordinate");
   }
 }

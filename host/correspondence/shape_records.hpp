@@ -7,8 +7,8 @@
 // What a checkpoint gives back is checked before it is used: the readers
 // below that take a mesh's sizes throw std::invalid_argument naming the first
 // value no run on that mesh could have written (an id past its end, a row
-// short, a weight that is not a finite number), and nlohmann::json's
-// exceptions on a missing or mistyped field.
+// short, barycentric weights outside [0, 1] or not summing to 1), and
+// nlohmann::json's exceptions on a missing or mistyped field.
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -20,6 +20,14 @@
 #include "mesh/surface_location.hpp"
 
 namespace meshparticles {
+
+// Throws unless `weights` are a point's barycentric weights as a run
+// writes them: each in [0, 1] and summing to 1, to rounding.
+void check_barycentric(const std::array<double, 3>& weights);
+
+// Throws unless `recorded` (an entry's "mesh") names `mesh`: an entry of
+// one shape is not taken for another's.
+void check_entry_mesh(const nlohmann::json& recorded, const std::string& mesh);
 
 nlohmann::json locations_json(const std::vector<SurfaceLocation>& locations);
 // `particles` locations on a mesh of `triangles` triangles.
@@ -35,8 +43,9 @@ MeshAlignment alignment_from_json(const nlohmann::json& json);
 // Everything a ShapeCorrespondence holds.
 nlohmann::json shape_json(const ShapeCorrespondence& shape);
 ShapeCorrespondence shape_from_json(const nlohmann::json& json);
-// Throws unless `json` is a shape of `particles` particles on a mesh of `vertices` vertices.
-void check_shape_json(const nlohmann::json& json, std::size_t vertices, std::size_t particles);
+// Throws unless `json` is a shape of `particles` particles on `mesh`, of `vertices` vertices.
+void check_shape_json(const nlohmann::json& json, const std::string& mesh, std::size_t vertices,
+                      std::size_t particles);
 
 nlohmann::json topology_json(const MeshTopology& topology);
 MeshTopology topology_from_json(const nlohmann::json& json);
