@@ -377,7 +377,7 @@ set_tests_properties(cli.correspond_population PROPERTIES LABELS fast TIMEOUT 30
 # correspond shared among MPI ranks: the outputs of one process, byte for byte.
 function(correspond_share_test mode)
   add_test(NAME cli.correspond_${mode}
-           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_share.sh ${mode} $<TARGET_FILE:meshparticles>
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspondence/mpi_shape_share_test.sh ${mode} $<TARGET_FILE:meshparticles>
                    ${CMAKE_CURRENT_BINARY_DIR}/correspond_${mode} ${ARGN})
   set_tests_properties(cli.correspond_${mode} PROPERTIES LABELS slow PROCESSORS 2 TIMEOUT 600)
 endfunction()
