@@ -20,7 +20,8 @@ namespace {
 
 class CorrespondenceOutputs : public ::testing::Test {
  protected:
-  // Three shapes of four particles each, every particle on its triangle's first corner.
+  // Three shapes of four particles each, particle i in the triangle of corners i, i + 1, i + 2
+  // (its heaviest, i + 1).
   PopulationCorrespondence population() const {
     PopulationCorrespondence result;
     for (std::size_t s = 0; s < 3; ++s) {
