@@ -1,6 +1,6 @@
 // quality() and compare(): `meshparticles quality MESH PARTICLES --json` and
 // `compare MESH A B --json` on points in memory - the same call
-// (pipeline/point_sets.hpp), returned as that JSON's text.
+// (pipeline/point_set_measurement.hpp), returned as that JSON's text.
 #include <cmath>
 
 #include <pybind11/numpy.h>
@@ -11,7 +11,7 @@
 #include "common/user_error.hpp"
 #include "mesh_object.hpp"
 #include "particles/potentials.hpp"
-#include "pipeline/point_sets.hpp"
+#include "pipeline/point_set_measurement.hpp"
 #include "reports/quality_report.hpp"
 #include "run_settings.hpp"
 

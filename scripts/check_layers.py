@@ -17,7 +17,7 @@ import sys
 LAYERS = [
     ["common"],
     ["mesh", "opencl", "tuning"],
-    ["geodesics"],
+    ["geodesics", "fixtures"],
     ["particles"],
     ["backends", "quality", "shape_model"],
     ["pipeline"],

@@ -14,6 +14,17 @@ endfunction()
 function(expect_exit name code pattern)
   expect_exit_of(${name} ${code} ${pattern} $<TARGET_FILE:meshparticles> ${ARGN})
 endfunction()
+# A run that must succeed is held to what it writes (tests/expect_run.sh):
+# exit 0 and its stderr line as above, then OUT's output set whole (each
+# file at the size and SHA-256 report.json records, particles.particles of
+# params.n lines) and each CHECK of report.json ("params.n=64 distances.store=local").
+function(expect_run_of name pattern out checks)
+  add_test(NAME cli.${name} COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/expect_run.sh ${out} "${checks}" ${pattern} ${ARGN})
+  set_tests_properties(cli.${name} PROPERTIES LABELS "fast;device")
+endfunction()
+function(expect_run name pattern out checks)
+  expect_run_of(${name} ${pattern} ${out} "${checks}" $<TARGET_FILE:meshparticles> ${ARGN})
+endfunction()
 
 expect_exit(missing_file 2 "missing\\.off: no such file" info ${DATA}/missing.off)
 expect_exit(directory 2 "is a directory" info ${DATA})
@@ -29,7 +40,7 @@ expect_exit(index_out_of_range 2 "index_out_of_range\\.off: face 2 refers to ver
 expect_exit(index_out_of_range_obj 2 "index_out_of_range\\.obj: .*out of range" info ${DATA}/index_out_of_range.obj)
 expect_exit(repeated_index 2 "repeated_index\\.off: face 2 uses vertex 2 more than once" info ${DATA}/repeated_index.off)
 # A VTK file from a segmentation pipeline runs like any mesh; a volume grid is refused.
-expect_exit(run_vtk 0 "spread: [0-9]+ done" run ${DATA}/vtk/patch_vtk51_binary.vtk -n 20 --no-cache --out ${CMAKE_CURRENT_BINARY_DIR}/cli_run_vtk)
+expect_run(run_vtk "spread: [0-9]+ done" ${CMAKE_CURRENT_BINARY_DIR}/cli_run_vtk "params.n=20 params.method=spread mesh.vertices=400" run ${DATA}/vtk/patch_vtk51_binary.vtk -n 20 --no-cache --out ${CMAKE_CURRENT_BINARY_DIR}/cli_run_vtk)
 expect_exit(vtk_truncated 2 "patch_meshio_binary_truncated\\.vtk: line [0-9]+: POINTS: 1200 values, more than the" info ${DATA}/vtk/patch_meshio_binary_truncated.vtk)
 # Found by fuzz_vtp: a base64 problem was reported without the file's name.
 expect_exit(vtp_not_base64 2 "error: [^ ]*not_base64_connectivity\\.vtp: <Polys> connectivity: not base64 data$" info ${DATA}/vtk/not_base64_connectivity.vtp)
@@ -63,8 +74,10 @@ foreach(where device host)
   set_tests_properties(cli.geodesics_balls_fim_${where} PROPERTIES LABELS "fast;device")
 endforeach()
 expect_exit(geodesics_balls_need_radius 2 "--balls requires --ball-radius" geodesics ${PROJECT_SOURCE_DIR}/meshes/torus.off --balls 20)
-expect_exit(run_local_fim 0 "converged" run ${PROJECT_SOURCE_DIR}/meshes/torus.off -n 100 --method paper --distances local --geodesic fim --no-cache --out ${CMAKE_CURRENT_BINARY_DIR}/run_local_fim)
-expect_exit(geodesics_table 0 "geodesics \\(fmm, [0-9]+ threads?\\): 4 done" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --no-cache)
+expect_run(run_local_fim "converged" ${CMAKE_CURRENT_BINARY_DIR}/run_local_fim "params.n=100 params.method=paper params.geodesic=fim distances.store=local distances.balls_on_device>0" run ${PROJECT_SOURCE_DIR}/meshes/torus.off -n 100 --method paper --distances local --geodesic fim --no-cache --out ${CMAKE_CURRENT_BINARY_DIR}/run_local_fim)
+# The table's line on stdout: the 4 x 4 table, not from the cache.
+expect_exit_of(geodesics_table 0 "geodesics \\(fmm, [0-9]+ threads?\\): 4 done"
+               bash -o pipefail -c "\"$0\" geodesics ${PROJECT_SOURCE_DIR}/meshes/tetrahedron.off --no-cache | grep -Ezq 'table +4 x 4 float32.*from cache no'" $<TARGET_FILE:meshparticles>)
 expect_exit(geodesics_dropped_vertex 2 "--source 0 is not a vertex of the surface" geodesics ${DATA}/unreferenced_vertices.off --source 0 -q)
 # meshparticles run: bad arguments exit 2 with one clear line.
 set(TORUS ${PROJECT_SOURCE_DIR}/meshes/torus.off)
@@ -78,7 +91,7 @@ expect_exit(run_unknown_backend 2 "--backend: cuda not in" run ${TETRA} --backen
 expect_exit(run_unknown_scheme 2 "--scheme: jacobi not in" run ${TETRA} --scheme jacobi --out ${RUN_OUT})
 expect_exit(run_zero_colors 2 "--colors: expected a whole number from 1 to 4096, got \"0\"" run ${TETRA} --colors 0 --out ${RUN_OUT})
 expect_exit(run_colors_without_colored 2 "--colors applies to --scheme colored and monotone, not synchronous" run ${TETRA} -n 2 --scheme synchronous --colors 4 --out ${RUN_OUT})
-expect_exit(run_sequential_on_device 0 "converged" run ${TETRA} -n 2 --backend tiled --scheme sequential --no-cache --out ${RUN_OUT}_sequential_on_device)
+expect_run(run_sequential_on_device "converged" ${RUN_OUT}_sequential_on_device "params.n=2 params.backend=tiled params.scheme=sequential" run ${TETRA} -n 2 --backend tiled --scheme sequential --no-cache --out ${RUN_OUT}_sequential_on_device)
 expect_exit(run_refused_work_group 2 "--wg 1000000 exceeds the maximum work-group size [0-9]+" run ${TETRA} -n 2 --backend tiled --wg 1000000 --no-cache --out ${RUN_OUT})
 expect_exit(run_refused_tile 2 "needs [0-9]+ bytes of local memory. .* has [0-9]+" run ${TETRA} -n 2 --backend tiled --tile 16000000 --no-cache --out ${RUN_OUT})
 expect_exit(run_tile_on_naive 2 "--tile applies to the tiled backend only" run ${TETRA} -n 2 --backend naive --tile 8 --no-cache --out ${RUN_OUT})
@@ -87,10 +100,10 @@ expect_exit(run_tile_on_field 2 "--tile applies to the tiled backend only" run $
 expect_exit(run_weights_on_tiled 2 "--weights and --rebuild-every apply to the serial-field and field backends, not tiled" run ${TETRA} -n 2 --backend tiled --weights half --no-cache --out ${RUN_OUT})
 expect_exit(run_rebuild_on_serial 2 "--weights and --rebuild-every apply to the serial-field and field backends, not serial" run ${TETRA} -n 2 --backend serial --rebuild-every 5 --no-cache --out ${RUN_OUT})
 expect_exit(run_unknown_weights 2 "--weights: double not in" run ${TETRA} -n 2 --backend field --weights double --out ${RUN_OUT})
-expect_exit(run_field_half 0 "converged" run ${TETRA} -n 2 --backend field --weights half --rebuild-every 3 --no-cache --out ${RUN_OUT}_field_half)
+expect_run(run_field_half "converged" ${RUN_OUT}_field_half "params.n=2 params.backend=field params.weights=half params.rebuild_every=3" run ${TETRA} -n 2 --backend field --weights half --rebuild-every 3 --no-cache --out ${RUN_OUT}_field_half)
 # spread (the default) runs on the host; the paper's options imply paper, and
 # name themselves when spread is asked for by name.
-expect_exit(run_spread_default 0 "spread: [0-9]+ done in .*(converged|cycle)" run ${TORUS} -n 16 --out ${RUN_OUT}_spread)
+expect_run(run_spread_default "spread: [0-9]+ done in .*(converged|cycle)" ${RUN_OUT}_spread "params.n=16 params.method=spread params.method_from=default" run ${TORUS} -n 16 --out ${RUN_OUT}_spread)
 expect_exit(run_spread_refuses_backend 2 "--backend applies to --method paper" run ${TETRA} -n 2 --method spread --backend tiled --out ${RUN_OUT})
 expect_exit(run_spread_refuses_v0 2 "--init v0 applies to --method paper" run ${TETRA} -n 2 --method spread --init v0 --out ${RUN_OUT})
 expect_exit(run_vertices_per_particle_on_paper 2 "--vertices-per-particle applies to --method spread" run ${TETRA} -n 2 --method paper --vertices-per-particle 50 --out ${RUN_OUT})
@@ -100,7 +113,7 @@ expect_exit(run_bad_start_vertex 2 "--start-vertex 9 is not a vertex of the surf
 expect_exit(run_unwritable_out 2 "cannot create the parent of output directory /dev/null: Not a directory" run ${TETRA} -n 2 --out /dev/null/out)
 # Whole runs on the tetrahedron: every backend, files written, summary printed.
 foreach(backend serial serial-field naive tiled field)
-  expect_exit(run_${backend} 0 "particles: [0-9]+ done in .*(converged|iteration limit reached)" run ${TETRA} -n 2 --backend ${backend} --no-cache --out ${RUN_OUT}_${backend})
+  expect_run(run_${backend} "particles: [0-9]+ done in .*(converged|iteration limit reached)" ${RUN_OUT}_${backend} "params.n=2 params.method=paper params.backend=${backend}" run ${TETRA} -n 2 --backend ${backend} --no-cache --out ${RUN_OUT}_${backend})
 endforeach()
 # A kernel that does not build: exit 2, the build log follows the message.
 # expect_kernel_build_failure(NAME BACKEND FILE TEXT REGEX): `run --backend
@@ -180,7 +193,7 @@ expect_exit(nonmanifold_vertex_kept 0 "nonmanifold_vertex\\.off: 1 non-manifold 
 expect_exit(off_dialect 0 "off_dialect\\.off: 5 polygons with more than 3 vertices triangulated" info ${DATA}/off_dialect.off)
 expect_exit(off_trailing_content 0 "trailing_content\\.off: 1 line after the 3 faces the header declares \\(from line 10\\) ignored" info ${DATA}/trailing_content.off)
 expect_exit(obj_dialect 0 "obj_dialect\\.obj: 5 polygons" info ${DATA}/obj_dialect.obj)
-expect_exit(run_nonmanifold_vertex 0 "particles: [0-9]+ done" run ${DATA}/nonmanifold_vertex.off -n 3 --backend serial --no-cache --out ${RUN_OUT}_nonmanifold)
+expect_run(run_nonmanifold_vertex "particles: [0-9]+ done" ${RUN_OUT}_nonmanifold "params.n=3 params.backend=serial mesh.vertices=7" run ${DATA}/nonmanifold_vertex.off -n 3 --backend serial --no-cache --out ${RUN_OUT}_nonmanifold)
 # What fuzzing the old readers found, each now one line and exit 2.
 expect_exit(ply_header_cut 2 "header_cut_inside_element_line\\.ply: line 7: expected 'element NAME COUNT'" info ${DATA}/header_cut_inside_element_line.ply)
 expect_exit(ply_count_2_31 2 "vertex_count_2147483647\\.ply: header declares 2147483647 'vertex' elements, more than the 6 bytes after it can hold" info ${DATA}/vertex_count_2147483647.ply)
@@ -228,14 +241,14 @@ expect_exit(number_threads 2 "--threads: expected a whole number from 0 to 1024,
 expect_exit(sigma_nan 2 "--sigma: expected a finite number above 0, got \"nan\"" run ${TETRA} --sigma nan --out ${RUN_OUT})
 expect_exit(sigma_inf 2 "--sigma: expected a finite number above 0, got \"inf\"" quality ${TORUS} ${PARTICLES_DATA}/blank_lines.particles --sigma inf)
 expect_exit(sigma_overflows 2 "--sigma 1e-300 is too small to compute with" run ${TETRA} -n 2 --backend serial --sigma 1e-300 --no-cache --out ${RUN_OUT})
-expect_exit(sigma_tiny_warns 0 "warning: --sigma 1e-05 with d_hex .*particles will not feel each other" run ${TETRA} -n 2 --backend serial --sigma 1e-5 --no-cache --out ${RUN_OUT}_sigma_tiny)
-expect_exit(sigma_huge_warns 0 "warning: --sigma 1e\\+300 with d_hex .*the energy is flat" run ${TETRA} -n 2 --backend serial --sigma 1e300 --no-cache --out ${RUN_OUT}_sigma_huge)
+expect_run(sigma_tiny_warns "warning: --sigma 1e-05 with d_hex .*particles will not feel each other" ${RUN_OUT}_sigma_tiny "params.sigma=1e-05 params.sigma_from=--sigma" run ${TETRA} -n 2 --backend serial --sigma 1e-5 --no-cache --out ${RUN_OUT}_sigma_tiny)
+expect_run(sigma_huge_warns "warning: --sigma 1e\\+300 with d_hex .*the energy is flat" ${RUN_OUT}_sigma_huge "params.sigma=1e300 params.sigma_from=--sigma" run ${TETRA} -n 2 --backend serial --sigma 1e300 --no-cache --out ${RUN_OUT}_sigma_huge)
 # The environment: named when it is the cause; `devices` always lists.
 expect_exit_of(devices_bogus_variable 0 "warning: \\$MESHPARTICLES_DEVICE='bogus' matches no device above"
                env MESHPARTICLES_DEVICE=bogus $<TARGET_FILE:meshparticles> devices)
 # The paper method without an OpenCL runtime, no device named: its default
 # is the CPU twin, and says why; a device named stays an error (exit 3).
-expect_exit_of(run_paper_without_runtime 0 "particles: .*converged"
+expect_run_of(run_paper_without_runtime "particles: .*converged" ${RUN_OUT}_no_runtime "params.method=paper params.backend=serial-field params.backend_from~pocl-opencl-icd"
                env -u MESHPARTICLES_DEVICE OCL_ICD_VENDORS=${CMAKE_CURRENT_BINARY_DIR}/no-such-vendors-dir
                $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --method paper --no-cache --out ${RUN_OUT}_no_runtime)
 expect_exit_of(run_paper_device_without_runtime 3 "no OpenCL platform found"
@@ -246,7 +259,7 @@ expect_exit_of(run_bogus_variable 2 "no OpenCL device matches \\$MESHPARTICLES_D
 expect_exit_of(bad_pocl_cache 3 "\\$POCL_CACHE_DIR='/proc/no-such-dir' cannot be made"
                env "MESHPARTICLES_DEVICE=Portable Computing Language" POCL_CACHE_DIR=/proc/no-such-dir
                $<TARGET_FILE:meshparticles> devices)
-expect_exit_of(no_cache_ignores_tmpdir 0 "converged"
+expect_run_of(no_cache_ignores_tmpdir "converged" ${RUN_OUT}_tmpdir "params.n=2 params.backend=serial distances.from_cache=false"
                env -u HOME -u XDG_CACHE_HOME -u XDG_CONFIG_HOME TMPDIR=/nonexistent
                $<TARGET_FILE:meshparticles> run ${TETRA} -n 2 --backend serial --no-cache --out ${RUN_OUT}_tmpdir)
 expect_exit_of(cache_without_tmpdir_warns 0 "warning: no cache directory: .*\\$TMPDIR='/nonexistent' is not a directory"
@@ -266,11 +279,12 @@ file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/cli_fractional_tuning.json
      "{\"version\": 1, \"entries\": [{\"device\": \"d\", \"kernel\": \"tiled\", \"size_class\": \"n<=64\", \"wg\": 32.7, \"tile\": 8}]}")
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/cli_empty_class_tuning.json
      "{\"version\": 1, \"entries\": [{\"device\": \"d\", \"kernel\": \"tiled\", \"size_class\": \"\", \"wg\": 32, \"tile\": 8}]}")
-expect_exit(run_fractional_tuning 0 "warning: tuning file .* is not readable \\(wg 32.7 is not a whole number above 0\\)" run ${TETRA} -n 2 --backend tiled --no-cache --tuning-file ${CMAKE_CURRENT_BINARY_DIR}/cli_fractional_tuning.json --out ${RUN_OUT}_fractional_tuning)
+expect_run(run_fractional_tuning "warning: tuning file .* is not readable \\(wg 32.7 is not a whole number above 0\\)" ${RUN_OUT}_fractional_tuning "params.backend=tiled params.sizes_from~built-in" run ${TETRA} -n 2 --backend tiled --no-cache --tuning-file ${CMAKE_CURRENT_BINARY_DIR}/cli_fractional_tuning.json --out ${RUN_OUT}_fractional_tuning)
 expect_exit(bench_empty_class_tuning 0 "warning: tuning file .* is not readable \\(size class \"\" is not n<=N" bench --case tetrahedron:2 --backend tiled --iterations 1 --no-cache --tuning-file ${CMAKE_CURRENT_BINARY_DIR}/cli_empty_class_tuning.json)
 # bench --quality once on the smallest case: the sanitizer stage runs it (it read freed memory once).
+# Its table: each placement, and both backends' default runs at the serial energy.
 add_test(NAME cli.bench_quality_small
-         COMMAND $<TARGET_FILE:meshparticles> bench --quality --case tetrahedron:2 --backend serial,serial-field -q)
+         COMMAND bash -o pipefail -c "\"$0\" bench --quality --case tetrahedron:2 --backend serial,serial-field -q | tee /dev/stderr | grep -Ezq 'tetrahedron \\(4 vertices\\), n=2.*farthest .*default +serial +[0-9]+ .*default +serial-field +[0-9]+ .* [+]0[.]0000%'" $<TARGET_FILE:meshparticles>)
 set_tests_properties(cli.bench_quality_small PROPERTIES LABELS fast)
 # --strict refuses what is kept by default, with the old one-line messages.
 expect_exit(strict_nonmanifold_edge 2 "nonmanifold_edge\\.off: non-manifold edge 0-1 is shared by more than two faces" info ${DATA}/nonmanifold_edge.off --strict)
@@ -278,13 +292,14 @@ expect_exit(strict_nonmanifold_vertex 2 "nonmanifold_vertex\\.off: non-manifold 
 # Local distances: the backends that stream table rows say what works instead.
 expect_exit(local_on_naive 2 "the naive backend streams rows of the dense distance table: use --distances dense" run ${TORUS} -n 8 --backend naive --distances local --out ${RUN_OUT})
 expect_exit(local_field_half 2 "--weights half applies to the field backend on the dense table" run ${TORUS} -n 8 --backend field --weights half --distances local --out ${RUN_OUT})
-expect_exit(run_local_field 0 "particles: [0-9]+ done in .*converged" run ${TORUS} -n 64 --backend field --distances local --out ${RUN_OUT}_local_field)
+expect_run(run_local_field "particles: [0-9]+ done in .*converged" ${RUN_OUT}_local_field "params.n=64 params.backend=field distances.store=local" run ${TORUS} -n 64 --backend field --distances local --out ${RUN_OUT}_local_field)
 expect_exit(cutoff_under_one 2 "--cutoff 0.5 is under one hexagonal spacing" run ${TORUS} -n 8 --backend serial-field --distances local --cutoff 0.5 --out ${RUN_OUT})
 expect_exit(cutoff_with_dense 2 "--cutoff applies to --distances local and auto" run ${TORUS} -n 8 --distances dense --cutoff 6 --out ${RUN_OUT})
-expect_exit(run_local 0 "particles: [0-9]+ done in .*converged" run ${TORUS} -n 64 --backend serial-field --distances local --out ${RUN_OUT}_local)
+expect_run(run_local "particles: [0-9]+ done in .*converged" ${RUN_OUT}_local "params.n=64 params.backend=serial-field distances.store=local" run ${TORUS} -n 64 --backend serial-field --distances local --out ${RUN_OUT}_local)
 expect_exit(quality_cutoff_with_dense 2 "--cutoff applies to --distances local and auto" quality ${TORUS} ${PARTICLES_DATA}/blank_lines.particles --distances dense --cutoff 6)
 # Large meshes for benchmarks: made at about a given size, never under a committed mesh's name.
-expect_exit(generate_vertices 0 "wrote .*sphere_1002\\.off \\(1002 vertices, 2000 triangles\\)" generate sphere --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)
+expect_exit_of(generate_vertices 0 "wrote .*sphere_1002\\.off \\(1002 vertices, 2000 triangles\\)"
+               bash -c "rm -f ${CMAKE_CURRENT_BINARY_DIR}/generated_large/sphere_1002.off && \"$0\" generate sphere --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large && head -n 2 ${CMAKE_CURRENT_BINARY_DIR}/generated_large/sphere_1002.off | tr '\\n' ' ' | grep -q '^OFF 1002 2000 '" $<TARGET_FILE:meshparticles>)
 expect_exit(generate_vertices_torus 2 "--vertices applies to sphere and atrium, not torus" generate torus --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)
 expect_exit(generate_vertices_no_name 2 "--vertices needs the meshes to make at that size" generate --vertices 1000 --out-dir ${CMAKE_CURRENT_BINARY_DIR}/generated_large)
 # batch: a population with a broken file, a resume after kill -9, and (when
@@ -343,10 +358,10 @@ expect_exit(control_characters_escaped 2 "error: bad\\\\nname\\.off: no such fil
 # fail without naming it; a low address-space limit made it hang.
 expect_exit_of(pocl_cache_empty 3 "error: \\$POCL_CACHE_DIR is set but empty" env POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_pocl)
 expect_exit_of(pocl_cache_file 3 "error: \\$POCL_CACHE_DIR='${SPHERE}' is not a directory" env POCL_CACHE_DIR=${SPHERE} $<TARGET_FILE:meshparticles> devices)
-expect_exit_of(pocl_cache_default_backend 0 "particles: [0-9]+ done" env -u MESHPARTICLES_DEVICE POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --out ${RUN_OUT}_pocl_default)
+expect_run_of(pocl_cache_default_backend "particles: [0-9]+ done" ${RUN_OUT}_pocl_default "params.method=paper params.backend=serial-field params.backend_from~POCL_CACHE_DIR" env -u MESHPARTICLES_DEVICE POCL_CACHE_DIR= $<TARGET_FILE:meshparticles> run ${SPHERE} --method paper --out ${RUN_OUT}_pocl_default)
 expect_exit_of(address_space_opencl 3 "error: the process's address-space or data limit \\(ulimit -v / -d: 524288 KiB\\) is under the 1024 MiB an OpenCL runtime needs.*--backend serial-field"
                bash -c "ulimit -v 524288 && exec \"$0\" run ${SPHERE} --method paper --backend field --out ${RUN_OUT}_ulimit" $<TARGET_FILE:meshparticles>)
-expect_exit_of(address_space_serial 0 "particles: [0-9]+ done"
+expect_run_of(address_space_serial "particles: [0-9]+ done" ${RUN_OUT}_ulimit_serial "params.n=1024 params.backend=serial-field distances.store=dense"
                bash -c "ulimit -v 524288 && exec \"$0\" run ${SPHERE} --method paper --backend serial-field --out ${RUN_OUT}_ulimit_serial" $<TARGET_FILE:meshparticles>)
 expect_exit_shell(address_space_dense_table 2 "error: [^ ]*sphere\\.off: the 4000 x 4000 distance table needs 0\\.06 GiB but the room under the address-space limit \\(ulimit -v 65536 KiB\\) holds 0\\.[0-9]+ GiB.*--distances local"
                   "ulimit -v 65536 && exec \"$0\" run ${SPHERE} --method paper --backend serial --distances dense --no-cache --out ${RUN_OUT}_ulimit_dense")
@@ -382,7 +397,7 @@ set_tests_properties(cli.correspond_population PROPERTIES LABELS fast TIMEOUT 30
 # correspond shared among MPI ranks: the outputs of one process, byte for byte.
 function(correspond_share_test mode)
   add_test(NAME cli.correspond_${mode}
-           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_share.sh ${mode} $<TARGET_FILE:meshparticles>
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspondence/mpi_shape_share_test.sh ${mode} $<TARGET_FILE:meshparticles>
                    ${CMAKE_CURRENT_BINARY_DIR}/correspond_${mode} ${ARGN})
   set_tests_properties(cli.correspond_${mode} PROPERTIES LABELS slow PROCESSORS 2 TIMEOUT 600)
 endfunction()

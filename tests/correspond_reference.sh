@@ -1,4 +1,4 @@
-# Sourced by correspond_checkpoint.sh and correspond_share.sh, with $bin
+# Sourced by correspond_checkpoint.sh and correspondence/mpi_shape_share_test.sh, with $bin
 # (the program) and $work (a fresh folder) set: a population of 5 small
 # shapes with a known map in $work/shapes, `options` for correspond, one run
 # that nothing interrupted in $work/reference, and `same OUT WHAT`, which

@@ -12,7 +12,7 @@
 #include "geodesics/device_balls.hpp"
 #include "geodesics/fast_iterative.hpp"
 #include "geodesics/local_distances.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/mesh_generator.hpp"
 #include "particle_test_support.hpp"
 
 namespace meshparticles::testing {

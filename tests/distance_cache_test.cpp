@@ -8,7 +8,7 @@
 
 #include <unistd.h>
 
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/mesh_generator.hpp"
 
 namespace meshparticles {
 namespace {

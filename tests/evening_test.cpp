@@ -21,7 +21,7 @@
 #include "particles/local_farthest_points.hpp"
 #include "particles/particle_params.hpp"
 #include "quality/distribution_quality.hpp"
-#include "pipeline/point_sets.hpp"
+#include "pipeline/point_set_measurement.hpp"
 
 namespace meshparticles::testing {
 namespace {

@@ -14,7 +14,7 @@
 #include "geodesics/memory_guard.hpp"
 #include "geodesics/solver_factory.hpp"
 #include "mesh/io/mesh_reader.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/mesh_generator.hpp"
 
 namespace meshparticles {
 namespace {

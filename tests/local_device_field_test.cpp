@@ -12,7 +12,7 @@
 #include "backends/field_backend.hpp"
 #include "backends/local_device_field_backend.hpp"
 #include "backends/local_field_backend.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/mesh_generator.hpp"
 #include "particle_test_support.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/particle_run.hpp"

@@ -19,7 +19,7 @@
 #include "mesh/surface_walk.hpp"
 #include "particles/initial_placement.hpp"
 #include "particles/spacing_relaxation.hpp"
-#include "pipeline/point_sets.hpp"
+#include "pipeline/point_set_measurement.hpp"
 #include "particle_test_support.hpp"
 #include "pipeline/run_pipeline.hpp"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "mesh/io/mesh_reader.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/mesh_generator.hpp"
 #include "mesh/mesh_topology.hpp"
 
 namespace meshparticles {

@@ -12,8 +12,8 @@
 #include "common/json_text.hpp"
 #include "common/random.hpp"
 #include "common/user_error.hpp"
-#include "mesh/bent_body.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/bent_body.hpp"
+#include "fixtures/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
 
 namespace meshparticles {

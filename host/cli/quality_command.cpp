@@ -9,7 +9,7 @@
 #include "common/json_text.hpp"
 #include "particles/potentials.hpp"
 #include "pipeline/mesh_input.hpp"
-#include "pipeline/point_sets.hpp"
+#include "pipeline/point_set_measurement.hpp"
 #include "reports/quality_report.hpp"
 
 namespace meshparticles {

@@ -13,7 +13,7 @@
 #include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/mesh_alignment.hpp"
 #include "correspondence/shape_share.hpp"
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 
 namespace meshparticles {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 
 namespace meshparticles {
 

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "mesh/surface_mesh.hpp"
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 
 namespace meshparticles {
 

@@ -16,7 +16,7 @@
 #include "particles/hole_pull.hpp"
 #include "particles/packing_relaxation.hpp"
 #include "particles/particle_params.hpp"
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 #include "shape_model/procrustes.hpp"
 
 namespace meshparticles {

@@ -24,7 +24,7 @@
 #include "mesh/nearest_surface_point.hpp"
 #include "mesh/vertex_triangles.hpp"
 #include "pipeline/mesh_input.hpp"
-#include "pipeline/point_sets.hpp"
+#include "pipeline/point_set_measurement.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "pipeline/spread_method.hpp"
 #include "reports/particle_locations.hpp"

@@ -11,7 +11,7 @@
 #include "mesh/mesh_topology.hpp"
 #include "mesh/surface_location.hpp"
 #include "quality/distribution_quality.hpp"
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 
 namespace meshparticles {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 
 namespace meshparticles {
 

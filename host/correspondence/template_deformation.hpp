@@ -8,7 +8,7 @@
 // then less (its parts), so particle i keeps its place relative to the
 // shape's parts instead of jumping to the nearest surface.
 #include "mesh/surface_mesh.hpp"
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 
 namespace meshparticles {
 

@@ -6,7 +6,7 @@
 #include "common/progress.hpp"
 #include "common/user_error.hpp"
 #include "measurement/paper_figures.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/mesh_generator.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/mesh_input.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "common/user_error.hpp"
 #include "mesh/io/mesh_reader.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/mesh_generator.hpp"
 
 namespace meshparticles {
 

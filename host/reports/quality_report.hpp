@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/point_sets.hpp"
+#include "pipeline/point_set_measurement.hpp"
 #include "quality/particle_sets.hpp"
 
 namespace meshparticles {

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 
 namespace meshparticles {
 

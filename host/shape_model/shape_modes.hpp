@@ -6,7 +6,7 @@
 // gives the same nonzero variances and modes for far less work.
 #include <vector>
 
-#include "shape_model/point_sets.hpp"
+#include "shape_model/corresponding_points.hpp"
 
 namespace meshparticles {
 

@@ -1,8 +1,7 @@
-// The test populations of issue 31 and the template's deformation onto a
-// shape: an ellipsoid shape's vertices lie exactly where its parameters say
-// (the known correspondence is only as good as that), its shapes are meshed
-// each on its own, and the deformation follows a stretched shape where
-// nearest points cannot.
+// correspondence/population_correspondence, the feature layer: whole
+// populations of fixtures/ (their known map) through correspond_population,
+// the transfer, the joint refinement, the packing and the hold-back together.
+// The modules' own contracts are tested in the files named after them.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -14,20 +13,16 @@
 #include <limits>
 #include <numbers>
 #include <random>
-#include <set>
+#include <string>
 #include <vector>
 
 #include "common/random.hpp"
-#include "correspondence/ellipsoid_body.hpp"
+#include "common/user_error.hpp"
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/mesh_alignment.hpp"
 #include "correspondence/population_correspondence.hpp"
-#include "correspondence/pose_consensus.hpp"
-#include "correspondence/template_deformation.hpp"
-#include "mesh/bent_body.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "fixtures/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
-#include "mesh/point_cloud_tree.hpp"
 #include "particles/particle_params.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "shape_model/shape_model.hpp"
@@ -35,214 +30,9 @@
 namespace meshparticles::testing {
 namespace {
 
-double bump_term(const EllipsoidBump& bump, Vec3 u) { return std::exp(-(1 - dot(u, bump.direction)) / bump.width); }
-
 // The parameter of an unposed surface point, as population.json says.
 Vec3 parameter_of(const EllipsoidVariant& shape, Vec3 unposed) {
   return normalized({unposed.x / shape.axes.x, unposed.y / shape.axes.y, unposed.z / shape.axes.z});
-}
-
-TEST(EllipsoidPopulation, EveryVertexLiesOnItsShapeAtItsParameter) {
-  const EllipsoidVariant shape = generate_ellipsoid_variant(7, 1500);
-  double worst = 0;
-  for (const Vec3& world : shape.mesh.positions()) {
-    const Vec3 unposed = shape.pose.unposed(world);
-    const Vec3 u = parameter_of(shape, unposed);
-    const double r = 1 + shape.bump_height * bump_term(kEllipsoidBump, u) + kEllipsoidKnob.height * bump_term(kEllipsoidKnob, u);
-    const Vec3 on_surface = r * Vec3{shape.axes.x * u.x, shape.axes.y * u.y, shape.axes.z * u.z};
-    worst = std::max(worst, norm(on_surface + (-1.0) * unposed));
-  }
-  EXPECT_LT(worst, 1e-12);
-  EXPECT_GE(shape.bump_height, 0.1);
-  EXPECT_LE(shape.bump_height, 0.6);
-  EXPECT_LE(std::abs(shape.elongation), 0.2);
-}
-
-// The radii family: each of a shape's three radii within 20% of 1.25, 1
-// and 0.8, so that their order swaps; the bump and the knob of each shape's
-// own height. Its vertices lie where its parameters say, as above.
-TEST(EllipsoidPopulation, TheRadiiFamilySwapsTheOrderOfItsRadii) {
-  bool swapped = false;
-  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-    const EllipsoidVariant shape = generate_ellipsoid_variant(seed, 600, EllipsoidFamily::radii);
-    EXPECT_GE(shape.axes.x, 1.0) << seed;
-    EXPECT_LE(shape.axes.x, 1.5) << seed;
-    EXPECT_GE(shape.knob_height, 0.0) << seed;
-    EXPECT_LE(shape.knob_height, 0.3) << seed;
-    swapped = swapped || shape.axes.y < shape.axes.z || shape.axes.x < shape.axes.y;
-    double worst = 0;
-    for (const Vec3& world : shape.mesh.positions()) {
-      const Vec3 unposed = shape.pose.unposed(world);
-      const Vec3 u = parameter_of(shape, unposed);
-      const double r = 1 + shape.bump_height * bump_term(kEllipsoidBump, u) + shape.knob_height * bump_term(kEllipsoidKnob, u);
-      worst = std::max(worst, norm(r * Vec3{shape.axes.x * u.x, shape.axes.y * u.y, shape.axes.z * u.z} + (-1.0) * unposed));
-    }
-    EXPECT_LT(worst, 1e-12) << seed;
-  }
-  EXPECT_TRUE(swapped) << "no shape of 8 has its radii in another order";
-}
-
-// The bent family: each vertex, unposed and unbent off its arc as
-// population.json says, lies on the straight body at its parameter; the
-// shape's knobs stay in their ranges.
-TEST(GeneratedPopulation, BentBodiesLieWhereTheirParametersSay) {
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    const BentBody shape = generate_bent_body(seed, 800);
-    const double degrees = shape.bend_angle * 180 / std::numbers::pi;
-    EXPECT_GE(degrees, 30.0) << seed;
-    EXPECT_LE(degrees, 90.0) << seed;
-    EXPECT_NEAR(shape.bend_radius * shape.bend_angle, 2 * shape.axes.z, 1e-12) << seed;
-    EXPECT_GT(shape.axes.z, 2.4 * std::max(shape.axes.x, shape.axes.y)) << seed;
-    EXPECT_GE(shape.waist_depth, 0.1) << seed;
-    EXPECT_LE(shape.waist_depth, 0.35) << seed;
-    for (double height : shape.bump_heights) {
-      EXPECT_GE(height, 0.05) << seed;
-      EXPECT_LE(height, 0.2) << seed;
-    }
-    const double R = shape.bend_radius;
-    double worst = 0;
-    for (const Vec3& world : shape.mesh.positions()) {
-      const Vec3 x = shape.pose.unposed(world);
-      const Vec3 s{R - std::hypot(x.x - R, x.z), x.y, R * std::atan2(x.z, R - x.x)};
-      const Vec3 u = normalized({s.x / shape.axes.x, s.y / shape.axes.y, s.z / shape.axes.z});
-      double r = 1 - shape.waist_depth * std::exp(-std::pow(u.z / kBentBodyWaistWidth, 2));
-      for (std::size_t k = 0; k < 3; ++k) r += shape.bump_heights[k] * bump_term({kBentBodyBumps[k].direction, kBentBodyBumps[k].width, 0}, u);
-      worst = std::max(worst, norm(r * Vec3{shape.axes.x * u.x, shape.axes.y * u.y, shape.axes.z * u.z} + (-1.0) * s));
-    }
-    EXPECT_LT(worst, 1e-9) << seed;
-  }
-}
-
-TEST(EllipsoidPopulation, ShapesAreMeshedEachOnItsOwnAndPosedAtRandom) {
-  std::set<std::size_t> sizes;
-  std::vector<Vec3> first_vertex_parameters;
-  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    const EllipsoidVariant shape = generate_ellipsoid_variant(seed, 1500);
-    sizes.insert(shape.mesh.vertex_count());
-    const Vec3 unposed = shape.pose.unposed(shape.mesh.positions()[0]);
-    first_vertex_parameters.push_back(parameter_of(shape, unposed));
-  }
-  EXPECT_GE(sizes.size(), 2u) << "every shape has the same vertex count";
-  // Vertex 0 is somewhere else on every shape: ids say nothing.
-  for (std::size_t k = 1; k < first_vertex_parameters.size(); ++k) {
-    EXPECT_LT(dot(first_vertex_parameters[k], first_vertex_parameters[0]), 0.999) << "shape " << k;
-  }
-  // The same seed gives the same shape, bit for bit.
-  const EllipsoidVariant again = generate_ellipsoid_variant(3, 1500), once = generate_ellipsoid_variant(3, 1500);
-  EXPECT_EQ(again.mesh.positions().front().x, once.mesh.positions().front().x);
-  EXPECT_EQ(again.mesh.triangles(), once.mesh.triangles());
-}
-
-// The template: the committed-style sphere; the shape: another meshing of
-// the sphere stretched along x and squeezed along z. The true place of
-// template vertex p on the shape is the stretch of p. Deformed, the template
-// must land nearer those places than the nearest shape vertices do.
-TEST(TemplateDeformation, FollowsAStretchedShapeBetterThanNearestPoints) {
-  const SurfaceMesh template_mesh = generate_mesh_at("sphere", 700);
-  const SurfaceMesh shape_mesh = generate_mesh_at("sphere", 1000);
-  const Eigen::RowVector3d stretch(1.5, 1.0, 0.6);
-  const PointSet template_points = vertex_points(template_mesh);
-  PointSet shape_points = vertex_points(shape_mesh);
-  shape_points.array().rowwise() *= stretch.array();
-  PointSet truth = template_points;
-  truth.array().rowwise() *= stretch.array();
-
-  const PointSet deformed = deform_template(template_mesh, template_points, shape_points);
-  const MatrixRowTree<PointSet> shape_tree(shape_points);
-  double nearest_error = 0, deformed_error = 0;
-  for (Eigen::Index v = 0; v < template_points.rows(); ++v) {
-    nearest_error += (shape_points.row(shape_tree.nearest(template_points.row(v)).front()) - truth.row(v)).norm();
-    deformed_error += (deformed.row(v) - truth.row(v)).norm();
-  }
-  nearest_error /= double(template_points.rows());
-  deformed_error /= double(template_points.rows());
-  EXPECT_LT(deformed_error, 0.5 * nearest_error) << "deformed " << deformed_error << ", nearest " << nearest_error;
-}
-
-TEST(TemplateDeformation, LeavesATemplateOnItselfWhereItIs) {
-  const SurfaceMesh mesh = generate_mesh("torus");
-  const PointSet points = vertex_points(mesh);
-  EXPECT_EQ((deform_template(mesh, points, points) - points).cwiseAbs().maxCoeff(), 0.0);
-}
-
-// The medoid is the shape nearest the others, whatever their order: of
-// three spheres scaled 0.9, 1 and 1.2, the middle one; and a shape's
-// distance to the population leaves itself out.
-// The robust quadric finds a radii shape's own axes and radii through its
-// bump and knob (the moments' axes a bump tilts by degrees); a torus has no body.
-TEST(EllipsoidBody, FindsTheAxesAndRadiiUnderTheFeatures) {
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    const EllipsoidVariant shape = generate_ellipsoid_variant(seed, 900, EllipsoidFamily::radii);
-    const std::optional<EllipsoidBody> body = ellipsoid_body(vertex_points(shape.mesh));
-    ASSERT_TRUE(body) << seed;
-    const std::array<double, 3> radii{shape.axes.x, shape.axes.y, shape.axes.z};
-    const auto entry = [&](int row, int column) {
-      const Vec3& r = shape.pose.rotation[std::size_t(row)];
-      return column == 0 ? r.x : column == 1 ? r.y : r.z;
-    };
-    for (int k = 0; k < 3; ++k) {
-      // The true axis this one lies along (a column of the pose's rotation), and its radius.
-      double best = 0;
-      int along = 0;
-      for (int j = 0; j < 3; ++j) {
-        const Eigen::Vector3d axis(entry(0, j), entry(1, j), entry(2, j));
-        const double cosine = std::abs(body->axes.row(k).dot(axis));
-        if (cosine > best) {
-          best = cosine;
-          along = j;
-        }
-      }
-      EXPECT_GT(best, std::cos(std::numbers::pi / 180)) << seed << " axis " << k;
-      EXPECT_NEAR(body->radii(k) / shape.pose.scale, radii[std::size_t(along)], 0.02) << seed << " axis " << k;
-    }
-  }
-  EXPECT_FALSE(ellipsoid_body(vertex_points(generate_mesh("torus"))));
-}
-
-TEST(PopulationAlignment, TheMedoidIsTheShapeNearestTheOthers) {
-  const PointSet sphere = alignment_points(generate_mesh("sphere"));
-  const std::vector<PointSet> shapes{1.2 * sphere, 0.9 * sphere, 1.0 * sphere};
-  const AlignedShapes population(shapes);
-  EXPECT_EQ(population.medoid(), 2u);
-  EXPECT_EQ(AlignedShapes({shapes[2], shapes[0], shapes[1]}).medoid(), 0u);
-  EXPECT_EQ(AlignedShapes({shapes[2]}).distance_to_population(shapes[2], 0), 0.0);
-  EXPECT_LT(population.distance_to_population(shapes[2], 2), population.distance_to_population(shapes[0], 0));
-}
-
-// A sphere's points with two bumps (up and along x), and the same shape
-// turned half round about y: a pose a fit might take for it.
-PointSet bumped_sphere(double height) {
-  PointSet points = alignment_points(generate_mesh("sphere"));
-  const Eigen::RowVector3d up(0, 0, 1), along(1, 0, 0);
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    const Eigen::RowVector3d u = points.row(i).normalized();
-    points.row(i) *= 1 + height * (std::exp(-(1 - u.dot(up)) / 0.05) + 0.5 * std::exp(-(1 - u.dot(along)) / 0.05));
-  }
-  return points;
-}
-
-PointSet half_turned(const PointSet& points) {
-  return points * Eigen::Vector3d(-1, 1, -1).asDiagonal();  // about y
-}
-
-TEST(PopulationAlignment, ThePopulationChoosesAmongThePosesAFitLeavesOpen) {
-  const PointSet right = bumped_sphere(0.2), other_right = bumped_sphere(0.15);
-  // Shape 1's own fit chose the turned pose, shape 2's the right one.
-  const PoseCandidates candidates({{right}, {half_turned(other_right), other_right}, {other_right, half_turned(other_right)}, {right}});
-  std::vector<std::vector<double>> distances;
-  for (std::size_t k = 0; k < candidates.shapes(); ++k) distances.push_back(candidates.distances(k));
-  EXPECT_TRUE(distances[0].empty());
-  EXPECT_EQ(distances[1].size(), 2u * (1 + 2 + 1));  // each candidate to every reference's candidates
-  const std::vector<PoseChoice> choices = candidates.choose(distances);
-  EXPECT_EQ(choices[0].chosen, 0u);
-  EXPECT_EQ(choices[0].ratio, 0.0);  // one candidate: nothing to choose
-  EXPECT_EQ(choices[1].chosen, 1u);
-  EXPECT_EQ(choices[2].chosen, 0u);
-  EXPECT_LT(choices[1].ratio, 0.9);
-  EXPECT_LT(choices[2].ratio, 0.9);
-  // Two shapes: the other is the template, whose fit already chose.
-  const PoseCandidates pair({{right}, {half_turned(other_right), other_right}});
-  EXPECT_EQ(pair.choose({pair.distances(0), pair.distances(1)})[1].chosen, 0u);
 }
 
 // Four ellipsoid shapes on disk, and the spread of particle i across them
@@ -505,26 +295,66 @@ TEST_F(SmallPopulation, TheSamePopulationMovedGivesTheSameModel) {
   EXPECT_NEAR(a.quality.compactness[1], b.quality.compactness[1], 0.05);
 }
 
-// The one k-d tree over a PointSet's rows: the nearest rows, nearest first,
-// as a search of every row finds them.
-TEST(MatrixRowTree, FindsTheNearestRowsInOrder) {
-  std::mt19937_64 random(49);
-  std::uniform_real_distribution<double> uniform(-1, 1);
-  PointSet points(400, 3);
-  for (Eigen::Index i = 0; i < points.rows(); ++i) points.row(i) << uniform(random), uniform(random), uniform(random);
-  const MatrixRowTree<PointSet> tree(points);
-  for (int q = 0; q < 20; ++q) {
-    const Eigen::RowVector3d query(uniform(random), uniform(random), uniform(random));
-    std::vector<std::uint32_t> all(std::size_t(points.rows()));
-    for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
-    std::sort(all.begin(), all.end(), [&](std::uint32_t a, std::uint32_t b) {
-      return (points.row(a) - query).squaredNorm() < (points.row(b) - query).squaredNorm();
-    });
-    all.resize(8);
-    EXPECT_EQ(tree.nearest(query, 8), all);
+
+// What cannot be read, and more particles than the template has, are
+// refused naming the mesh, before any work.
+TEST(PopulationCorrespondence, RefusesAMissingMeshAndTooManyParticles) {
+  const std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / ("mp_population_refusals_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(directory);
+  PopulationRequest request;
+  request.meshes = {directory / "template.off", directory / "missing.off"};
+  write_mesh(generate_mesh("tetrahedron"), request.meshes.front());
+  request.run.particles = 2;
+  request.quiet = true;
+  try {
+    correspond_population(request);
+    ADD_FAILURE() << "a missing mesh was taken";
+  } catch (const UserError& error) {
+    EXPECT_NE(std::string(error.what()).find("missing.off"), std::string::npos) << error.what();
   }
-  EXPECT_EQ(tree.nearest(points.row(7)).front(), 7u);
-  EXPECT_EQ(tree.nearest(points.row(0), 1000).size(), 400u);  // no more than there are
+  request.meshes.back() = request.meshes.front();
+  request.run.particles = 5;
+  try {
+    correspond_population(request);
+    ADD_FAILURE() << "5 particles on 4 vertices were taken";
+  } catch (const UserError& error) {
+    EXPECT_NE(std::string(error.what()).find("-n 5"), std::string::npos) << error.what();
+  }
+  std::filesystem::remove_all(directory);
+}
+
+// Copies of the template, moved, turned and scaled: the transfer puts
+// particle i on each where the pose carries the template's.
+TEST(PopulationCorrespondence, ACopyOfTheTemplateTakesItsParticlesWhereThePoseCarriesThem) {
+  const std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / ("mp_population_copies_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(directory);
+  const SurfaceMesh mesh = generate_ellipsoid_variant(4, 400).mesh;
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(1.3, Eigen::Vector3d(0.2, 1, -0.4).normalized()).toRotationMatrix();
+  const double scale = 2.5;
+  const Eigen::Vector3d shift(4, -3, 1);
+  std::vector<Vec3> positions;
+  for (const Vec3& p : mesh.positions()) {
+    const Eigen::Vector3d q = scale * (turn * Eigen::Vector3d(p.x, p.y, p.z)) + shift;
+    positions.push_back({q(0), q(1), q(2)});
+  }
+  PopulationRequest request;
+  request.meshes = {directory / "template.off", directory / "copy.off", directory / "same.off"};
+  write_mesh(mesh, request.meshes[0]);
+  write_mesh(SurfaceMesh(positions, mesh.triangles()), request.meshes[1]);
+  write_mesh(mesh, request.meshes[2]);
+  request.run.particles = 24;
+  request.refinement.iterations = 0;
+  request.quiet = true;
+  const PopulationCorrespondence population = correspond_population(request);
+  std::filesystem::remove_all(directory);
+  ASSERT_EQ(population.shapes.size(), 3u);
+  const PointSet& template_particles = population.shapes[0].particles;
+  ASSERT_EQ(template_particles.rows(), 24);
+  const PointSet carried = ((scale * template_particles * turn.transpose()).rowwise() + shift.transpose()).eval();
+  EXPECT_LT((population.shapes[1].particles - carried).cwiseAbs().maxCoeff(), 1e-6 * scale);
+  EXPECT_LT((population.shapes[2].particles - template_particles).cwiseAbs().maxCoeff(), 1e-6);
 }
 
 }  // namespace

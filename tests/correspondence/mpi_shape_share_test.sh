@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# correspond_share.sh MODE MESHPARTICLES WORKDIR [MPIEXEC]: `correspond` on
+# mpi_shape_share_test.sh MODE MESHPARTICLES WORKDIR [MPIEXEC]: the test of
+# host/correspondence/mpi_shape_share.cpp (built only with MPI, so tested
+# through the program, `cli.correspond_mpi`): `correspond` on
 # a small population with a known map (generate --population --family
 # ellipsoid), its outputs compared byte for byte with one run of one
 # process that nothing interrupted (correspond_checkpoint.sh kills one
@@ -8,7 +10,7 @@
 #           then mpirun -n 2 killed after the packing, resumed by one process
 set -euo pipefail
 mode=$1 bin=$2 work=$3 mpiexec=${4:-}
-source "$(dirname "${BASH_SOURCE[0]}")/correspond_reference.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../correspond_reference.sh"
 # kill_when FILE COMMAND...: starts COMMAND, kills it (and its children)
 # with SIGKILL as soon as FILE exists, or lets it finish.
 kill_when() {

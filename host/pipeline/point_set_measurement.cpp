@@ -1,4 +1,4 @@
-#include "pipeline/point_sets.hpp"
+#include "pipeline/point_set_measurement.hpp"
 
 #include <algorithm>
 
