@@ -60,7 +60,7 @@ bool same_bits(const T& a, const T& b) {
 TEST(ShapeRecords, AShapeReadsBackToTheBit) {
   const ShapeCorrespondence shape = awkward_shape();
   const nlohmann::json json = through_text(shape_json(shape));
-  EXPECT_NO_THROW(check_shape_json(json, 20, 3));
+  EXPECT_NO_THROW(check_shape_json(json, shape.mesh.string(), 20, 3));
   const ShapeCorrespondence back = shape_from_json(json);
   EXPECT_EQ(back.mesh, shape.mesh);
   EXPECT_EQ(back.vertices, shape.vertices);
@@ -106,9 +106,13 @@ TEST(ShapeRecords, WhatJsonCannotHoldComesBackAsItWas) {
 }
 
 TEST(ShapeRecords, LocationsAndTheRecordReadBackToTheBit) {
+  // Weights that are barycentric (a decode refuses others) but awkward to
+  // write: each pair's third is what makes the sum 1.
+  const double pairs[4][2] = {{0.1 + 0.2, 1.0 / 3.0}, {1e-300, 5e-324}, {2.0 / 7.0, 0.5}, {-0.0, 1.0 / 3.0}};
   std::vector<SurfaceLocation> locations;
   for (std::uint32_t t = 0; t < 4; ++t) {
-    locations.push_back({t, {kAwkward[t], kAwkward[t + 1], kAwkward[t + 2]}, {kAwkward[t + 3], kAwkward[7], -kAwkward[0]}});
+    const double a = pairs[t][0], b = pairs[t][1];
+    locations.push_back({t, {a, b, 1 - a - b}, {kAwkward[t + 3], kAwkward[7], -kAwkward[0]}});
   }
   const std::vector<SurfaceLocation> back = locations_from_json(through_text(locations_json(locations)), 4, 4);
   ASSERT_EQ(back.size(), 4u);
@@ -155,14 +159,16 @@ TEST(ShapeRecords, ValuesNoRunCouldHaveWrittenAreRefused) {
   EXPECT_ANY_THROW(locations_from_json(not_a_number, 4, 2));
 
   const nlohmann::json shape = shape_json(awkward_shape());
-  EXPECT_THROW(check_shape_json(shape, 19, 3), std::invalid_argument);  // another mesh
-  EXPECT_THROW(check_shape_json(shape, 20, 2), std::invalid_argument);  // other particles
+  const std::string mesh = awkward_shape().mesh.string();
+  EXPECT_THROW(check_shape_json(shape, mesh, 19, 3), std::invalid_argument);  // another mesh's size
+  EXPECT_THROW(check_shape_json(shape, "/data/shape two.off", 20, 3), std::invalid_argument);  // another's entry
+  EXPECT_THROW(check_shape_json(shape, mesh, 20, 2), std::invalid_argument);  // other particles
   nlohmann::json past_end = shape;
   past_end["vertices"] = 19;
-  EXPECT_THROW(check_shape_json(past_end, 19, 3), std::invalid_argument);  // corner 19 of 19
+  EXPECT_THROW(check_shape_json(past_end, mesh, 19, 3), std::invalid_argument);  // corner 19 of 19
   nlohmann::json missing = shape;
   missing.erase("topology");
-  EXPECT_THROW(check_shape_json(missing, 20, 3), nlohmann::json::exception);
+  EXPECT_THROW(check_shape_json(missing, mesh, 20, 3), nlohmann::json::exception);
 }
 
 }  // namespace
