@@ -500,7 +500,11 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
            "</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">3</DataArray></Polys>\n</Piece>\n";
   };
   const std::string end = "</PolyData>\n</VTKFile>\n";
-  EXPECT_EQ(refusal(two + piece("0 1 2") + piece("0 1 2") + end, vtp), "accepted");
+  // Two pieces of one triangle: read, and said to lie on each other.
+  std::vector<std::string> warnings;
+  EXPECT_EQ(read_text(two + piece("0 1 2") + piece("0 1 2") + end, vtp, warnings).triangle_count(), 2u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("2 triangles lie on other triangles (coincident sheets"), std::string::npos);
   EXPECT_REFUSED(two + piece("0 1 3") + piece("0 1 2") + end, vtp,
                  "<Polys>: the point index 3 is outside its piece's 3 points");
   EXPECT_REFUSED(two + piece("0 1 2") + piece("-1 0 1") + end, vtp,
