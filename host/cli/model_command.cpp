@@ -8,6 +8,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
+#include "common/directory_lock.hpp"
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "particles/particle_file.hpp"
 #include "reports/shape_model_outputs.hpp"
@@ -46,6 +48,7 @@ std::vector<PointSet> read_shapes(const std::vector<std::string>& files) {
 
 void run_model(const ModelOptions& options) {
   prepare_shape_model_directory(options.out, options.particle_files);  // before the work
+  const DirectoryLock lock(options.out, "model");  // to the last file: a second model there is refused
   const std::vector<PointSet> shapes = read_shapes(options.particle_files);
   const ShapeModel model = build_shape_model(shapes, !options.no_scale, options.samples, options.seed, options.quiet);
   const ShapeModelOutputs outputs{options.particle_files, &model,
