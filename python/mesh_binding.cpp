@@ -87,6 +87,13 @@ Mesh mesh_from_arrays(const py::object& vertex_rows, const py::object& face_rows
   if (faces.ndim() != 2 || faces.shape(1) != 3) throw py::value_error("faces: expected an array of shape (F, 3)");
   const char kind = faces.dtype().kind();
   if (kind != 'i' && kind != 'u') throw py::type_error("faces: expected integer vertex indices");
+  // Real numbers only: NumPy casts dates, durations, booleans and complex
+  // numbers to doubles without a word (datetime64 coordinates made a mesh).
+  const char vertex_kind = vertices.dtype().kind();
+  if (vertex_kind != 'i' && vertex_kind != 'u' && vertex_kind != 'f') {
+    throw py::type_error("vertices: expected a (V, 3) array of numbers, got dtype " +
+                         py::str(vertices.dtype()).cast<std::string>());
+  }
   const auto points = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(vertices);
   if (!points) {
     PyErr_Clear();

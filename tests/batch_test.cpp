@@ -1,14 +1,18 @@
 // The parts of a batch that need no run: n from a density, the output
-// folders' names, and the order in which ranks are handed the meshes.
+// folders' names, the order in which ranks are handed the meshes, and the
+// meshes of a folder.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "batch/batch_plan.hpp"
 #include "batch/mesh_queue.hpp"
 #include "batch/output_names.hpp"
 #include "batch/particle_count.hpp"
 #include "common/user_error.hpp"
+#include "launch/batch_inputs.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -56,6 +60,38 @@ TEST(BatchOrder, BiggestFirstTiesInInputOrder) {
   }
   EXPECT_EQ(biggest_first_order(plan), (std::vector<std::size_t>{1, 3, 2, 0}));
   EXPECT_EQ(input_order(plan), (std::vector<std::size_t>{0, 1, 2, 3}));
+}
+
+// A symlink loop named as a mesh is named and skipped, the rest run, wherever
+// the listing meets it (last, it stopped batch and correspond with "cannot
+// read folder ...: Too many levels of symbolic links"; otherwise it was
+// dropped without a word); so is a link to nothing.
+TEST(BatchInputs, FolderEntriesThatCannotBeReachedAreNamedAndSkipped) {
+  const auto folder = std::filesystem::temp_directory_path() / ("mp_loop_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  std::filesystem::copy_file(std::string(MESHES_DIR) + "/tetrahedron.off", folder / "b.off");
+  std::filesystem::create_symlink("a_loop.off", folder / "a_loop.off");
+  std::filesystem::create_symlink("z_loop.off", folder / "z_loop.off");
+  std::filesystem::create_symlink("missing.off", folder / "c_dangling.off");
+  std::vector<std::string> notes;
+  const std::vector<MeshInput> meshes = expand_batch_inputs({folder.string()}, notes);
+  ASSERT_EQ(meshes.size(), 1u);
+  EXPECT_EQ(meshes[0].path, folder / "b.off");
+  ASSERT_EQ(notes.size(), 3u);
+  EXPECT_EQ(notes[0], (folder / "a_loop.off").string() + ": cannot read it (Too many levels of symbolic links): skipped");
+  EXPECT_EQ(notes[1], (folder / "c_dangling.off").string() + ": a link to nothing: skipped");
+  EXPECT_EQ(notes[2], (folder / "z_loop.off").string() + ": cannot read it (Too many levels of symbolic links): skipped");
+  // With nothing else, the refusal says why.
+  std::filesystem::remove(folder / "b.off");
+  try {
+    expand_batch_inputs({folder.string()}, notes);
+    ADD_FAILURE() << "a folder of loops was taken";
+  } catch (const UserError& error) {
+    EXPECT_NE(std::string(error.what()).find("holds no mesh file (.off"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("a_loop.off: cannot read it"), std::string::npos) << error.what();
+  }
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace

@@ -318,6 +318,25 @@ add_test(NAME cli.batch_busy_output
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/busy_output.sh $<TARGET_FILE:meshparticles> $<TARGET_FILE:kill_at_rename_shim>
                  ${PROJECT_SOURCE_DIR}/meshes ${CMAKE_CURRENT_BINARY_DIR}/batch_busy_output)
 set_tests_properties(cli.batch_busy_output PROPERTIES LABELS "fast;device" TIMEOUT 120)
+# quality of a run's own particles gives report.json's figures, on every committed mesh, a sphere far
+# from the origin and a thin tube; on coincident sheets run, report.json and quality say why not.
+add_test(NAME cli.own_figures
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/own_figures.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes
+                 ${CMAKE_CURRENT_BINARY_DIR}/own_figures)
+set_tests_properties(cli.own_figures PROPERTIES LABELS slow TIMEOUT 600)
+# The mesh digest in a batch's report.json is the read bytes', whatever happens to the file after.
+add_library(replace_after_read_shim SHARED replace_after_read_shim.cpp)
+target_link_libraries(replace_after_read_shim PRIVATE ${CMAKE_DL_LIBS})
+add_test(NAME cli.batch_mesh_digest
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/batch_mesh_digest.sh $<TARGET_FILE:meshparticles>
+                 $<TARGET_FILE:replace_after_read_shim> ${PROJECT_SOURCE_DIR}/meshes
+                 ${CMAKE_CURRENT_BINARY_DIR}/batch_mesh_digest)
+set_tests_properties(cli.batch_mesh_digest PROPERTIES LABELS "fast;device" TIMEOUT 120)
+# The same for run and model (stopped as they put their set in place).
+add_test(NAME cli.run_model_busy_output
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/busy_run_model.sh $<TARGET_FILE:meshparticles> $<TARGET_FILE:kill_at_rename_shim>
+                 ${PROJECT_SOURCE_DIR}/meshes ${CMAKE_CURRENT_BINARY_DIR}/run_model_busy_output)
+set_tests_properties(cli.run_model_busy_output PROPERTIES LABELS "fast;device" TIMEOUT 120)
 batch_test(resume "slow;device")
 if(MPI_CXX_FOUND)
   batch_test(mpi "slow;device" ${MPIEXEC_EXECUTABLE})

@@ -284,17 +284,20 @@ std::pair<DistributionQuality, DistributionQuality> quality_on_balls_and_table(
           measure_quality(m.mesh, m.distances, positions, energy, to_nearest, true)};
 }
 
-// Quality through a local store: the pairs within reach, and particles with
-// no neighbour within reach counted as alone.
-TEST(LocalField, QualityCountsParticlesAloneWithinTheCutoff) {
+// Quality through a local store: the pairs within reach, and a particle
+// with no neighbour within reach (its component holds others) measured by a
+// ball of its own, whose pairs join the energy: the table's figures.
+TEST(LocalField, QualityFindsTheNeighbourOfAParticleAloneWithinTheCutoff) {
   const MeshWithDistances m("patch.off");
   const std::vector<VertexId> positions = {0, 1, 399};  // two neighbours in a corner, one far away
   const EnergyParams energy{Potential::exp, 1.0};  // the far pair still weighs exp(-0.7)
   const auto [near, dense] = quality_on_balls_and_table(m, positions, energy, 0.2);
-  EXPECT_EQ(near.alone, 1u);
+  EXPECT_EQ(near.alone, 0u);
   EXPECT_EQ(dense.alone, 0u);
   EXPECT_EQ(near.nn_min, dense.nn_min);
-  EXPECT_LT(near.energy, dense.energy);
+  ASSERT_TRUE(near.nn_mean && dense.nn_mean);
+  EXPECT_NEAR(*near.nn_mean, *dense.nn_mean, 1e-4 * *dense.nn_mean);
+  EXPECT_NEAR(near.energy, dense.energy, 1e-4 * dense.energy);
   EXPECT_EQ(near.cover, dense.cover);
 }
 

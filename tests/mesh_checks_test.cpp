@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/user_error.hpp"
+#include "mesh/coincident_sheets.hpp"
 #include "mesh/io/mesh_reader.hpp"
 
 namespace meshparticles {
@@ -170,6 +171,36 @@ TEST(MeshChecks, SmallAndLargeMeshesKeepTheirArea) {
   EXPECT_DOUBLE_EQ(mesh.area(), 0.5);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0], "one: 1 degenerate (zero-area) triangle");
+}
+
+// Two sheets at one place through other vertices (a square and its flipped
+// copy): a particle file cannot say which sheet a point is on, so the check
+// names them once; one square alone gives no warning.
+TEST(MeshChecks, CoincidentSheetsAreNamedInOneWarning) {
+  PolygonSoup soup;
+  soup.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  soup.add_triangle(0, 1, 2);
+  soup.add_triangle(0, 2, 3);
+  std::vector<std::string> warnings;
+  const SurfaceMesh one = build_checked_mesh(soup, "square", warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_EQ(coincident_sheets(one).triangles, 0u);
+  soup.vertices.insert(soup.vertices.end(), {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  soup.add_triangle(4, 6, 5);
+  soup.add_triangle(4, 7, 6);
+  const SurfaceMesh two = build_checked_mesh(soup, "squares", warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind("squares: 4 triangles lie on other triangles (coincident sheets, e.g. at 0.666667 "
+                              "0.333333 0): a point there is on each sheet, so a particle file cannot say which",
+                              0),
+            0u)
+      << warnings[0];
+  EXPECT_EQ(coincident_sheets(two).triangles, 4u);
+  // Apart by the smallest step: other places, no warning.
+  soup.vertices[6].z = std::nextafter(0.0, 1.0);
+  warnings.clear();
+  build_checked_mesh(soup, "apart", warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <algorithm>
 #include <array>
@@ -438,7 +439,8 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
             "accepted");
   // Issue 50, item 3: the inflation bound holds for the whole file. Forty
   // pieces of 100,000 points, all at offset 0 of one appended zlib block of
-  // zeros, each within the bound alone: refused at once, not after 1.6 GB.
+  // zeros, each within the bound alone: refused at once, not after 1.6 GB
+  // (now at the second piece: it reads the first one's bytes).
   {
     constexpr std::uint32_t kPoints = 100000, kBytes = 3 * 4 * kPoints;
     const std::vector<unsigned char> zeros(kBytes, 0);
@@ -455,7 +457,22 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
               "type=\"Float32\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/></Points></Piece>\n";
     }
     bomb += "</PolyData>\n<AppendedData encoding=\"raw\">_" + appended + "</AppendedData>\n</VTKFile>\n";
-    EXPECT_REFUSED(bomb, vtp, "more than 1032 times its size");
+    EXPECT_REFUSED(bomb, vtp, "<Points>: its appended data (bytes 0 to ");
+  }
+  // Uncompressed, such pieces stayed within the inflation bound (2.4 MB
+  // took 1.6 GB): arrays that read the same appended bytes are refused.
+  // The sample's two pieces are each a triangle whose three arrays lie in
+  // one raw block; the second's read the first's bytes again.
+  {
+    std::ifstream in(data("vtk/aliased_appended_raw.vtp"), std::ios::binary);
+    const std::string aliased((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(aliased.empty());
+    EXPECT_REFUSED(aliased, vtp, "text: <Points>: its appended data (bytes 0 to 40) overlaps another array's "
+                                 "(bytes 0 to 40): each array has its own");
+    const std::string second_piece = "<Piece NumberOfPoints=\"3\"";
+    const std::string one_piece = aliased.substr(0, aliased.rfind(second_piece)) +
+                                  aliased.substr(aliased.find("</PolyData>"));
+    EXPECT_EQ(refusal(one_piece, vtp), "accepted");
   }
   // Expat's text is not wrapped twice (issue 50, item 4).
   EXPECT_REFUSED("<?xml version=\"1.0\"?>\n<VTKFile <>", vtp, "not well-formed XML (invalid token)");
@@ -500,7 +517,11 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
            "</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">3</DataArray></Polys>\n</Piece>\n";
   };
   const std::string end = "</PolyData>\n</VTKFile>\n";
-  EXPECT_EQ(refusal(two + piece("0 1 2") + piece("0 1 2") + end, vtp), "accepted");
+  // Two pieces of one triangle: read, and said to lie on each other.
+  std::vector<std::string> warnings;
+  EXPECT_EQ(read_text(two + piece("0 1 2") + piece("0 1 2") + end, vtp, warnings).triangle_count(), 2u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("2 triangles lie on other triangles (coincident sheets"), std::string::npos);
   EXPECT_REFUSED(two + piece("0 1 3") + piece("0 1 2") + end, vtp,
                  "<Polys>: the point index 3 is outside its piece's 3 points");
   EXPECT_REFUSED(two + piece("0 1 2") + piece("-1 0 1") + end, vtp,

@@ -147,6 +147,75 @@ TEST(Quality, AComponentWithoutParticlesLeavesTheCoverUndefined) {
   EXPECT_TRUE(quality_json(two)["nn_min"].is_null());
 }
 
+// A closed tube 10 long and 0.001 wide, 8 sides, rings every 0.05, capped.
+SurfaceMesh thin_tube() {
+  constexpr int kSides = 8, kRings = 201;
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  for (int k = 0; k < kRings; ++k) {
+    for (int s = 0; s < kSides; ++s) {
+      const double angle = 2 * M_PI * s / kSides;
+      positions.push_back({0.05 * k, 0.0005 * std::cos(angle), 0.0005 * std::sin(angle)});
+    }
+  }
+  const auto at = [](int k, int s) { return VertexId(k * kSides + (s % kSides)); };
+  for (int k = 0; k + 1 < kRings; ++k) {
+    for (int s = 0; s < kSides; ++s) {
+      triangles.push_back({at(k, s), at(k, s + 1), at(k + 1, s + 1)});
+      triangles.push_back({at(k, s), at(k + 1, s + 1), at(k + 1, s)});
+    }
+  }
+  positions.push_back({0, 0, 0});
+  positions.push_back({10, 0, 0});
+  for (int s = 0; s < kSides; ++s) {
+    triangles.push_back({VertexId(positions.size() - 2), at(0, s + 1), at(0, s)});
+    triangles.push_back({VertexId(positions.size() - 1), at(kRings - 1, s), at(kRings - 1, s + 1)});
+  }
+  return SurfaceMesh(std::move(positions), std::move(triangles));
+}
+
+// 20 particles along a thin tube lie 0.5 apart, where a local store's balls
+// of 3 d_hex reach 0.13: each particle finds its nearest by a ball of its own
+// (every one was reported alone, with no nn figures and energy 0), and the
+// figures are the complete table's.
+TEST(Quality, ParticlesAlongAThinTubeFindTheirNeighboursBeyondTheBalls) {
+  const SurfaceMesh tube = thin_tube();
+  std::vector<VertexId> positions;
+  for (int k = 0; k < 20; ++k) positions.push_back(VertexId((5 + 10 * k) * 8 + k % 8));
+  const double d_hex = hexagonal_spacing(tube.area(), positions.size());
+  ASSERT_LT(3 * d_hex, 0.2);
+  // Gaussian and narrow: pairs beyond the nearest weigh nothing next to them.
+  const EnergyParams energy{Potential::gauss, 0.15};
+  const std::vector<float> to_nearest = distance_to_nearest_particle(tube, GeodesicMethod::fast_marching, positions);
+  const DistanceTable table = compute_all_pairs(tube, GeodesicMethod::fast_marching, 0, true);
+  const DistributionQuality all = measure_quality(tube, table, positions, energy, to_nearest, true);
+  const LocalDistances balls = local_store(tube, 3 * d_hex);
+  const DistributionQuality local = measure_quality(tube, balls, positions, energy, to_nearest, true);
+  ASSERT_EQ(all.alone, 0u);
+  EXPECT_EQ(local.alone, 0u);
+  ASSERT_TRUE(local.nn_min && local.nn_mean && local.nn_cv && local.rho);
+  EXPECT_NEAR(*all.nn_min, 0.5, 0.01);
+  EXPECT_NEAR(*local.nn_min, *all.nn_min, 1e-4 * *all.nn_min);
+  EXPECT_NEAR(*local.nn_mean, *all.nn_mean, 1e-4 * *all.nn_mean);
+  EXPECT_NEAR(*local.nn_cv, *all.nn_cv, 1e-3);
+  EXPECT_NEAR(*local.rho, *all.rho, 1e-4 * *all.rho);
+  EXPECT_GT(local.energy, 0.0);
+  EXPECT_NEAR(local.energy, all.energy, 1e-3 * all.energy);  // each pair once
+  // One particle alone in a component of its own stays alone.
+  const MeshWithDistances two("two_pieces.off");
+  std::vector<VertexId> apart{0};
+  for (VertexId v = 0; v < two.mesh.vertex_count() && apart.size() < 2; ++v) {
+    if (two.mesh.component_of(v) != two.mesh.component_of(0)) apart.push_back(v);
+  }
+  const LocalDistances two_balls = local_store(two.mesh, 0.01);
+  const DistributionQuality alone = measure_quality(
+      two.mesh, two_balls, apart, energy, distance_to_nearest_particle(two.mesh, GeodesicMethod::fast_marching, apart),
+      true);
+  EXPECT_EQ(alone.alone, 2u);
+  EXPECT_FALSE(alone.nn_min.has_value());
+  EXPECT_EQ(alone.energy, 0.0);
+}
+
 std::string error_of(const std::string& name) {
   try {
     read_particle_points(std::string(TEST_DATA_DIR) + "/particles/" + name);

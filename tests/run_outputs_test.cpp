@@ -2,6 +2,7 @@
 // the report's promised keys - from the real pipeline, as `run` calls it.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,7 +16,9 @@
 #include "common/version.hpp"
 #include "mesh/io/mesh_reader.hpp"
 #include "particle_test_support.hpp"
+#include "particles/particle_file.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "reports/particle_locations.hpp"
 #include "reports/run_outputs.hpp"
 #include "reports/run_report.hpp"
 
@@ -104,7 +107,7 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   while (std::getline(ply, line) && line.rfind("element vertex", 0) != 0) {}
   EXPECT_EQ(line, "element vertex " + std::to_string(outcome.positions.size()));
   const std::string vtk = slurp(directory / "nested" / "mesh_distance.vtk");
-  EXPECT_NE(vtk.find("POINTS " + std::to_string(mesh.vertex_count()) + " float"), std::string::npos);
+  EXPECT_NE(vtk.find("POINTS " + std::to_string(mesh.vertex_count()) + " double"), std::string::npos);
   EXPECT_NE(vtk.find("POLYGONS " + std::to_string(mesh.triangle_count())), std::string::npos);
   const auto values_at = vtk.find("LOOKUP_TABLE default\n");
   ASSERT_NE(values_at, std::string::npos);
@@ -120,8 +123,8 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   ASSERT_EQ(from_vtp.vertex_count(), mesh.vertex_count());
   EXPECT_EQ(from_vtp.triangles(), mesh.triangles());
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    EXPECT_EQ(from_vtp.positions()[v].x, float(mesh.positions()[v].x)) << v;
-    EXPECT_EQ(from_vtp.positions()[v].z, float(mesh.positions()[v].z)) << v;
+    EXPECT_EQ(from_vtp.positions()[v].x, mesh.positions()[v].x) << v;
+    EXPECT_EQ(from_vtp.positions()[v].z, mesh.positions()[v].z) << v;
   }
   const std::vector<float> vtp_values =
       first_float_array(slurp(directory / "nested" / "mesh_distance.vtp"), "<PointData");
@@ -133,6 +136,66 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
     EXPECT_FLOAT_EQ(value, float(text_value));
   }
   EXPECT_EQ(written["version"], program_version());
+  std::filesystem::remove_all(directory);
+}
+
+// Every file that holds coordinates gives back the run's own doubles: far
+// from the origin nine significant digits would not (a unit sphere at
+// x = 1e7 got its particles in steps of 0.1, and `quality` of the file
+// measured other particles than the run's).
+std::vector<std::array<double, 3>> coordinates(const std::vector<Vec3>& points) {
+  std::vector<std::array<double, 3>> out;
+  for (const Vec3& p : points) out.push_back({p.x, p.y, p.z});
+  return out;
+}
+
+TEST(RunOutputs, FilesHoldTheRunsExactCoordinates) {
+  std::vector<std::string> warnings;
+  const SurfaceMesh near = read_mesh(std::string(TEST_DATA_DIR) + "/unreferenced_vertices.off", warnings);
+  std::vector<Vec3> far_positions = near.positions();
+  for (Vec3& p : far_positions) p = p + Vec3{1e7 + 1.0 / 3.0, -2e-7 / 3.0, 1.0 / 7.0};
+  const SurfaceMesh mesh(far_positions, near.triangles());
+  RunRequest request;
+  request.mesh_label = "far.off";
+  request.particles = 3;
+  request.quiet = true;
+  const RunResult result = run_pipeline(mesh, request);
+  const auto directory = std::filesystem::temp_directory_path() / ("mp_exact_" + std::to_string(::getpid()));
+  prepare_output_directory(directory);
+  write_run_outputs(directory, mesh, result, run_report(mesh, result, directory, std::nullopt));
+  std::vector<Vec3> expected;
+  for (const ParticleLocation& location : particle_locations(mesh, result)) expected.push_back(location.at);
+  EXPECT_EQ(coordinates(read_particle_points(directory / "particles.particles")), coordinates(expected));
+
+  std::istringstream rows(slurp(directory / "particles.csv"));
+  std::string row;
+  std::getline(rows, row);
+  std::vector<Vec3> from_csv;
+  while (std::getline(rows, row)) {
+    std::vector<double> cells;
+    std::istringstream fields(row);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(std::stod(cell));
+    from_csv.push_back({cells.at(2), cells.at(3), cells.at(4)});
+  }
+  EXPECT_EQ(coordinates(from_csv), coordinates(expected));
+
+  const std::string ply_text = slurp(directory / "particles.ply");
+  EXPECT_NE(ply_text.find("property double x\nproperty double y\nproperty double z\n"), std::string::npos);
+  std::istringstream ply(ply_text);
+  std::vector<Vec3> from_ply;
+  for (std::string line; std::getline(ply, line) && line != "end_header";) {}
+  for (Vec3 p; ply >> p.x >> p.y >> p.z;) {
+    from_ply.push_back(p);
+    ply.ignore(64, '\n');
+  }
+  EXPECT_EQ(coordinates(from_ply), coordinates(expected));
+
+  // The meshes the particles moved on, as the run had them.
+  const SurfaceMesh& moved_on = result.particle_mesh(mesh);
+  for (const char* name : {"mesh_distance.vtk", "mesh_distance.vtp"}) {
+    const SurfaceMesh back = read_mesh(directory / name, warnings);
+    EXPECT_EQ(coordinates(back.positions()), coordinates(moved_on.positions())) << name;
+  }
   std::filesystem::remove_all(directory);
 }
 

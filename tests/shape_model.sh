@@ -67,6 +67,18 @@ code=$?
 set -e
 [ "$code" -eq 2 ] && [ "$(grep -c '' <<<"$errors")" -eq 1 ] || fail "huge coordinate: exit $code: $errors"
 grep -q "huge.particles: line 1 has a coordinate beyond 1e150" <<<"$errors" || fail "$errors"
+# Points 1e-170 apart: their squares underflow, so they once read as "all at
+# one place"; the refusal names the real cause.
+awk '{ printf "%.17g %.17g %.17g\n", $1 * 1e-170, $2 * 1e-170, $3 * 1e-170 }' "$work/shape_1.particles" \
+  >"$work/tiny.particles"
+set +e
+errors=$("$bin" model "$work/shape_0.particles" "$work/tiny.particles" --out "$work/tiny" 2>&1 >/dev/null)
+code=$?
+set -e
+[ "$code" -eq 2 ] && [ "$(grep -c '' <<<"$errors")" -eq 1 ] || fail "tiny shape: exit $code: $errors"
+grep -q "tiny.particles: its points lie within .*e-1[67][0-9] of each other, under 1e-150 (their squared distances would underflow)" \
+  <<<"$errors" || fail "tiny shape: $errors"
+[ ! -e "$work/tiny" ] || fail "a refused model left a folder"
 # Three copies of one shape, moved: no variance above rounding, so no mode
 # (it reported one mode holding 100%, and with none it crashed).
 for k in 1 2 3; do

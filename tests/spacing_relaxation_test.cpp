@@ -15,6 +15,7 @@
 #include "common/random.hpp"
 #include "mesh/io/mesh_reader.hpp"
 #include "mesh/nearest_on_triangle.hpp"
+#include "mesh/nearest_surface_point.hpp"
 #include "mesh/point_insertion.hpp"
 #include "mesh/surface_walk.hpp"
 #include "particles/initial_placement.hpp"
@@ -105,6 +106,42 @@ TEST(PointInsertion, PointsBecomeVerticesWhereTheyWere) {
     ASSERT_NEAR(distance(on_input_position(input, inserted.refined.on_input[v]), result.positions()[v]), 0, 1e-12)
         << "vertex " << v;
     ASSERT_NEAR(distance(inserted.refined.on_input[v].at, result.positions()[v]), 0, 1e-12) << "vertex " << v;
+  }
+}
+
+// Inserting points where insertion put them gives the same vertices: what
+// `quality` of a run's own particles does. A point moved onto an edge within
+// the snap of a corner along it is that corner at once (it was a vertex 2%
+// along the edge, which the second insertion took for the corner: on the
+// patch at n = 128 two particles moved, and nn_min was 0.1% off).
+TEST(PointInsertion, InsertingTheInsertedPointsAgainChangesNothing) {
+  const SurfaceMesh input = committed("torus.off");
+  const RefinedMesh refined = refine_by_midpoints(input, 1);
+  const SurfaceMesh& mesh = refined.mesh;
+  const std::vector<SurfaceLocation> points = {
+      {0, {0.2, 0.3, 0.5}, {}},
+      {0, {0.6, 0.3, 0.1}, {}},
+      {5, {0.5, 0.495, 0.005}, {}},    // within the snap of an edge, mid-edge: split there
+      {7, {0.975, 0.019, 0.006}, {}},  // within the snap of an edge, and along it of a corner: the corner
+      {9, {0.995, 0.003, 0.002}, {}},  // within the snap of a corner
+      {12, {0.96, 0.025, 0.015}, {}},  // within the snap of an edge, near a corner but past the snap: split
+  };
+  const InsertedPoints once = insert_points(refined, input, points);
+  EXPECT_EQ(once.vertices[3], mesh.triangles()[7][0]);
+  EXPECT_EQ(once.refined.mesh.vertex_count(), mesh.vertex_count() + 4);
+  const NearestSurfacePoint nearest(mesh);
+  std::vector<SurfaceLocation> again;
+  for (const VertexId v : once.vertices) {
+    const auto location = nearest.find(once.refined.mesh.positions()[v]);
+    ASSERT_TRUE(location.has_value());
+    again.push_back(*location);
+  }
+  const InsertedPoints twice = insert_points(refined, input, again);
+  ASSERT_EQ(twice.refined.mesh.vertex_count(), once.refined.mesh.vertex_count());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    EXPECT_LE(distance(twice.refined.mesh.positions()[twice.vertices[i]], once.refined.mesh.positions()[once.vertices[i]]),
+              1e-12 * mesh.mean_edge_length())
+        << "point " << i;
   }
 }
 

@@ -3,6 +3,7 @@
 #include "batch/reusable_output.hpp"
 #include "common/interruption.hpp"
 #include "launch/failure.hpp"
+#include "mesh/io/mesh_file.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "reports/batch_summary.hpp"
 #include "reports/file_digest.hpp"
@@ -16,8 +17,15 @@ MeshOutcome run_batch_mesh(const BatchPlan& plan, std::size_t index) {
   const std::string label = item.input.path.string();
   const std::filesystem::path directory = output_directory(plan, index);
   try {
-    const SurfaceMesh mesh = load_mesh(item.input.path, plan.request.quiet, plan.request.read);
-    const std::string sha256 = file_sha256(item.input.path);  // after the reader refused FIFOs and devices
+    // One read, hashed and parsed: the digest is of the bytes the run used
+    // (hashing the file after loading it gave a file replaced in between
+    // the other file's digest).
+    std::string sha256;
+    const SurfaceMesh mesh = [&] {
+      const std::vector<char> bytes = read_mesh_file(item.input.path, label);
+      sha256 = bytes_sha256(bytes);
+      return load_mesh(bytes, item.input.path, plan.request.quiet, plan.request.read);
+    }();
     RunRequest request = plan.request.run;
     request.mesh_label = label;
     request.particles = particles_for(plan.request.count, mesh.area(), mesh.vertex_count());

@@ -8,6 +8,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
+#include "common/directory_lock.hpp"
+#include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "particles/particle_file.hpp"
 #include "reports/shape_model_outputs.hpp"
@@ -25,6 +27,11 @@ struct ModelOptions {
   bool quiet = false;
 };
 
+// A shape smaller than this is refused: the squares of its offsets, which
+// Procrustes and the modes sum, underflow (kLargestParticleCoordinate is
+// the bound above).
+constexpr double kSmallestShapeExtent = 1e-150;
+
 // The files as point sets, refused unless every one has the same points.
 std::vector<PointSet> read_shapes(const std::vector<std::string>& files) {
   std::vector<PointSet> shapes;
@@ -36,8 +43,13 @@ std::vector<PointSet> read_shapes(const std::vector<std::string>& files) {
       throw UserError(file + ": " + std::to_string(shape.rows()) + " points, but " + files.front() + " has " +
                       std::to_string(shapes.front().rows()) + ": a shape model needs the same points on every shape");
     }
-    if (shape.rows() < 2 || (shape.rowwise() - shape.colwise().mean()).norm() == 0) {
-      throw UserError(file + ": its points are all at one place: no shape to align");
+    // Compared exactly: a norm squares the offsets, and those of points
+    // 1e-170 apart underflow to 0 (they were said to be at one place).
+    const double extent = shape.rows() < 2 ? 0.0 : (shape.rowwise() - shape.row(0)).cwiseAbs().maxCoeff();
+    if (extent == 0) throw UserError(file + ": its points are all at one place: no shape to align");
+    if (extent < kSmallestShapeExtent) {
+      throw UserError(file + ": its points lie within " + format_number("%.3g", extent) +
+                      " of each other, under 1e-150 (their squared distances would underflow): scale the coordinates");
     }
     shapes.push_back(std::move(shape));
   }
@@ -46,6 +58,7 @@ std::vector<PointSet> read_shapes(const std::vector<std::string>& files) {
 
 void run_model(const ModelOptions& options) {
   prepare_shape_model_directory(options.out, options.particle_files);  // before the work
+  const DirectoryLock lock(options.out, "model");  // to the last file: a second model there is refused
   const std::vector<PointSet> shapes = read_shapes(options.particle_files);
   const ShapeModel model = build_shape_model(shapes, !options.no_scale, options.samples, options.seed, options.quiet);
   const ShapeModelOutputs outputs{options.particle_files, &model,

@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/run_options.hpp"
+#include "common/directory_lock.hpp"
 #include "common/memory_limits.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/run_pipeline.hpp"
@@ -60,6 +61,9 @@ void run_run(RunCommandOptions options) {
   request.mesh_label = options.mesh;
   const RunPlan plan = plan_run(mesh, request);
   prepare_output_directory(options.out);  // before the long work, not after
+  // Held to the last file: a second run into the same --out is refused, not
+  // left to replace this one's set (both once ended with exit 0).
+  const DirectoryLock lock(options.out, "run");
   const RunResult result = execute_run(mesh, plan);
   // The built-in sphere has no file to digest.
   const bool from_file = std::filesystem::is_regular_file(options.mesh);

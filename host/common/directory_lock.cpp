@@ -12,7 +12,10 @@
 
 namespace meshparticles {
 
-DirectoryLock::DirectoryLock(const std::filesystem::path& directory, const std::string& command) {
+DirectoryLock::DirectoryLock(const std::filesystem::path& directory, const std::string& command)
+    : directory_(directory) {
+  std::error_code ignored;
+  created_ = !std::filesystem::exists(directory, ignored);
   create_directory_for(directory, "output directory");
   // O_CLOEXEC: a program this one starts does not hold the lock after it ends.
   descriptor_ = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -29,6 +32,11 @@ DirectoryLock::DirectoryLock(const std::filesystem::path& directory, const std::
   throw UserError("cannot lock output directory " + directory.string() + ": " + std::strerror(error));
 }
 
-DirectoryLock::~DirectoryLock() { ::close(descriptor_); }
+DirectoryLock::~DirectoryLock() {
+  // A command refused before it wrote anything leaves no folder it made
+  // (rmdir takes only an empty one: a set put in its place stays).
+  if (created_) ::rmdir(directory_.c_str());
+  ::close(descriptor_);
+}
 
 }  // namespace meshparticles

@@ -13,12 +13,16 @@ class DirectoryLock {
  public:
   // Creates `directory` if needed and locks it. Throws UserError when
   // another process holds it, naming `command` (the one that wants it).
+  // A directory it created is removed when the lock ends if it is still
+  // empty (the command was refused before it wrote anything).
   DirectoryLock(const std::filesystem::path& directory, const std::string& command);
   ~DirectoryLock();
   DirectoryLock(const DirectoryLock&) = delete;
   DirectoryLock& operator=(const DirectoryLock&) = delete;
 
  private:
+  std::filesystem::path directory_;
+  bool created_ = false;
   int descriptor_ = -1;
 };
 

@@ -5,6 +5,7 @@
 
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
+#include "common/exact_number.hpp"
 #include "common/json_text.hpp"
 #include "common/temporary_names.hpp"
 #include "common/user_error.hpp"
@@ -36,20 +37,17 @@ void write_shape_files(const std::filesystem::path& set, const PopulationCorresp
       char line[320];
       write_new_file(staging / (stems[s] + ".particles"), [&](std::ostream& out) {
         for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
-          std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", shape.particles(i, 0), shape.particles(i, 1),
-                        shape.particles(i, 2));
-          out << line;
+          out << exact_triple(shape.particles(i, 0), shape.particles(i, 1), shape.particles(i, 2)) << "\n";
         }
       });
       write_new_file(staging / (stems[s] + ".csv"), [&](std::ostream& out) {
         out << "particle,vertex,x,y,z,corner_a,corner_b,corner_c,weight_a,weight_b,weight_c\n";
         for (Eigen::Index i = 0; i < shape.particles.rows(); ++i) {
           const InputLocation& at = shape.locations[std::size_t(i)];
-          std::snprintf(line, sizeof line, "%lld,%u,%.9g,%.9g,%.9g,%u,%u,%u,%.17g,%.17g,%.17g\n",
-                        static_cast<long long>(i), unsigned(at.heaviest_corner()), shape.particles(i, 0),
-                        shape.particles(i, 1), shape.particles(i, 2), unsigned(at.corners[0]),
+          std::snprintf(line, sizeof line, ",%u,%u,%u,%.17g,%.17g,%.17g\n", unsigned(at.corners[0]),
                         unsigned(at.corners[1]), unsigned(at.corners[2]), at.weights[0], at.weights[1], at.weights[2]);
-          out << line;
+          out << i << "," << at.heaviest_corner() << ","
+              << exact_triple(shape.particles(i, 0), shape.particles(i, 1), shape.particles(i, 2), ',') << line;
         }
       });
     }

@@ -65,6 +65,8 @@ class LocalDistances final : public DistanceStore {
   const LocalDistances* local_balls() const override { return this; }
   // The threads it solves balls on (Settings::threads, 0 resolved to the cores).
   unsigned threads() const;
+  // The solver its balls come from, built for its mesh: for a ball of another radius.
+  const GeodesicSolver& solver() const { return *solver_; }
 
   // Computes the balls of `vertices` the cache does not hold, on all cores
   // (with a progress line when there are many), and keeps them.

@@ -28,14 +28,35 @@ bool is_list_file(const std::filesystem::path& file) {
   return extension == ".txt";
 }
 
-std::vector<std::filesystem::path> meshes_in_folder(const std::filesystem::path& folder) {
+// A folder's mesh files. An entry named as a mesh whose file cannot be
+// reached (a symlink loop, a link to nothing) is named in `notes` and
+// skipped: the others run (the error of one entry once stopped the whole
+// listing, or was dropped without a word).
+std::vector<std::filesystem::path> meshes_in_folder(const std::filesystem::path& folder,
+                                                    std::vector<std::string>& notes) {
   std::vector<std::filesystem::path> meshes;
+  std::vector<std::string> skipped;
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-    if (entry.is_regular_file(error) && has_mesh_extension(entry.path())) meshes.push_back(entry.path());
+  for (std::filesystem::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error)) {
+    if (!has_mesh_extension(entry->path())) continue;
+    std::error_code unreachable;
+    const std::filesystem::file_status status = entry->status(unreachable);
+    if (unreachable == std::errc::no_such_file_or_directory || status.type() == std::filesystem::file_type::not_found) {
+      skipped.push_back(entry->path().string() + ": a link to nothing: skipped");
+    } else if (unreachable) {
+      skipped.push_back(entry->path().string() + ": cannot read it (" + unreachable.message() + "): skipped");
+    } else if (std::filesystem::is_regular_file(status)) {
+      meshes.push_back(entry->path());
+    }
   }
   if (error) throw UserError("cannot read folder " + folder.string() + ": " + error.message());
-  if (meshes.empty()) throw UserError("folder " + folder.string() + " holds no mesh file (" + mesh_extensions() + ")");
+  std::sort(skipped.begin(), skipped.end());
+  if (meshes.empty()) {
+    std::string why;
+    for (const std::string& note : skipped) why += "; " + note;
+    throw UserError("folder " + folder.string() + " holds no mesh file (" + mesh_extensions() + ")" + why);
+  }
+  notes.insert(notes.end(), skipped.begin(), skipped.end());
   std::sort(meshes.begin(), meshes.end());
   return meshes;
 }
@@ -64,10 +85,10 @@ std::vector<std::filesystem::path> meshes_in_list(const std::filesystem::path& l
   return meshes;
 }
 
-std::vector<std::filesystem::path> meshes_of(const std::string& input) {
+std::vector<std::filesystem::path> meshes_of(const std::string& input, std::vector<std::string>& notes) {
   const std::filesystem::path path(input);
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) return meshes_in_folder(path);
+  if (std::filesystem::is_directory(path, error)) return meshes_in_folder(path, notes);
   if (is_list_file(path)) return meshes_in_list(path);
   return {path};
 }
@@ -78,7 +99,7 @@ std::vector<MeshInput> expand_batch_inputs(const std::vector<std::string>& input
   std::vector<MeshInput> meshes;
   std::map<std::filesystem::path, std::filesystem::path> first_seen;  // resolved -> as given
   for (const std::string& input : inputs) {
-    for (const std::filesystem::path& path : meshes_of(input)) {
+    for (const std::filesystem::path& path : meshes_of(input, notes)) {
       std::error_code error;
       MeshInput mesh{path, std::filesystem::weakly_canonical(std::filesystem::absolute(path), error), 0};
       if (error) mesh.resolved = std::filesystem::absolute(path).lexically_normal();

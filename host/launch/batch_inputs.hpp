@@ -21,7 +21,9 @@ struct MeshInput {
 // Throws UserError for a folder or a list that cannot be read, a folder
 // with no mesh, and a list entry that is not a mesh file. A mesh file that
 // is missing or broken is not an error here: its run refuses it, and the
-// batch goes on with the others. `notes` gets one line per dropped duplicate.
+// batch goes on with the others. `notes` gets one line per dropped duplicate
+// and per entry of a folder, named as a mesh, that cannot be reached (a
+// symlink loop, a link to nothing), skipped.
 std::vector<MeshInput> expand_batch_inputs(const std::vector<std::string>& inputs, std::vector<std::string>& notes);
 
 }  // namespace meshparticles

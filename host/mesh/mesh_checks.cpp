@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "common/user_error.hpp"
+#include "mesh/coincident_sheets.hpp"
 #include "mesh/plural.hpp"
 #include "mesh/vertex_triangles.hpp"
 
@@ -255,7 +256,11 @@ SurfaceMesh build_checked_mesh(const PolygonSoup& soup, const std::string& label
   check_area(area, degenerate == triangles.size(), label);
   if (degenerate > 0) warnings.push_back(label + ": " + plural(degenerate, "degenerate (zero-area) triangle"));
 
-  return SurfaceMesh(std::move(positions), std::move(triangles), std::move(input_ids), soup.vertices.size());
+  SurfaceMesh mesh(std::move(positions), std::move(triangles), std::move(input_ids), soup.vertices.size());
+  if (const std::string sheets = coincident_sheets_text(coincident_sheets(mesh)); !sheets.empty()) {
+    warnings.push_back(label + ": " + sheets);
+  }
+  return mesh;
 }
 
 }  // namespace meshparticles

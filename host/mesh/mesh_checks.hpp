@@ -6,7 +6,8 @@
 // triangles, unreferenced vertices (dropped, input ids remembered),
 // inconsistent orientation, and the non-manifold cases real scans have:
 // edges in more than two triangles and vertices where separate fans meet
-// (kept as they are), repeated triangles (dropped).
+// (kept as they are), repeated triangles (dropped), and triangles lying on
+// others through other vertices (coincident sheets: mesh/coincident_sheets).
 #include <string>
 #include <vector>
 

@@ -55,6 +55,12 @@ class Inserter {
     if (weights[smallest] <= snap) {
       const VertexId a = corners[(smallest + 1) % 3], b = corners[(smallest + 2) % 3];
       const double along = weights[(smallest + 2) % 3] / (weights[(smallest + 1) % 3] + weights[(smallest + 2) % 3]);
+      // Moved onto the edge, within `snap` of a corner along it: that corner.
+      // Else the point on the edge, inserted again (`quality` of a run's
+      // own particles), would be taken for the corner: the run's vertex and
+      // the file's measure would differ.
+      if (along <= snap) return a;
+      if (along >= 1 - snap) return b;
       return split_edge(a, b, along);
     }
     return split_triangle(piece, weights);

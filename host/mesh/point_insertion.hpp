@@ -15,7 +15,9 @@
 namespace meshparticles {
 
 // A point within this barycentric weight of an edge is moved onto the edge
-// (and within it of a corner, onto the corner): no triangle thinner than
+// (and within it of a corner, or, once on the edge, within this share of
+// the edge of a corner, onto the corner: inserting the inserted points
+// again then gives the same vertices): no triangle thinner than
 // this share of its height is made, and a point moves by at most this share
 // of its triangle's height (the working mesh's triangles are under half a
 // spacing, so under 1% of a spacing).

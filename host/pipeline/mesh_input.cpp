@@ -8,12 +8,27 @@
 
 namespace meshparticles {
 
+namespace {
+
+void print_warnings(const std::vector<std::string>& warnings, bool quiet) {
+  if (quiet) return;
+  for (const auto& warning : warnings) std::cerr << "meshparticles: warning: " << warning << "\n";
+}
+
+}  // namespace
+
 SurfaceMesh load_mesh(const std::filesystem::path& file, bool quiet, const MeshReadOptions& read) {
   std::vector<std::string> warnings;
   SurfaceMesh mesh = read_mesh(file, warnings, read);
-  if (!quiet) {
-    for (const auto& warning : warnings) std::cerr << "meshparticles: warning: " << warning << "\n";
-  }
+  print_warnings(warnings, quiet);
+  return mesh;
+}
+
+SurfaceMesh load_mesh(std::span<const char> bytes, const std::filesystem::path& file, bool quiet,
+                      const MeshReadOptions& read) {
+  std::vector<std::string> warnings;
+  SurfaceMesh mesh = read_mesh(bytes, file, warnings, read);
+  print_warnings(warnings, quiet);
   return mesh;
 }
 

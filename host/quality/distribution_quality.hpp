@@ -16,9 +16,11 @@ namespace meshparticles {
 struct DistributionQuality {
   std::size_t particles = 0;
   // Nearest-neighbour geodesic distance of each particle (another particle on
-  // its vertex: 0). A particle with no other within the store's reach (in
-  // its component, or within a local store's cutoff) is left out and counted
-  // in `alone`. Absent when every particle is alone.
+  // its vertex: 0). One with no other within a local store's cutoff whose
+  // component holds others is given its nearest by a ball of its own (a thin
+  // tube's spacing is far more than the cutoff); a particle alone in its
+  // component is left out and counted in `alone`. Absent when every
+  // particle is alone.
   std::optional<double> nn_min, nn_mean, nn_std, nn_cv;
   std::size_t alone = 0;
   double d_hex = 0;             // sqrt(2A / (sqrt(3) n)), the hexagonal spacing
@@ -26,7 +28,8 @@ struct DistributionQuality {
   std::optional<double> cover;  // max over vertices of the distance to the nearest particle, / d_hex;
                                 // absent when a component holds no particle
   double energy = 0;            // sum_{i<j} w(d(p_i, p_j)) at the given sigma, in double, over the pairs
-                                // within the store's reach
+                                // within the store's reach, and those in the balls of particles it left
+                                // without a neighbour
   std::size_t stacked = 0;      // particles on a vertex a lower-index particle occupies
 };
 

@@ -55,9 +55,11 @@ std::string file_sha256(const std::filesystem::path& file) {
   return digest.hex();
 }
 
-std::string text_sha256(const std::string& text) {
+std::string text_sha256(const std::string& text) { return bytes_sha256(text); }
+
+std::string bytes_sha256(std::span<const char> bytes) {
   Sha256 digest;
-  digest.add(text.data(), text.size());
+  digest.add(bytes.data(), bytes.size());
   return digest.hex();
 }
 

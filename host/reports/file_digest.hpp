@@ -4,6 +4,7 @@
 // mesh file is the one its output was computed from (and anyone can check
 // which file produced a result).
 #include <filesystem>
+#include <span>
 #include <string>
 
 namespace meshparticles {
@@ -14,5 +15,7 @@ std::string file_sha256(const std::filesystem::path& file);
 
 // The same digest of a text in memory.
 std::string text_sha256(const std::string& text);
+// The same digest of bytes in memory (a mesh file as it was read).
+std::string bytes_sha256(std::span<const char> bytes);
 
 }  // namespace meshparticles

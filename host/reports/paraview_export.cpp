@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/atomic_file.hpp"
+#include "common/exact_number.hpp"
 
 namespace meshparticles {
 
@@ -43,13 +44,11 @@ void write_particles_ply(const std::filesystem::path& file, std::span<const Vec3
                          std::span<const VertexId> input_vertices) {
   write_file_atomically(file, [&](std::ostream& out) {
     out << "ply\nformat ascii 1.0\ncomment meshparticles particles\nelement vertex " << points.size()
-        << "\nproperty float x\nproperty float y\nproperty float z\nproperty int particle\nproperty int vertex\n"
+        << "\nproperty double x\nproperty double y\nproperty double z\nproperty int particle\nproperty int vertex\n"
            "end_header\n";
-    char line[128];
     for (std::size_t i = 0; i < points.size(); ++i) {
       const Vec3& p = points[i];
-      std::snprintf(line, sizeof line, "%.9g %.9g %.9g %zu %u\n", p.x, p.y, p.z, i, unsigned(input_vertices[i]));
-      out << line;
+      out << exact_triple(p.x, p.y, p.z) << " " << i << " " << input_vertices[i] << "\n";
     }
   });
 }
@@ -58,12 +57,9 @@ void write_mesh_field_vtk(const std::filesystem::path& file, const SurfaceMesh& 
                           const std::string& name) {
   write_file_atomically(file, [&](std::ostream& out) {
     out << "# vtk DataFile Version 3.0\nmeshparticles: " << name << "\nASCII\nDATASET POLYDATA\nPOINTS "
-        << mesh.vertex_count() << " float\n";
+        << mesh.vertex_count() << " double\n";
+    for (const Vec3& p : mesh.positions()) out << exact_triple(p.x, p.y, p.z) << "\n";
     char line[128];
-    for (const Vec3& p : mesh.positions()) {
-      std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", p.x, p.y, p.z);
-      out << line;
-    }
     out << "POLYGONS " << mesh.triangle_count() << " " << 4 * mesh.triangle_count() << "\n";
     for (const Triangle& t : mesh.triangles()) out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
     out << "POINT_DATA " << mesh.vertex_count() << "\nSCALARS " << name << " float 1\nLOOKUP_TABLE default\n";
@@ -76,9 +72,10 @@ void write_mesh_field_vtk(const std::filesystem::path& file, const SurfaceMesh& 
 
 void write_mesh_field_vtp(const std::filesystem::path& file, const SurfaceMesh& mesh, std::span<const float> values,
                           const std::string& name) {
-  std::vector<float> points, field;
+  std::vector<double> points;
+  std::vector<float> field;
   points.reserve(3 * mesh.vertex_count());
-  for (const Vec3& p : mesh.positions()) points.insert(points.end(), {float(p.x), float(p.y), float(p.z)});
+  for (const Vec3& p : mesh.positions()) points.insert(points.end(), {p.x, p.y, p.z});
   for (const float value : values) field.push_back(finite_or_minus_one(value));
   std::vector<std::int64_t> connectivity, offsets;
   connectivity.reserve(3 * mesh.triangle_count());
@@ -96,7 +93,7 @@ void write_mesh_field_vtp(const std::filesystem::path& file, const SurfaceMesh& 
         << name << "\" format=\"binary\">";
     write_base64_block(out, field);
     out << "</DataArray>\n      </PointData>\n      <Points>\n"
-           "        <DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"binary\">";
+           "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"binary\">";
     write_base64_block(out, points);
     out << "</DataArray>\n      </Points>\n      <Polys>\n"
            "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"binary\">";

@@ -4,6 +4,7 @@
 
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
+#include "common/exact_number.hpp"
 #include "reports/output_digests.hpp"
 #include "reports/paraview_export.hpp"
 #include "reports/particle_locations.hpp"
@@ -12,11 +13,10 @@ namespace meshparticles {
 
 namespace {
 
+// Coordinates in their shortest exact form: `quality` of the file reads the run's own points.
 void write_points(std::ostream& out, const std::vector<ParticleLocation>& locations) {
-  char line[96];
   for (const ParticleLocation& location : locations) {
-    std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", location.at.x, location.at.y, location.at.z);
-    out << line;
+    out << exact_triple(location.at.x, location.at.y, location.at.z) << "\n";
   }
 }
 
@@ -25,10 +25,10 @@ void write_csv(std::ostream& out, const std::vector<ParticleLocation>& locations
   char line[320];
   for (std::size_t i = 0; i < locations.size(); ++i) {
     const ParticleLocation& l = locations[i];
-    std::snprintf(line, sizeof line, "%zu,%u,%.9g,%.9g,%.9g,%u,%u,%u,%.17g,%.17g,%.17g\n", i, unsigned(l.input_vertex),
-                  l.at.x, l.at.y, l.at.z, unsigned(l.on_input.corners[0]), unsigned(l.on_input.corners[1]),
-                  unsigned(l.on_input.corners[2]), l.on_input.weights[0], l.on_input.weights[1], l.on_input.weights[2]);
-    out << line;
+    std::snprintf(line, sizeof line, ",%u,%u,%u,%.17g,%.17g,%.17g\n", unsigned(l.on_input.corners[0]),
+                  unsigned(l.on_input.corners[1]), unsigned(l.on_input.corners[2]), l.on_input.weights[0],
+                  l.on_input.weights[1], l.on_input.weights[2]);
+    out << i << "," << l.input_vertex << "," << exact_triple(l.at.x, l.at.y, l.at.z, ',') << line;
   }
 }
 

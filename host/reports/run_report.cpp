@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "common/version.hpp"
+#include "mesh/coincident_sheets.hpp"
 #include "pipeline/spread_method.hpp"
 #include "reports/quality_report.hpp"
 
@@ -92,11 +93,16 @@ nlohmann::json distances_json(const RunResult& result) {
 
 nlohmann::json mesh_json(const SurfaceMesh& mesh, const RunResult& result,
                          const std::optional<std::string>& mesh_sha256) {
-  return {{"path", result.plan.request.mesh_label},
-          {"vertices", mesh.vertex_count()},
-          {"faces", mesh.triangle_count()},
-          {"area", mesh.area()},
-          {"sha256", mesh_sha256 ? nlohmann::json(*mesh_sha256) : nlohmann::json(nullptr)}};
+  const CoincidentSheets sheets = coincident_sheets(mesh);
+  nlohmann::json json = {{"path", result.plan.request.mesh_label},
+                         {"vertices", mesh.vertex_count()},
+                         {"faces", mesh.triangle_count()},
+                         {"area", mesh.area()},
+                         {"coincident_triangles", sheets.triangles},
+                         {"sha256", mesh_sha256 ? nlohmann::json(*mesh_sha256) : nlohmann::json(nullptr)}};
+  // Why `quality` of the particle file cannot give this report's figures.
+  if (sheets.triangles > 0) json["warnings"] = {coincident_sheets_text(sheets)};
+  return json;
 }
 
 nlohmann::json seconds_json(const RunTimes& seconds) {

@@ -5,6 +5,7 @@
 
 #include "common/atomic_directory.hpp"
 #include "common/atomic_file.hpp"
+#include "common/exact_number.hpp"
 #include "common/json_text.hpp"
 #include "common/text_format.hpp"
 #include "common/version.hpp"
@@ -28,12 +29,9 @@ std::set<std::string> all_file_names(const std::vector<std::string>& shapes) {
   return names;
 }
 
+// Exact coordinates (common/exact_number.hpp): the files read back to the model's points.
 void write_points(std::ostream& out, const PointSet& points) {
-  char line[96];
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", points(i, 0), points(i, 1), points(i, 2));
-    out << line;
-  }
+  for (Eigen::Index i = 0; i < points.rows(); ++i) out << exact_triple(points(i, 0), points(i, 1), points(i, 2)) << "\n";
 }
 
 nlohmann::json rows_of(const PointSet& points) {

@@ -488,6 +488,14 @@ def test_mesh_takes_lists_and_names_what_it_refuses():
         mp.Mesh([[0, 0], [1, 0]], [[0, 1, 2]])
     with pytest.raises(TypeError, match=r"^vertices: expected a \(V, 3\) array of numbers"):
         mp.Mesh([["a", "b", "c"]] * 3, [[0, 1, 2]])
+    # Real numbers only: NumPy would cast these to doubles without a word.
+    triangle = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]])
+    for dtype in ("datetime64[D]", "timedelta64[s]", "bool", "complex128"):
+        refusal = rf"^vertices: expected a \(V, 3\) array of numbers, got dtype {re.escape(dtype)}$"
+        with pytest.raises(TypeError, match=refusal):
+            mp.Mesh(triangle.astype(dtype), [[0, 1, 2]])
+    for dtype in ("int8", "uint16", "float16", "float32", "longdouble"):
+        assert mp.Mesh(triangle.astype(dtype), [[0, 1, 2]]).vertices.tolist() == triangle.tolist()
 
 
 def test_a_huge_unsigned_index_is_reported_as_given():

@@ -52,4 +52,10 @@ SurfaceMesh read_mesh(const std::filesystem::path& file, std::vector<std::string
   return build_checked_mesh(read_polygon_soup(file), file.string(), warnings, options);
 }
 
+SurfaceMesh read_mesh(std::span<const char> bytes, const std::filesystem::path& file,
+                      std::vector<std::string>& warnings, const MeshReadOptions& options) {
+  const std::string label = file.string();
+  return build_checked_mesh(read_polygon_soup(bytes, mesh_format_of(file), label), label, warnings, options);
+}
+
 }  // namespace meshparticles

@@ -31,6 +31,10 @@ const MeshFormat& mesh_format_of(const std::filesystem::path& file);
 // program cannot use; appends one line per tolerated oddity to `warnings`.
 SurfaceMesh read_mesh(const std::filesystem::path& file, std::vector<std::string>& warnings,
                       const MeshReadOptions& options = {});
+// The same from `bytes` already read from `file` (read_mesh_file): what a
+// caller that also hashes them needs, so the digest is of what was parsed.
+SurfaceMesh read_mesh(std::span<const char> bytes, const std::filesystem::path& file,
+                      std::vector<std::string>& warnings, const MeshReadOptions& options = {});
 
 // The parsing step alone, from a file (regular files up to
 // kMaxMeshFileBytes) or from bytes in memory; `label` starts every message.
