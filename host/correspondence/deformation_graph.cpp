@@ -6,6 +6,8 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Sparse>
 
@@ -27,6 +29,8 @@ constexpr double kInfluenceReach = 3;
 constexpr double kDamping = 1e-6;
 // Halvings of a Gauss-Newton step tried before a step is given up.
 constexpr int kStepHalvings = 4;
+// The most nodes that move one vertex (DeformationGraphOptions::nodes_per_vertex).
+constexpr std::size_t kMostNodesPerVertex = 8;
 
 using Affine = Eigen::Matrix<double, 3, 4>;  // [A_j | t_j]: column-major, its 12 unknowns in order
 using Block = Eigen::Matrix<double, 12, 12>;
@@ -107,8 +111,8 @@ class BlockMatrix {
 // A residual vector e = sum_p [A|t]_{node p} u_p + constant, weighted by W
 // (3 x 3, symmetric): its share of the normal equations.
 struct LinearTerm {
-  std::array<std::uint32_t, 8> nodes{};
-  std::array<Eigen::Vector4d, 8> u{};
+  std::array<std::uint32_t, kMostNodesPerVertex> nodes{};
+  std::array<Eigen::Vector4d, kMostNodesPerVertex> u{};
   std::size_t size = 0;
 };
 
@@ -345,6 +349,10 @@ DeformationGraphOptions coarse_deformation_graph_options() {
 }
 
 DeformationGraph build_deformation_graph(const SurfaceMesh& mesh, const DeformationGraphOptions& options) {
+  if (options.nodes_per_vertex < 1 || options.nodes_per_vertex > kMostNodesPerVertex) {
+    throw std::invalid_argument("deformation graph: nodes_per_vertex " + std::to_string(options.nodes_per_vertex) +
+                                " outside 1 to " + std::to_string(kMostNodesPerVertex));
+  }
   DeformationGraph graph;
   const std::size_t vertices = mesh.vertex_count();
   const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);

@@ -42,7 +42,7 @@ struct DeformationGraphOptions {
   std::size_t vertices_per_node = 25;
   std::size_t min_nodes = 32;
   std::size_t max_nodes = 300;
-  std::size_t nodes_per_vertex = 4;  // k
+  std::size_t nodes_per_vertex = 4;  // k, 1 to 8
   // Weights, in units where a node's share of the fit weighs `fit` and
   // lengths are measured in node spacings (so the same numbers serve any
   // scale and resolution).
