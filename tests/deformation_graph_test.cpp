@@ -149,6 +149,20 @@ TEST(DeformationGraph, FollowsAJointThatTheSmoothedDisplacementCannot) {
   EXPECT_GT((smoothed.row(tip) - bent.row(tip)).norm(), 4 * bound);
 }
 
+// The coarse mode (for comparing the poses a rigid fit leaves open): a
+// node for each 100 vertices (here the least, 32), fewer fits a stage, and
+// still the joint followed.
+TEST(DeformationGraph, CoarseModeFollowsTheJointWithFewerNodes) {
+  const SurfaceMesh mesh = capsule(24);
+  const PointSet points = points_of(mesh);
+  const PointSet bent = Bend{80 * std::numbers::pi / 180, 1.5}(points);
+  const GraphFit fit = deform_by_graph(mesh, points, mesh_at(mesh, bent), bent, coarse_deformation_graph_options());
+  const Eigen::Index tip = Eigen::Index(mesh.vertex_count() - 1);
+  EXPECT_EQ(fit.nodes, 32u);
+  EXPECT_LT(fit.rms, 0.02 * kLength);
+  EXPECT_LT((fit.moved.row(tip) - bent.row(tip)).norm(), 0.04 * kLength);
+}
+
 // Two arms of a U lie side by side a tenth of their radius apart: no edge
 // of the graph joins a node of one arm to a node of the other (they are
 // twice the node spacing apart on the surface), and no vertex of one arm

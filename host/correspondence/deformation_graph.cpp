@@ -341,9 +341,8 @@ double surface_rms(const SurfaceMesh& template_mesh, const PointSet& moved, cons
 DeformationGraphOptions coarse_deformation_graph_options() {
   DeformationGraphOptions options;
   options.vertices_per_node = 100;
-  options.min_nodes = 16;
+  options.min_nodes = 32;
   options.max_nodes = 64;
-  options.smooth_floor = 4;
   options.iterations_per_stage = 4;
   return options;
 }
