@@ -407,6 +407,14 @@ set_tests_properties(cli.shape_model PROPERTIES LABELS fast)
 add_test(NAME cli.correspond COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
                                      ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond)
 set_tests_properties(cli.correspond PROPERTIES LABELS fast)
+# The same with the template moved by the deformation graph; an unknown --deformation refused.
+add_test(NAME cli.correspond_graph COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
+                                           ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond_graph
+                                           --deformation graph)
+set_tests_properties(cli.correspond_graph PROPERTIES LABELS fast)
+expect_exit(correspond_unknown_deformation 2 "--deformation: bend not in .smooth,graph." correspond
+            ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${PROJECT_SOURCE_DIR}/meshes/atrium.off --out ${CMAKE_CURRENT_BINARY_DIR}/cli_unknown_deformation
+            --deformation bend)
 # correspond on a population with a known correspondence (issue 31's
 # yardstick, scripts/correspondence_error.py), against batch.
 add_test(NAME cli.correspond_population COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_population.sh

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# correspond.sh MESHPARTICLES MESH WORKDIR: `meshparticles correspond` on a
+# correspond.sh MESHPARTICLES MESH WORKDIR [OPTION...]: `meshparticles
+# correspond` (with OPTIONs) on a
 # population whose answer is known: MESH itself and three copies of it
 # moved, turned and scaled at random (one with its vertices renumbered, one
 # with the last bit of half its coordinates flipped, as another numpy's
@@ -12,6 +13,7 @@
 # refused in one line.
 set -euo pipefail
 bin=$1 mesh=$2 work=$3
+shift 3
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 /usr/bin/python3 - "$mesh" "$work" <<'PY'
@@ -40,7 +42,7 @@ for name, renumber, last_bits in (("moved", False, False), ("renumbered", True, 
         out.writelines("3 %d %d %d\n" % tuple(new_of_old[t]) for t in faces)
     np.savetxt(f"{work}/{name}.ids", order, fmt="%d")
 PY
-"$bin" correspond "$mesh" "$work/moved.off" "$work/renumbered.off" "$work/rounded.off" -n 64 --samples 20 -q --out "$work/out" >"$work/stdout"
+"$bin" correspond "$mesh" "$work/moved.off" "$work/renumbered.off" "$work/rounded.off" -n 64 --samples 20 -q "$@" --out "$work/out" >"$work/stdout"
 for file in summary.json shapes/000_$(basename "${mesh%.*}").csv shapes/001_moved.particles shapes/002_renumbered.csv \
             shapes/003_rounded.csv \
             model/model.json model/transforms.json; do

@@ -20,6 +20,7 @@ struct CorrespondOptions {
   std::string out;
   bool no_scale = false;
   bool no_packing = false;
+  std::string deformation = "smooth";
 };
 
 void run_correspond_command(const CorrespondOptions& options) {
@@ -27,6 +28,8 @@ void run_correspond_command(const CorrespondOptions& options) {
   request.out = options.out;
   request.scale = !options.no_scale;
   request.refinement.pack = !options.no_packing;
+  request.deformation =
+      options.deformation == deformation_name(TemplateDeformation::graph) ? TemplateDeformation::graph : TemplateDeformation::smooth;
   const std::optional<CorrespondOutcome> outcome = run_correspond(request);
   if (!outcome) return;
   std::printf("shapes      %zu, %zu particles each, template %s\n", outcome->meshes.size(), request.particles,
@@ -58,6 +61,12 @@ void add_correspond_command(CLI::App& app) {
   command->add_flag("--no-scale", options->no_scale, "Model: align by rotation and translation only");
   add_whole_number_option(*command, "--samples", options->request.samples, WholeRange{1, 1000000},
                           "Model: shapes drawn per number of modes, for specificity");
+  command
+      ->add_option("--deformation", options->deformation,
+                   "How the template is moved onto each shape before its particles are carried over: smooth (a "
+                   "displacement smoothed over the template) or graph (a deformation graph, which can bend at a joint)")
+      ->check(CLI::IsMember({deformation_name(TemplateDeformation::smooth), deformation_name(TemplateDeformation::graph)}))
+      ->capture_default_str();
   add_whole_number_option(*command, "--refine-iterations", options->request.refinement.iterations, WholeRange{0, 100000},
                           "Iterations of the joint refinement after the transfer (0: the transfer alone)");
   command->add_option("--correspondence-weight", options->request.refinement.correspondence_weight,

@@ -18,6 +18,7 @@ nlohmann::json correspond_params(const CorrespondRequest& request) {
           {"seed", request.seed},
           {"scale", request.scale},
           {"samples", request.samples},
+          {"deformation", deformation_name(request.deformation)},
           {"refine_iterations", request.refinement.iterations},
           {"correspondence_weight", request.refinement.correspondence_weight},
           {"packing", request.refinement.pack},

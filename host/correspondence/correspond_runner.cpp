@@ -35,6 +35,7 @@ PopulationRequest population_request(const CorrespondRequest& request, const std
   population.run.seed = request.seed;
   population.quiet = request.quiet || !leads;
   population.refinement = request.refinement;
+  population.deformation = request.deformation;
   return population;
 }
 

@@ -14,6 +14,7 @@
 #include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "correspondence/body_turn.hpp"
+#include "correspondence/deformation_graph.hpp"
 #include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/population_doubts.hpp"
@@ -74,7 +75,8 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
 // deforms.
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const SurfaceMesh& template_mesh,
                              const PointSet& template_points, const MeshAlignment& alignment,
-                             const std::vector<SurfaceLocation>& template_particles, ShapeParticles& carried) {
+                             const std::vector<SurfaceLocation>& template_particles, TemplateDeformation deformation,
+                             ShapeParticles& carried) {
   ShapeCorrespondence shape;
   shape.mesh = file;
   shape.vertices = mesh.vertex_count();
@@ -84,7 +86,9 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   const Eigen::Matrix3d& stretch = shape.alignment.stretch;
   const PointSet common = (to_common.apply(vertex_points(mesh)) * stretch.transpose()).rowwise() +
                           shape.alignment.shift.transpose();
-  const PointSet deformed = deform_template(template_mesh, template_points, common);
+  const PointSet deformed = deformation == TemplateDeformation::graph
+                                ? deform_by_graph(template_mesh, template_points, mesh, common).moved
+                                : deform_template(template_mesh, template_points, common);
   const Eigen::Matrix3d unstretch = stretch.inverse();
   const NearestSurfacePoint nearest(mesh);
   carried.mesh = &mesh;
@@ -478,7 +482,7 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
       particles[k] = {&mesh, kept->second};
     } else {
       population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, alignments[k],
-                                      template_particles, particles[k]);
+                                      template_particles, request.deformation, particles[k]);
       if (checkpoint) {
         checkpoint->write(shape_entry("transfer", k), {{"mesh", request.meshes[k].string()},
                                                        {"alignment", alignment_json(population.shapes[k].alignment)},

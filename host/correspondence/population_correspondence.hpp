@@ -16,6 +16,7 @@
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/shape_correspondence.hpp"
 #include "correspondence/shape_share.hpp"
+#include "correspondence/template_deformation.hpp"
 #include "quality/distribution_quality.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -25,6 +26,7 @@ struct PopulationRequest {
   std::vector<std::filesystem::path> meshes;  // the first is the template
   RunRequest run;                             // the template's run (-n, seed, method, ...)
   JointRefinementOptions refinement;
+  TemplateDeformation deformation = TemplateDeformation::smooth;
   bool quiet = false;
 };
 

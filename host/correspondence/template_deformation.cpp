@@ -28,6 +28,16 @@ void smooth_over(const SurfaceMesh& mesh, PointSet& field, int rounds) {
 
 }  // namespace
 
+std::string deformation_name(TemplateDeformation deformation) {
+  switch (deformation) {
+    case TemplateDeformation::smooth:
+      return "smooth";
+    case TemplateDeformation::graph:
+      return "graph";
+  }
+  return {};
+}
+
 PointSet deform_template(const SurfaceMesh& template_mesh, const PointSet& template_points, const PointSet& shape_points) {
   PointSet moved = template_points;
   const MatrixRowTree<PointSet> shape_tree(shape_points);
