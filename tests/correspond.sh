@@ -1,16 +1,15 @@
 #!/usr/bin/env bash
 # correspond.sh MESHPARTICLES MESH WORKDIR [OPTION...]: `meshparticles
-# correspond` (with OPTIONs) on a
-# population whose answer is known: MESH itself and three copies of it
-# moved, turned and scaled at random (one with its vertices renumbered, one
-# with the last bit of half its coordinates flipped, as another numpy's
-# BLAS may round them). Each copy must be aligned back (fit near 0) and
-# every particle must land where it lies on MESH, within 1% of the spacing:
-# not exactly, because the joint refinement's 200 iterations amplify the
-# transfer's differences of about 1e-6 spacings (even on a byte-identical
-# copy) about a thousandfold: 0.0004 to 0.004 spacings at most, measured on
-# 14 such copies. Every output must be there, and a single mesh must be
-# refused in one line.
+# correspond` (with OPTIONs) on a population whose answer is known: MESH
+# itself and three copies of it moved, turned and scaled at random (one with
+# its vertices renumbered, one with the last bit of half its coordinates
+# flipped, as another numpy's BLAS may round them). Each copy must be
+# aligned back (fit near 0) and every particle must land where it lies on
+# MESH, within 1% of the spacing: not exactly, because the joint
+# refinement's 200 iterations amplify the transfer's differences of about
+# 1e-6 spacings (even on a byte-identical copy) about a thousandfold: 0.0004
+# to 0.004 spacings at most, measured on 14 such copies. Every output must
+# be there, and a single mesh must be refused in one line.
 set -euo pipefail
 bin=$1 mesh=$2 work=$3
 shift 3
