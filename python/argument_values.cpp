@@ -1,7 +1,7 @@
 #include "argument_values.hpp"
 
-#include "cli/option_values.hpp"
 #include "common/user_error.hpp"
+#include "options/option_values.hpp"
 
 namespace py = pybind11;
 

@@ -1,6 +1,6 @@
 #pragma once
 // Python values checked as the command line checks its options' text
-// (cli/number_options.hpp, cli/option_values.hpp), and refused as the
+// (options/number_options.hpp, options/option_values.hpp), and refused as the
 // standard library refuses them: TypeError for a wrong type, ValueError for
 // a wrong value, one line naming the keyword. Nothing is converted the way
 // int() or str() would: n=2.7 is refused, not truncated to 2.
@@ -10,7 +10,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "cli/number_options.hpp"
+#include "options/number_options.hpp"
 
 namespace meshparticles::python {
 

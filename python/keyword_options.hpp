@@ -29,7 +29,7 @@ class KeywordOptions {
     return value;
   }
 
-  // A whole number within `range` (the command line's, cli/number_options.hpp),
+  // A whole number within `range` (the command line's, options/number_options.hpp),
   // refused in its words: "iterations: expected a whole number from 0 to 1000000, got -1".
   std::optional<std::uint64_t> take_whole(const char* name, WholeRange range) {
     return taken(name, [&](pybind11::handle value) { return whole_number(value, name, range); });

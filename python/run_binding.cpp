@@ -106,6 +106,9 @@ void bind_run(py::module_& module) {
       // JSON text: the package turns it into dicts with json.loads.
       .def("report_json", [](const RunOutput& output) { return json_text(output.report("")); })
       .def("quality_json", [](const RunOutput& output) { return json_text(quality_json(output.result.quality)); })
+      // The key of report.json holding the method's record per iteration.
+      .def_property_readonly("trace_key",
+                             [](const RunOutput& output) { return iteration_records_key(output.result.plan.method); })
       .def("save", &save, py::arg("directory"));
   module.def("run", &run_mesh, py::arg("mesh"));
 }

@@ -1,7 +1,7 @@
 #include "run_settings.hpp"
 
-#include "cli/run_option_table.hpp"
 #include "common/overloaded.hpp"
+#include "options/run_option_table.hpp"
 
 namespace meshparticles::python {
 

@@ -1,12 +1,12 @@
 #pragma once
 // The keyword options of run(), batch(), quality() and compare() taken by
-// the rows of the run options' table (cli/run_option_table.hpp): its
+// the rows of the run options' table (options/run_option_table.hpp): its
 // keyword (`--rebuild-every` is rebuild_every=), checked as its row says,
 // into RunOptionValues, which the command line's own functions resolve.
 #include <initializer_list>
 
-#include "cli/run_option_values.hpp"
 #include "keyword_options.hpp"
+#include "options/run_option_values.hpp"
 
 namespace meshparticles::python {
 

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Checks that host/ depends one way: each folder includes only itself and
 the folders below it in LAYERS (the pipeline's order), so no folder cycle can
-form. Prints the folder graph; with --png FILE also draws it (matplotlib).
-Exit 1 and one line per offending include when a folder reaches up or
-sideways.
+form; and that python/, the front end beside cli/, includes no cli/ header
+(what both front ends share is in options/). Prints the folder graph; with
+--png FILE also draws it (matplotlib). Exit 1 and one line per offending
+include when a folder reaches up or sideways.
 
     scripts/check_layers.py [--png docs/images/layers.png]
 """
@@ -24,8 +25,12 @@ LAYERS = [
     ["measurement"],
     ["reports", "launch"],
     ["batch", "correspondence"],
+    ["options"],
     ["cli"],
 ]
+# The other front end, outside host/: it may include any folder of host/
+# but this one.
+PYTHON_BESIDE = "cli"
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/[^"]+"')
 
@@ -77,6 +82,13 @@ def main() -> int:
             if target not in rank or rank[target] >= rank[folder]:
                 problems.append(f"{path.relative_to(host.parent)}:{number}: {folder}/ includes {target}/, "
                                 f"which is not below it")
+    python = host.parent / "python"
+    for path in sorted(python.rglob("*.[ch]pp")):
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            match = INCLUDE.match(line)
+            if match and (match.group(1) == PYTHON_BESIDE or match.group(1) not in rank):
+                problems.append(f"{path.relative_to(host.parent)}:{number}: python/ includes {match.group(1)}/, "
+                                f"which is not a folder of host/ below {PYTHON_BESIDE}/")
     for r, folders in reversed(list(enumerate(LAYERS))):
         for folder in folders:
             print(f"{folder:12} -> {', '.join(sorted(edges.get(folder, []))) or '-'}")

@@ -170,6 +170,11 @@ add_test(NAME cli.command_outputs
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/command_outputs.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes
                  ${PROJECT_SOURCE_DIR}/kernels ${CMAKE_CURRENT_BINARY_DIR}/command_outputs)
 set_tests_properties(cli.command_outputs PROPERTIES LABELS "fast;device")
+# run's summary, printed from the result, says what report.json says, for each method.
+add_test(NAME cli.run_summary
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/run_summary.sh $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/meshes
+                 ${CMAKE_CURRENT_BINARY_DIR}/run_summary)
+set_tests_properties(cli.run_summary PROPERTIES LABELS "fast;device")
 # host/ depends one way: no folder includes a folder above it.
 add_test(NAME layers COMMAND ${PROJECT_SOURCE_DIR}/scripts/check_layers.py)
 set_tests_properties(layers PROPERTIES LABELS fast)

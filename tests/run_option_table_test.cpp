@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/run_option_table.hpp"
 #include "common/overloaded.hpp"
+#include "options/run_option_table.hpp"
 
 namespace meshparticles::testing {
 namespace {

@@ -62,7 +62,7 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
   const RunResult result = run_pipeline(mesh, request);
   const RunOutcome& outcome = result.outcome;
   EXPECT_EQ(result.start, (std::vector<VertexId>{0, 0}));
-  EXPECT_EQ(result.plan.scheme, Scheme::sequential) << "the serial backend's default";
+  EXPECT_EQ(result.plan.paper->scheme, Scheme::sequential) << "the serial backend's default";
 
   const auto directory = std::filesystem::temp_directory_path() / ("mp_outputs_" + std::to_string(::getpid()));
   prepare_output_directory(directory / "nested");

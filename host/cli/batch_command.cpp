@@ -5,9 +5,9 @@
 
 #include "batch/batch_runner.hpp"
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
 #include "cli/run_options.hpp"
 #include "common/user_error.hpp"
+#include "options/number_options.hpp"
 
 namespace meshparticles {
 

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
 #include "correspondence/correspond_runner.hpp"
+#include "options/number_options.hpp"
 
 namespace meshparticles {
 

@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
 #include "common/atomic_file.hpp"
 #include "common/json_text.hpp"
 #include "common/random.hpp"
@@ -15,6 +14,7 @@
 #include "fixtures/bent_body.hpp"
 #include "fixtures/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
+#include "options/number_options.hpp"
 
 namespace meshparticles {
 

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
+#include "options/number_options.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "common/atomic_file.hpp"
 #include "common/user_error.hpp"

@@ -1,7 +1,7 @@
 #include "cli/commands.hpp"
-#include "cli/distance_requests.hpp"
-#include "cli/number_options.hpp"
-#include "cli/run_option_table.hpp"
+#include "options/distance_requests.hpp"
+#include "options/number_options.hpp"
+#include "options/run_option_table.hpp"
 
 namespace meshparticles {
 

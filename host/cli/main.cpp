@@ -5,11 +5,11 @@
 
 #include "cli/command_guide.hpp"
 #include "cli/commands.hpp"
-#include "cli/option_values.hpp"
-#include "cli/run_option_table.hpp"
 #include "common/text_format.hpp"
 #include "common/version.hpp"
 #include "launch/failure.hpp"
+#include "options/option_values.hpp"
+#include "options/run_option_table.hpp"
 
 namespace meshparticles {
 

@@ -7,10 +7,10 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
 #include "common/directory_lock.hpp"
 #include "common/text_format.hpp"
 #include "common/user_error.hpp"
+#include "options/number_options.hpp"
 #include "particles/particle_file.hpp"
 #include "reports/shape_model_outputs.hpp"
 

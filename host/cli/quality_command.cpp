@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
 #include "common/json_text.hpp"
+#include "options/number_options.hpp"
 #include "particles/potentials.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_set_measurement.hpp"

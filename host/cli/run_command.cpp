@@ -26,28 +26,28 @@ struct RunCommandOptions {
   RunOptionValues run;
 };
 
-void print_summary(const RunResult& result, const nlohmann::json& report, const std::string& out) {
-  const auto& params = report["params"];
-  std::printf("mesh        %s (%zu vertices)\n", result.plan.request.mesh_label.c_str(),
-              report["mesh"]["vertices"].get<std::size_t>());
-  if (result.spread) {
-    const auto& working = report["working_mesh"];
-    std::printf("particles   %zu, spread on a working mesh of %zu vertices (%u rounds of splitting edges)\n",
-                result.plan.request.particles, working["vertices"].get<std::size_t>(),
-                working["refinement_rounds"].get<unsigned>());
-    std::printf("sweeps      %zu (%s)\n", report["iterations_run"].get<std::size_t>(),
-                report["stopped"].get<std::string>().c_str());
-    std::printf("time        %.3f ms/sweep", report["avg_iteration_ms"].get<double>());
-  } else {
-    std::printf("particles   %zu, %s on %s, scheme %s\n", result.plan.request.particles,
-              params["backend"].get<std::string>().c_str(), report["device"].get<std::string>().c_str(),
-              params["scheme"].get<std::string>().c_str());
-    std::printf("iterations  %zu (%s)\n", report["iterations_run"].get<std::size_t>(),
-                report["stopped"].get<std::string>().c_str());
-    std::printf("energy      %.6g -> %.6g\n", report["initial_energy"].get<double>(),
-                report["final_energy"].get<double>());
-    std::printf("time        %.3f ms/iteration", report["avg_iteration_ms"].get<double>());
-    if (report.contains("avg_kernel_ms")) std::printf(" (update kernels %.3f ms)", report["avg_kernel_ms"].get<double>());
+void print_summary(const SurfaceMesh& mesh, const RunResult& result, const std::string& out) {
+  const IterationFigures figures = iteration_figures(result);
+  std::printf("mesh        %s (%zu vertices)\n", result.plan.request.mesh_label.c_str(), mesh.vertex_count());
+  switch (result.plan.method) {
+    case Method::spread: {
+      const RefinedMesh& working = *result.spread->working;
+      std::printf("particles   %zu, spread on a working mesh of %zu vertices (%u rounds of splitting edges)\n",
+                  result.plan.request.particles, working.mesh.vertex_count(), working.levels);
+      std::printf("sweeps      %zu (%s)\n", figures.iterations_run, figures.stopped.c_str());
+      std::printf("time        %.3f ms/sweep", figures.avg_iteration_ms);
+      break;
+    }
+    case Method::paper: {
+      const PaperPlan& paper = *result.plan.paper;
+      std::printf("particles   %zu, %s on %s, scheme %s\n", result.plan.request.particles,
+                  paper.backend.name().c_str(), result.device.c_str(), scheme_name(paper.scheme).c_str());
+      std::printf("iterations  %zu (%s)\n", figures.iterations_run, figures.stopped.c_str());
+      std::printf("energy      %.6g -> %.6g\n", *figures.initial_energy, figures.final_energy);
+      std::printf("time        %.3f ms/iteration", figures.avg_iteration_ms);
+      if (figures.avg_kernel_ms) std::printf(" (update kernels %.3f ms)", *figures.avg_kernel_ms);
+      break;
+    }
   }
   std::printf("\nquality     %s", quality_line(result.quality).c_str());
   std::printf("\noutput      %s/{particles.particles, particles.csv, report.json, particles.ply, "
@@ -70,7 +70,7 @@ void run_run(RunCommandOptions options) {
   const nlohmann::json report =
       run_report(mesh, result, options.out, from_file ? std::optional(file_sha256(options.mesh)) : std::nullopt);
   naming_memory_failures(options.out, "writing the outputs", [&] { write_run_outputs(options.out, mesh, result, report); });
-  print_summary(result, report, options.out);
+  print_summary(mesh, result, options.out);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #include "cli/run_options.hpp"
 
-#include "cli/number_options.hpp"
-#include "cli/run_option_table.hpp"
 #include "common/overloaded.hpp"
+#include "options/number_options.hpp"
+#include "options/run_option_table.hpp"
 
 namespace meshparticles {
 

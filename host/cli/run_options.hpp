@@ -1,10 +1,10 @@
 #pragma once
 // The options of one run, shared by `run` (one mesh) and `batch` (the same
-// run on many): each row of cli/run_option_table registered once, into
-// RunOptionValues, which run_request (cli/run_option_values.hpp) resolves.
+// run on many): each row of options/run_option_table registered once, into
+// RunOptionValues, which run_request (options/run_option_values.hpp) resolves.
 #include <CLI/CLI.hpp>
 
-#include "cli/run_option_values.hpp"
+#include "options/run_option_values.hpp"
 
 namespace meshparticles {
 

@@ -50,6 +50,7 @@ std::optional<std::string> paper_only_option(const RunRequest& request) {
 void plan_paper(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& plan) {
   if (request.vertices_per_particle) throw UserError("--vertices-per-particle applies to --method spread");
   if (request.relax_rounds) throw UserError("--relax-rounds applies to --method spread");
+  PaperPlan& paper = plan.paper.emplace();
   const bool default_backend = request.backend.name.empty();
   plan.distances = plan_distances(mesh, request.distances, request.particles,
                                   !default_backend && find_backend(request.backend.name).needs_dense_table);
@@ -71,37 +72,38 @@ void plan_paper(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pla
     backend.name = chosen.name;
     default_scheme = chosen.scheme;
     if (chosen.geodesic) plan.geodesics.method = *chosen.geodesic;
-    plan.backend_from = chosen.reason + (selected.why_none.empty() ? "" : " (" + selected.why_none + ")");
+    paper.backend_from = chosen.reason + (selected.why_none.empty() ? "" : " (" + selected.why_none + ")");
   } else {
-    plan.backend_from = "--backend";
+    paper.backend_from = "--backend";
   }
-  plan.scheme = request.scheme.value_or(default_scheme.value_or(find_backend(backend.name).default_scheme));
-  if (request.colors && !uses_colors(plan.scheme)) {
-    throw UserError("--colors applies to --scheme colored and monotone, not " + scheme_name(plan.scheme));
+  paper.scheme = request.scheme.value_or(default_scheme.value_or(find_backend(backend.name).default_scheme));
+  if (request.colors && !uses_colors(paper.scheme)) {
+    throw UserError("--colors applies to --scheme colored and monotone, not " + scheme_name(paper.scheme));
   }
-  plan.colors = request.colors.value_or(kDefaultColors);
-  plan.backend = check_backend(backend, mesh, request.particles, plan.distances.kind == StoreKind::dense);
-  if (plan.backend.device && plan.distances.kind == StoreKind::local) {  // field on balls: before any is computed
-    check_local_field_device(*plan.backend.device, estimated_ball_bytes(mesh, plan.distances.radius, request.particles));
+  paper.colors = request.colors.value_or(kDefaultColors);
+  paper.backend = check_backend(backend, mesh, request.particles, plan.distances.kind == StoreKind::dense);
+  if (paper.backend.device && plan.distances.kind == StoreKind::local) {  // field on balls: before any is computed
+    check_local_field_device(*paper.backend.device, estimated_ball_bytes(mesh, plan.distances.radius, request.particles));
   }
   const auto sigma_warning = degenerate_sigma_warning(plan.energy, hexagonal_spacing(mesh.area(), request.particles));
   if (sigma_warning && !request.quiet) std::cerr << "meshparticles: warning: " << *sigma_warning << "\n";
-  if (plan.backend.tuning_refused && !request.quiet) {
-    std::cerr << "meshparticles: warning: " << plan.backend.sizes_note << "; using the built-in sizes\n";
+  if (paper.backend.tuning_refused && !request.quiet) {
+    std::cerr << "meshparticles: warning: " << paper.backend.sizes_note << "; using the built-in sizes\n";
   }
 }
 
 RunResult execute_paper(const SurfaceMesh& mesh, const RunPlan& plan, const DistanceStore& distances) {
   RunResult result;
   result.plan = plan;
+  const PaperPlan& paper = *plan.paper;
   const std::string& label = plan.request.mesh_label;
   const auto particles_started = std::chrono::steady_clock::now();
   naming_memory_failures(label, "moving the particles", [&] {
-    const std::unique_ptr<ParticleBackend> backend = make_backend(plan.backend, mesh, distances, plan.energy);
+    const std::unique_ptr<ParticleBackend> backend = make_backend(paper.backend, mesh, distances, plan.energy);
     result.device = backend->device_name();
     result.start = place_particles(mesh, plan.placement, plan.request.quiet);
     result.outcome = run_particles(
-        *backend, result.start, {plan.scheme, plan.colors, plan.request.max_iterations, plan.request.quiet},
+        *backend, result.start, {paper.scheme, paper.colors, plan.request.max_iterations, plan.request.quiet},
         distances.local_balls());
   });
   result.seconds.particles = seconds_since(particles_started);

@@ -6,10 +6,21 @@
 #include <optional>
 #include <string>
 
+#include "backends/backend_factory.hpp"
 #include "geodesics/distance_store.hpp"
 #include "mesh/surface_mesh.hpp"
+#include "particles/particle_params.hpp"
 
 namespace meshparticles {
+
+// What plan_run decides for paper alone (RunPlan::paper): the backend and
+// how it updates.
+struct PaperPlan {
+  CheckedBackend backend;
+  std::string backend_from;  // "--backend", or why the default is what it is
+  Scheme scheme = Scheme::colored;
+  unsigned colors = kDefaultColors;
+};
 
 struct RunRequest;
 struct RunPlan;

@@ -101,6 +101,14 @@ RunResult execute_run(const SurfaceMesh& mesh, const RunPlan& plan) {
   return {};
 }
 
+const SurfaceMesh& RunResult::particle_mesh(const SurfaceMesh& input) const {
+  switch (plan.method) {
+    case Method::spread: return spread->working->mesh;
+    case Method::paper: return input;
+  }
+  return input;
+}
+
 RunResult run_pipeline(const SurfaceMesh& mesh, const RunRequest& request) {
   return execute_run(mesh, plan_run(mesh, request));
 }

@@ -18,6 +18,7 @@
 #include "particles/particle_run.hpp"
 #include "particles/potentials.hpp"
 #include "pipeline/distances.hpp"
+#include "pipeline/paper_method.hpp"
 #include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
 
@@ -62,12 +63,10 @@ struct RunPlan {
   RunRequest request;          // as asked, untouched
   Method method = Method::spread;
   std::string method_from;     // "--method", "default", or the option that implies paper
+  // A method's own decisions: the one of its method present, the other absent.
   std::optional<SpreadPlan> spread;  // spread only
-  Scheme scheme = Scheme::colored;
-  unsigned colors = kDefaultColors;
+  std::optional<PaperPlan> paper;    // paper only
   EnergyParams energy;
-  CheckedBackend backend;      // paper only
-  std::string backend_from;    // "--backend", or why the default is what it is
   DistancesPlan distances;     // paper: the store decided, and its radius when local; spread: decided
                                // for the working mesh when it is built (it reads distances for quality only)
   // The solver as decided (paper's default may take fim, where a GPU takes
@@ -104,7 +103,8 @@ struct RunResult {
   std::vector<VertexId> start;
   RunOutcome outcome;      // the trace (paper) and the final positions
 
-  const SurfaceMesh& particle_mesh(const SurfaceMesh& input) const { return spread ? spread->working->mesh : input; }
+  // The mesh the positions are vertices of: spread's working mesh, paper's input.
+  const SurfaceMesh& particle_mesh(const SurfaceMesh& input) const;
   std::vector<float> distance_to_nearest;  // per vertex, to the nearest final particle
   DistributionQuality quality;
   RunTimes seconds;

@@ -17,16 +17,37 @@ VertexId nearest_corner(const SurfaceMesh& mesh, const SurfaceLocation& location
   return corners[best];
 }
 
+// The input vertex nearest to particle i: a paper particle's own vertex, a
+// spread particle's nearest corner of its input triangle.
+VertexId nearest_input_vertex(const SurfaceMesh& input, const RunResult& result, std::size_t i,
+                              const SurfaceLocation& on_input) {
+  switch (result.plan.method) {
+    case Method::spread: return nearest_corner(input, on_input);
+    case Method::paper: return result.outcome.positions[i];
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::vector<SurfaceLocation> particles_on_input(const SurfaceMesh& input, const RunResult& result) {
   const std::vector<VertexId>& positions = result.outcome.positions;
-  // A paper run's particles sit on the input's vertices.
-  const std::vector<SurfaceLocation> at_vertices = result.spread ? std::vector<SurfaceLocation>() : vertex_locations(input);
-  const std::vector<SurfaceLocation>& on_input = result.spread ? result.spread->working->on_input : at_vertices;
   std::vector<SurfaceLocation> locations;
   locations.reserve(positions.size());
-  for (const VertexId v : positions) locations.push_back(on_input[v]);
+  switch (result.plan.method) {
+    case Method::spread: {
+      // Vertices of the working mesh, each at its place on the input.
+      const std::vector<SurfaceLocation>& on_input = result.spread->working->on_input;
+      for (const VertexId v : positions) locations.push_back(on_input[v]);
+      break;
+    }
+    case Method::paper: {
+      // The input's own vertices.
+      const std::vector<SurfaceLocation> at_vertices = vertex_locations(input);
+      for (const VertexId v : positions) locations.push_back(at_vertices[v]);
+      break;
+    }
+  }
   return locations;
 }
 
@@ -40,7 +61,7 @@ std::vector<ParticleLocation> particle_locations(const SurfaceMesh& input, const
     const Triangle& corners = input.triangles()[point.triangle];
     ParticleLocation& location = locations[i];
     location.at = surface.positions()[positions[i]];
-    location.input_vertex = input.input_id(result.spread ? nearest_corner(input, point) : positions[i]);
+    location.input_vertex = input.input_id(nearest_input_vertex(input, result, i, point));
     for (int k = 0; k < 3; ++k) {
       location.on_input.corners[k] = input.input_id(corners[k]);
       location.on_input.weights[k] = point.weights[k];

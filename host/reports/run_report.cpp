@@ -11,35 +11,29 @@ namespace meshparticles {
 
 namespace {
 
-double mean(const std::vector<IterationRecord>& trace, double IterationRecord::*field) {
-  double sum = 0;
-  for (const auto& record : trace) sum += record.*field;
-  return trace.empty() ? 0.0 : sum / double(trace.size());
-}
-
 // spread's parameters: its sweeps, working mesh and relaxation.
-void add_spread_parameters(const RunPlan& plan, nlohmann::json& params) {
+void add_spread_parameters(const RunPlan& plan, const SpreadPlan& spread, nlohmann::json& params) {
   params["sweeps"] = plan.request.max_iterations;
-  params["vertices_per_particle"] = plan.spread->vertices_per_particle;
+  params["vertices_per_particle"] = spread.vertices_per_particle;
   params["relax_rounds"] = plan.request.relax_rounds.value_or(kSpreadRelaxRounds);
 }
 
 // paper's parameters: its iterations and the backend as decided, with its sizes.
-void add_paper_parameters(const RunPlan& plan, nlohmann::json& params) {
+void add_paper_parameters(const RunPlan& plan, const PaperPlan& paper, nlohmann::json& params) {
   params["iterations"] = plan.request.max_iterations;
-  params["backend"] = plan.backend.name();
-  params["backend_from"] = plan.backend_from;
-  params["scheme"] = scheme_name(plan.scheme);
-  if (uses_colors(plan.scheme)) params["colors"] = plan.colors;
-  if (plan.backend.descriptor->field_method) {
-    params["weights"] = weight_format_name(plan.backend.weights);
-    params["rebuild_every"] = plan.backend.rebuild_every;
+  params["backend"] = paper.backend.name();
+  params["backend_from"] = paper.backend_from;
+  params["scheme"] = scheme_name(paper.scheme);
+  if (uses_colors(paper.scheme)) params["colors"] = paper.colors;
+  if (paper.backend.descriptor->field_method) {
+    params["weights"] = weight_format_name(paper.backend.weights);
+    params["rebuild_every"] = paper.backend.rebuild_every;
   }
-  if (const auto& kernel = plan.backend.kernel) {
+  if (const auto& kernel = paper.backend.kernel) {
     params["wg"] = kernel->work_group_size;
     if (kernel->spec().takes_tile) params["tile"] = kernel->tile_size;
-    params["sizes_from"] = plan.backend.sizes_from;
-    if (!plan.backend.sizes_note.empty()) params["sizes_note"] = plan.backend.sizes_note;
+    params["sizes_from"] = paper.backend.sizes_from;
+    if (!paper.backend.sizes_note.empty()) params["sizes_note"] = paper.backend.sizes_note;
   }
 }
 
@@ -59,8 +53,8 @@ nlohmann::json run_parameters(const RunPlan& plan, const std::filesystem::path& 
                            {"out", out.string()}};
   if (request.start_vertex) params["start_vertex"] = *request.start_vertex;
   switch (plan.method) {
-    case Method::spread: add_spread_parameters(plan, params); break;
-    case Method::paper: add_paper_parameters(plan, params); break;
+    case Method::spread: add_spread_parameters(plan, *plan.spread, params); break;
+    case Method::paper: add_paper_parameters(plan, *plan.paper, params); break;
   }
   return params;
 }
@@ -139,13 +133,22 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
   return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"sweeps", sweeps}};
 }
 
+// The figures both methods' reports share, from its iterations or sweeps.
+nlohmann::json figures_json(const IterationFigures& figures) {
+  nlohmann::json json = {{"iterations_run", figures.iterations_run},
+                         {"stopped", figures.stopped},
+                         {"final_energy", figures.final_energy},
+                         {"avg_iteration_ms", figures.avg_iteration_ms}};
+  if (figures.initial_energy) json["initial_energy"] = *figures.initial_energy;
+  if (figures.avg_kernel_ms) json["avg_kernel_ms"] = *figures.avg_kernel_ms;
+  return json;
+}
+
 // spread: the sweeps of farthest-point optimization in place of the
 // energy trace, and the working mesh.
 nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, const SpreadDetails& spread,
                              const std::filesystem::path& out, const std::optional<std::string>& mesh_sha256) {
   const double d_hex = result.quality.d_hex;
-  double ms_sum = 0;
-  for (const SweepRecord& sweep : spread.sweeps) ms_sum += sweep.ms;
   const SurfaceMesh& working = spread.working->mesh;
   const WorkingMeshPlan& planned = result.plan.spread->working_mesh;
   nlohmann::json report = {
@@ -164,11 +167,8 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
       {"params", run_parameters(result.plan, out)},
       {"device", result.device},
       {"distances", distances_json(result)},
-      {"iterations_run", spread.sweeps.size()},
-      {"stopped", spread.stopped},
-      {"final_energy", result.quality.energy},
-      {"avg_iteration_ms", spread.sweeps.empty() ? 0.0 : ms_sum / double(spread.sweeps.size())},
-      {"sweeps", sweeps_json(spread.sweeps, d_hex)}};
+      {iteration_records_key(Method::spread), sweeps_json(spread.sweeps, d_hex)}};
+  report.update(figures_json(iteration_figures(result)));
   const RelaxationOutcome& relaxation = spread.relaxation;
   const bool relaxed = relaxation.kept < relaxation.candidates.size();
   nlohmann::json round_spacings = nlohmann::json::array();
@@ -189,25 +189,17 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
   return report;
 }
 
-}  // namespace
-
-nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
-                          const std::optional<std::string>& mesh_sha256) {
-  if (result.spread) return spread_report(mesh, result, *result.spread, out, mesh_sha256);
+// paper: the energy trace of its iterations, and what they asked of the device.
+nlohmann::json paper_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
+                            const std::optional<std::string>& mesh_sha256) {
   const RunOutcome& outcome = result.outcome;
   nlohmann::json trace = nlohmann::json::array();
-  bool has_kernel_times = false;
-  double kernel_ms_sum = 0;
   for (const auto& record : outcome.trace) {
     nlohmann::json entry = {{"energy", record.energy}, {"moved", record.moved}, {"ms", record.ms}};
     if (!record.redone_as.empty()) entry["redone_as"] = record.redone_as;
     if (record.balls_solved) entry["balls"] = *record.balls_solved;
     if (record.ball_ms) entry["ball_ms"] = *record.ball_ms;
-    if (record.kernel_ms) {
-      entry["kernel_ms"] = *record.kernel_ms;
-      kernel_ms_sum += *record.kernel_ms;
-      has_kernel_times = true;
-    }
+    if (record.kernel_ms) entry["kernel_ms"] = *record.kernel_ms;
     trace.push_back(entry);
   }
   nlohmann::json report = {
@@ -216,13 +208,8 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
       {"params", run_parameters(result.plan, out)},
       {"device", result.device},
       {"distances", distances_json(result)},
-      {"iterations_run", outcome.trace.size()},
-      {"stopped", outcome.converged ? "converged" : "max_iterations"},
-      {"initial_energy", outcome.initial_energy},
-      {"final_energy", outcome.trace.empty() ? outcome.initial_energy : outcome.trace.back().energy},
-      {"avg_iteration_ms", mean(outcome.trace, &IterationRecord::ms)},
-      {"trace", trace}};
-  if (has_kernel_times) report["avg_kernel_ms"] = kernel_ms_sum / double(outcome.trace.size());
+      {iteration_records_key(Method::paper), trace}};
+  report.update(figures_json(iteration_figures(result)));
   if (outcome.traffic) {
     // What the iterations asked of the device; one launch and one wait can
     // cover many iterations (field_iterations).
@@ -235,6 +222,61 @@ nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, cons
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
   return report;
+}
+
+}  // namespace
+
+const char* iteration_records_key(Method method) {
+  switch (method) {
+    case Method::spread: return "sweeps";
+    case Method::paper: return "trace";
+  }
+  return "";
+}
+
+IterationFigures iteration_figures(const RunResult& result) {
+  IterationFigures figures;
+  switch (result.plan.method) {
+    case Method::spread: {
+      const SpreadDetails& spread = *result.spread;
+      double ms_sum = 0;
+      for (const SweepRecord& sweep : spread.sweeps) ms_sum += sweep.ms;
+      figures.iterations_run = spread.sweeps.size();
+      figures.stopped = spread.stopped;
+      figures.final_energy = result.quality.energy;
+      figures.avg_iteration_ms = spread.sweeps.empty() ? 0.0 : ms_sum / double(spread.sweeps.size());
+      break;
+    }
+    case Method::paper: {
+      const RunOutcome& outcome = result.outcome;
+      double ms_sum = 0, kernel_ms_sum = 0;
+      bool has_kernel_times = false;
+      for (const IterationRecord& record : outcome.trace) {
+        ms_sum += record.ms;
+        if (record.kernel_ms) {
+          kernel_ms_sum += *record.kernel_ms;
+          has_kernel_times = true;
+        }
+      }
+      figures.iterations_run = outcome.trace.size();
+      figures.stopped = outcome.converged ? "converged" : "max_iterations";
+      figures.initial_energy = outcome.initial_energy;
+      figures.final_energy = outcome.trace.empty() ? outcome.initial_energy : outcome.trace.back().energy;
+      figures.avg_iteration_ms = outcome.trace.empty() ? 0.0 : ms_sum / double(outcome.trace.size());
+      if (has_kernel_times) figures.avg_kernel_ms = kernel_ms_sum / double(outcome.trace.size());
+      break;
+    }
+  }
+  return figures;
+}
+
+nlohmann::json run_report(const SurfaceMesh& mesh, const RunResult& result, const std::filesystem::path& out,
+                          const std::optional<std::string>& mesh_sha256) {
+  switch (result.plan.method) {
+    case Method::spread: return spread_report(mesh, result, *result.spread, out, mesh_sha256);
+    case Method::paper: return paper_report(mesh, result, out, mesh_sha256);
+  }
+  return {};
 }
 
 }  // namespace meshparticles

@@ -123,8 +123,7 @@ class Result:
         """Per iteration, as report.json records it: for spread its "sweeps"
         (moved, ms, min_spacing, mean_spacing in d_hex), for the paper's
         method its "trace" (energy, moved, ms, ...)."""
-        report = self.report
-        return report["sweeps"] if "sweeps" in report else report["trace"]
+        return self.report[self._output.trace_key]
 
     @property
     def seconds(self) -> float:

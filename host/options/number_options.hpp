@@ -6,7 +6,7 @@
 // range-checked before use, with the option and its range named in words:
 //   --iterations: expected a whole number from 0 to 1000000, got "-1"
 #include <CLI/CLI.hpp>
-#include "cli/option_values.hpp"
+#include "options/option_values.hpp"
 #include <cstdint>
 #include <limits>
 #include <optional>

@@ -1,7 +1,7 @@
 #pragma once
 // The options of a run as given, before any default: the command line
 // (cli/run_options.cpp) and the Python keywords (python/run_settings.cpp)
-// each fill one through the rows of cli/run_option_table, then both turn it
+// each fill one through the rows of options/run_option_table, then both turn it
 // into a RunRequest by the same function, so that every default is
 // RunRequest's and every word is read one way.
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "cli/run_option_table.hpp"
+#include "options/run_option_table.hpp"
 
 #include <stdexcept>
 

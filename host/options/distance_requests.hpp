@@ -1,6 +1,6 @@
 #pragma once
 // The geodesics request, built once for both front ends: the command line
-// (cli/geodesics_options.cpp, cli/run_option_values.cpp) and the Python
+// (cli/geodesics_options.cpp, options/run_option_values.cpp) and the Python
 // keywords (python/run_settings.cpp, python/quality_binding.cpp).
 #include <filesystem>
 #include <optional>

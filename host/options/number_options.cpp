@@ -1,4 +1,4 @@
-#include "cli/number_options.hpp"
+#include "options/number_options.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "cli/option_values.hpp"
+#include "options/option_values.hpp"
 
 #include <climits>
 #include <filesystem>

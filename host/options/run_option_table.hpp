@@ -5,7 +5,7 @@
 // its row says (whole numbers within the row's range, words among the row's
 // words on the command line), store it in the row's field of
 // RunOptionValues, and turn those into a RunRequest by run_request
-// (cli/run_option_values.hpp): a new option is a row, a field and the line
+// (options/run_option_values.hpp): a new option is a row, a field and the line
 // of run_request that reads it. run()'s signature in
 // python/meshparticles/__init__.py must list exactly the rows' keywords
 // (tests/run_option_table_test.cpp holds it to the table).
@@ -15,8 +15,8 @@
 #include <variant>
 #include <vector>
 
-#include "cli/number_options.hpp"
-#include "cli/run_option_values.hpp"
+#include "options/number_options.hpp"
+#include "options/run_option_values.hpp"
 
 namespace meshparticles {
 

@@ -1,7 +1,7 @@
-#include "cli/run_option_values.hpp"
+#include "options/run_option_values.hpp"
 
-#include "cli/distance_requests.hpp"
 #include "geodesics/geodesic_solver.hpp"
+#include "options/distance_requests.hpp"
 #include "particles/particle_params.hpp"
 #include "tuning/tuning_store.hpp"
 

@@ -1,4 +1,4 @@
-#include "cli/distance_requests.hpp"
+#include "options/distance_requests.hpp"
 
 #include <iostream>
 
