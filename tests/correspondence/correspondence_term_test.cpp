@@ -18,11 +18,13 @@ TEST(CorrespondenceTerm, TheOptionsChooseTheEnsembleEntropy) {
   JointRefinementOptions options;
   const std::unique_ptr<CorrespondenceTerm> term = correspondence_term(options);
   ASSERT_TRUE(term);
-  EXPECT_EQ(typeid(*term), typeid(EnsembleEntropy));
+  const CorrespondenceTerm& chosen = *term;  // a name: typeid of *term reads as a call with side effects to clang
+  EXPECT_EQ(typeid(chosen), typeid(EnsembleEntropy));
   options.correspondence_weight = 0;
   options.pack = false;
   const std::unique_ptr<CorrespondenceTerm> other = correspondence_term(options);
-  EXPECT_EQ(typeid(*other), typeid(EnsembleEntropy));
+  const CorrespondenceTerm& chosen_without_packing = *other;
+  EXPECT_EQ(typeid(chosen_without_packing), typeid(EnsembleEntropy));
 
   const PointSet base = PointSet::Random(12, 3);
   std::vector<PointSet> shapes{base, base * 1.1 + PointSet::Random(12, 3) * 0.05, base * 0.9};
