@@ -416,7 +416,9 @@ set_tests_properties(cli.correspond PROPERTIES LABELS fast)
 add_test(NAME cli.correspond_graph COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
                                            ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond_graph
                                            --deformation graph)
-set_tests_properties(cli.correspond_graph PROPERTIES LABELS fast)
+# About a minute (three copies of the atrium through the graph): slow, so
+# the sanitizer pass, which runs the fast tests, leaves it to ctest.
+set_tests_properties(cli.correspond_graph PROPERTIES LABELS slow TIMEOUT 600)
 expect_exit(correspond_unknown_deformation 2 "--deformation: bend not in .smooth,graph." correspond
             ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${PROJECT_SOURCE_DIR}/meshes/atrium.off --out ${CMAKE_CURRENT_BINARY_DIR}/cli_unknown_deformation
             --deformation bend)
