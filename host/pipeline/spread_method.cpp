@@ -126,10 +126,6 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
   working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
 }
 
-}  // namespace
-
-namespace {
-
 // Where this machine's memory cut the working mesh short, the particles
 // differ from a run on a machine with more: said, not silent.
 void warn_of_memory_cap(const RunPlan& plan, const RefinedMesh& working) {
