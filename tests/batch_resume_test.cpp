@@ -15,16 +15,11 @@
 #include "batch/mesh_job.hpp"
 #include "reports/file_digest.hpp"
 #include "reports/run_outputs.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles::testing {
 namespace {
 
-std::string slurp(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
 
 // In place, as an editor saving the file would leave it to a later resume.
 void overwrite(const std::filesystem::path& file, const std::string& bytes) {

@@ -411,7 +411,8 @@ set_tests_properties(cli.shape_model PROPERTIES LABELS fast)
 # every particle where it lies on the mesh (within 1% of the spacing) on each copy.
 add_test(NAME cli.correspond COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
                                      ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond)
-set_tests_properties(cli.correspond PROPERTIES LABELS fast)
+# About 20 s here, 150 s under the sanitizers: slow (over about 10 s).
+set_tests_properties(cli.correspond PROPERTIES LABELS slow)
 # The same with the template moved by the deformation graph; an unknown --deformation refused.
 add_test(NAME cli.correspond_graph COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
                                            ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond_graph
@@ -427,7 +428,7 @@ expect_exit(correspond_unknown_deformation 2 "--deformation: bend not in .smooth
 add_test(NAME cli.correspond_population COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond_population.sh
                                                 $<TARGET_FILE:meshparticles> ${PROJECT_SOURCE_DIR}/scripts
                                                 ${CMAKE_CURRENT_BINARY_DIR}/correspond_population)
-set_tests_properties(cli.correspond_population PROPERTIES LABELS fast TIMEOUT 300)
+set_tests_properties(cli.correspond_population PROPERTIES LABELS slow TIMEOUT 300)  # about 12 s here
 # correspond shared among MPI ranks: the outputs of one process, byte for byte.
 function(correspond_share_test mode)
   add_test(NAME cli.correspond_${mode}

@@ -14,14 +14,11 @@
 #include "geodesics/local_distances.hpp"
 #include "fixtures/mesh_generator.hpp"
 #include "particle_test_support.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles::testing {
 namespace {
 
-SurfaceMesh committed(const std::string& name) {
-  std::vector<std::string> warnings;
-  return read_mesh(std::string(MESHES_DIR) + "/" + name, warnings);
-}
 
 // Every `stride`-th vertex.
 std::vector<VertexId> every(const SurfaceMesh& mesh, std::size_t stride) {

@@ -15,14 +15,11 @@
 #include "geodesics/solver_factory.hpp"
 #include "mesh/io/mesh_reader.hpp"
 #include "fixtures/mesh_generator.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles {
 namespace {
 
-SurfaceMesh committed(const std::string& name) {
-  std::vector<std::string> warnings;
-  return read_mesh(std::string(MESHES_DIR) + "/" + name, warnings);
-}
 
 struct ErrorStats {
   double mean = 0, p99 = 0;
@@ -52,7 +49,7 @@ double great_circle(const Vec3& a, const Vec3& b) {
 }
 
 TEST(Geodesics, SphereFastMarchingIsWithinOnePercentAndFarBetterThanDijkstra) {
-  const SurfaceMesh sphere = committed("sphere.off");
+  const SurfaceMesh sphere = testing::committed("sphere.off");
   const DistanceTable fmm = compute_all_pairs(sphere, GeodesicMethod::fast_marching, 0, true);
   const ErrorStats fmm_error = relative_errors(sphere, fmm, 1, great_circle);
   const DistanceTable dijkstra = compute_all_pairs(sphere, GeodesicMethod::dijkstra, 0, true);
@@ -65,7 +62,7 @@ TEST(Geodesics, SphereFastMarchingIsWithinOnePercentAndFarBetterThanDijkstra) {
 }
 
 TEST(Geodesics, FlatPatchMatchesEuclideanDistance) {
-  const SurfaceMesh patch = committed("patch.off");
+  const SurfaceMesh patch = testing::committed("patch.off");
   const DistanceTable fmm = compute_all_pairs(patch, GeodesicMethod::fast_marching, 0, true);
   const ErrorStats error = relative_errors(patch, fmm, 1, [](const Vec3& a, const Vec3& b) { return distance(a, b); });
   std::printf("flat patch, relative error vs Euclidean: mean %.4f%% p99 %.4f%%\n", 100 * error.mean, 100 * error.p99);
@@ -86,7 +83,7 @@ double worst_triangle_excess(const DistanceTable& table, int triples) {
 }
 
 TEST(Geodesics, TableIsSymmetricWithZeroDiagonal) {
-  const SurfaceMesh torus = committed("torus.off");
+  const SurfaceMesh torus = testing::committed("torus.off");
   const DistanceTable table = compute_all_pairs(torus, GeodesicMethod::fast_marching, 0, true);
   const auto n = VertexId(torus.vertex_count());
   for (VertexId u = 0; u < n; ++u) {
@@ -101,14 +98,14 @@ TEST(Geodesics, TableIsSymmetricWithZeroDiagonal) {
 
 TEST(Geodesics, TriangleInequalityHoldsOnRandomTriples) {
   // On the sphere within 1e-4 relative, as asked.
-  const DistanceTable sphere = compute_all_pairs(committed("sphere.off"), GeodesicMethod::fast_marching, 0, true);
+  const DistanceTable sphere = compute_all_pairs(testing::committed("sphere.off"), GeodesicMethod::fast_marching, 0, true);
   EXPECT_LE(worst_triangle_excess(sphere, 200000), 1e-4);
   // Where one-sided fast marching errs most - behind the torus's cut loci,
   // along the patch's boundary - a few triples in a thousand exceed 1e-4; the
   // bound met there is 1% (docs/GEODESICS.md has the measured figures).
-  const DistanceTable torus = compute_all_pairs(committed("torus.off"), GeodesicMethod::fast_marching, 0, true);
+  const DistanceTable torus = compute_all_pairs(testing::committed("torus.off"), GeodesicMethod::fast_marching, 0, true);
   EXPECT_LE(worst_triangle_excess(torus, 200000), 1e-2);
-  const DistanceTable patch = compute_all_pairs(committed("patch.off"), GeodesicMethod::fast_marching, 0, true);
+  const DistanceTable patch = compute_all_pairs(testing::committed("patch.off"), GeodesicMethod::fast_marching, 0, true);
   EXPECT_LE(worst_triangle_excess(patch, 200000), 1e-2);
 }
 
@@ -161,7 +158,7 @@ TEST(Geodesics, HighValenceFansAreUpdatedAllRound) {
 TEST(Geodesics, NoDistanceIsShorterThanTheStraightLine) {
   for (const char* name : {"torus.off", "atrium.off"}) {
     SCOPED_TRACE(name);
-    const SurfaceMesh mesh = committed(name);
+    const SurfaceMesh mesh = testing::committed(name);
     const auto solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
     SolverScratch scratch;
     std::vector<double> distances(mesh.vertex_count());
@@ -176,7 +173,7 @@ TEST(Geodesics, NoDistanceIsShorterThanTheStraightLine) {
 }
 
 TEST(Geodesics, ResultDoesNotDependOnThreadCount) {
-  const SurfaceMesh patch = committed("patch.off");
+  const SurfaceMesh patch = testing::committed("patch.off");
   const DistanceTable one = compute_all_pairs(patch, GeodesicMethod::fast_marching, 1, true);
   const DistanceTable two = compute_all_pairs(patch, GeodesicMethod::fast_marching, 2, true);
   EXPECT_TRUE(std::equal(one.values().begin(), one.values().end(), two.values().begin()));
@@ -185,7 +182,7 @@ TEST(Geodesics, ResultDoesNotDependOnThreadCount) {
 // A stopped solve is the full solve inside the radius, bit for bit (the same
 // vertices accepted in the same order), and +inf beyond it.
 TEST(GeodesicSolver, AStoppedSolveEqualsTheFullOneInsideTheRadius) {
-  const SurfaceMesh torus = committed("torus.off");
+  const SurfaceMesh torus = testing::committed("torus.off");
   for (const GeodesicMethod method :
        {GeodesicMethod::fast_marching, GeodesicMethod::dijkstra, GeodesicMethod::fast_iterative}) {
     SCOPED_TRACE(method_name(method));
@@ -215,7 +212,7 @@ TEST(GeodesicSolver, AStoppedSolveEqualsTheFullOneInsideTheRadius) {
 // inside the radius, and leaves the scratch clean: interleaved with full
 // solves on the same scratch, every answer is as if computed alone.
 TEST(GeodesicSolver, BallsAreTheFullSolveInsideTheRadius) {
-  const SurfaceMesh sphere = committed("sphere.off");
+  const SurfaceMesh sphere = testing::committed("sphere.off");
   for (const GeodesicMethod method :
        {GeodesicMethod::fast_marching, GeodesicMethod::dijkstra, GeodesicMethod::fast_iterative}) {
     SCOPED_TRACE(method_name(method));
@@ -250,7 +247,7 @@ TEST(GeodesicSolver, BallsAreTheFullSolveInsideTheRadius) {
 // few hundredths of an edge (0.024 measured; combining two sources' values
 // in one triangle update, before origins were tracked, gave 0.27).
 TEST(GeodesicSolver, SeveralSourcesGiveTheDistanceToTheNearest) {
-  const SurfaceMesh sphere = committed("sphere.off");
+  const SurfaceMesh sphere = testing::committed("sphere.off");
   const std::vector<VertexId> sources = {3, 1500, 2900};
   for (const GeodesicMethod method :
        {GeodesicMethod::dijkstra, GeodesicMethod::fast_marching, GeodesicMethod::fast_iterative}) {
@@ -282,7 +279,7 @@ TEST(GeodesicSolver, SeveralSourcesGiveTheDistanceToTheNearest) {
 TEST(GeodesicSolver, TheFastIterativeMethodReachesFastMarchingsDistances) {
   for (const char* name : {"sphere.off", "torus.off", "atrium.off", "patch.off"}) {
     SCOPED_TRACE(name);
-    const SurfaceMesh mesh = committed(name);
+    const SurfaceMesh mesh = testing::committed(name);
     const auto fmm = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
     const auto fim = make_geodesic_solver(mesh, GeodesicMethod::fast_iterative);
     SolverScratch scratch;

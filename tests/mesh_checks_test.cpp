@@ -12,11 +12,11 @@
 #include "common/user_error.hpp"
 #include "mesh/coincident_sheets.hpp"
 #include "mesh/io/mesh_reader.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles {
 namespace {
 
-std::string data(const std::string& name) { return std::string(TEST_DATA_DIR) + "/" + name; }
 
 std::string strict_refusal(const std::filesystem::path& file) {
   std::vector<std::string> warnings;
@@ -31,22 +31,22 @@ std::string strict_refusal(const std::filesystem::path& file) {
 TEST(MeshChecks, TwoFansAtAVertexAreKeptWithOneWarning) {
   // Two tetrahedra touching at vertex 0.
   std::vector<std::string> warnings;
-  const SurfaceMesh mesh = read_mesh(data("nonmanifold_vertex.off"), warnings);
+  const SurfaceMesh mesh = read_mesh(testing::test_data_file("nonmanifold_vertex.off"), warnings);
   EXPECT_EQ(mesh.vertex_count(), 7u);
   EXPECT_EQ(mesh.triangle_count(), 8u);
   EXPECT_EQ(mesh.component_count(), 1u);
   EXPECT_EQ(mesh.valence(0), 6u);
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_EQ(warnings[0], data("nonmanifold_vertex.off") +
+  EXPECT_EQ(warnings[0], testing::test_data_file("nonmanifold_vertex.off") +
                              ": 1 non-manifold vertex (e.g. vertex 0, where 2 fans of triangles meet) kept: a shortest "
                              "path may pass through them");
-  EXPECT_EQ(strict_refusal(data("nonmanifold_vertex.off")),
-            data("nonmanifold_vertex.off") + ": non-manifold vertex 0 (its triangles form 2 separate fans)");
+  EXPECT_EQ(strict_refusal(testing::test_data_file("nonmanifold_vertex.off")),
+            testing::test_data_file("nonmanifold_vertex.off") + ": non-manifold vertex 0 (its triangles form 2 separate fans)");
 }
 
 TEST(MeshChecks, AnEdgeInThreeTrianglesJoinsThemAll) {
   std::vector<std::string> warnings;
-  const SurfaceMesh mesh = read_mesh(data("nonmanifold_edge.off"), warnings);
+  const SurfaceMesh mesh = read_mesh(testing::test_data_file("nonmanifold_edge.off"), warnings);
   EXPECT_EQ(mesh.triangle_count(), 3u);
   EXPECT_EQ(mesh.edge_count(), 7u);
   EXPECT_EQ(mesh.valence(0), 4u);  // 1, 2, 3 and 4
@@ -55,8 +55,8 @@ TEST(MeshChecks, AnEdgeInThreeTrianglesJoinsThemAll) {
             std::string::npos)
       << warnings[0];
   EXPECT_NE(warnings[1].find("disagree in orientation"), std::string::npos) << warnings[1];
-  EXPECT_EQ(strict_refusal(data("nonmanifold_edge.off")),
-            data("nonmanifold_edge.off") + ": non-manifold edge 0-1 is shared by more than two faces");
+  EXPECT_EQ(strict_refusal(testing::test_data_file("nonmanifold_edge.off")),
+            testing::test_data_file("nonmanifold_edge.off") + ": non-manifold edge 0-1 is shared by more than two faces");
 }
 
 PolygonSoup tetrahedron_with_repeats() {
@@ -86,7 +86,7 @@ TEST(MeshChecks, RepeatedTrianglesAreDroppedWithOneWarning) {
 
 TEST(MeshChecks, StrictAcceptsManifoldMeshesUnchanged) {
   for (const char* name : {"tetrahedron.ply", "off_dialect.off", "octahedron_tristrips.ply"}) {
-    EXPECT_EQ(strict_refusal(data(name)), "accepted") << name;
+    EXPECT_EQ(strict_refusal(testing::test_data_file(name)), "accepted") << name;
   }
 }
 
@@ -119,16 +119,16 @@ TEST(MeshChecks, ManyPinchedVerticesStillGiveOneLine) {
 TEST(MeshChecks, AMeshWithNoAreaIsRefusedInOneLine) {
   for (const char* name : {"no_area.off", "no_area_collinear.off"}) {
     const std::string expected =
-        data(name) + ": the mesh has no area: every triangle is degenerate (its corners at one point or on one line)";
+        testing::test_data_file(name) + ": the mesh has no area: every triangle is degenerate (its corners at one point or on one line)";
     std::vector<std::string> warnings;
     try {
-      read_mesh(data(name), warnings);
+      read_mesh(testing::test_data_file(name), warnings);
       ADD_FAILURE() << name << " was accepted";
     } catch (const UserError& error) {
       EXPECT_EQ(std::string(error.what()), expected);
       EXPECT_EQ(error.exit_code(), 2);
     }
-    EXPECT_EQ(strict_refusal(data(name)), expected);
+    EXPECT_EQ(strict_refusal(testing::test_data_file(name)), expected);
   }
 }
 

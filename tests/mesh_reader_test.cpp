@@ -18,11 +18,11 @@
 
 #include "common/user_error.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles {
 namespace {
 
-std::string data(const std::string& name) { return std::string(TEST_DATA_DIR) + "/" + name; }
 
 SurfaceMesh read_text(const std::string& text, const MeshFormat& format, std::vector<std::string>& warnings) {
   return build_checked_mesh(read_polygon_soup(std::span<const char>(text.data(), text.size()), format, "text"), "text",
@@ -75,14 +75,14 @@ TEST(MeshReader, ReadsEveryFormatAndEncodingToTheSameTetrahedron) {
        {"tetrahedron.obj", "tetrahedron.ply", "tetrahedron_binary_le.ply", "tetrahedron_binary_be.ply",
         "tetrahedron_extra_properties.ply", "tetrahedron.stl", "tetrahedron_binary.stl", "tetrahedron_crlf.off"}) {
     std::vector<std::string> warnings;
-    expect_tetrahedron(read_mesh(data(name), warnings), name);
+    expect_tetrahedron(read_mesh(testing::test_data_file(name), warnings), name);
     EXPECT_TRUE(warnings.empty()) << name << ": " << warnings.front();
   }
 }
 
 TEST(MeshReader, UnreferencedVerticesAreDroppedAndInputIdsKept) {
   std::vector<std::string> warnings;
-  const SurfaceMesh mesh = read_mesh(data("unreferenced_vertices.off"), warnings);
+  const SurfaceMesh mesh = read_mesh(testing::test_data_file("unreferenced_vertices.off"), warnings);
   ASSERT_EQ(mesh.vertex_count(), 4u);
   EXPECT_EQ(mesh.input_id(0), 1u);
   EXPECT_EQ(mesh.input_id(1), 2u);
@@ -102,7 +102,7 @@ void expect_unit_cube(const SurfaceMesh& mesh, const std::string& name) {
 
 TEST(MeshReader, QuadsAreTriangulated) {
   std::vector<std::string> warnings;
-  expect_unit_cube(read_mesh(data("cube_quads.off"), warnings), "cube_quads.off");
+  expect_unit_cube(read_mesh(testing::test_data_file("cube_quads.off"), warnings), "cube_quads.off");
   EXPECT_EQ(warnings.size(), 1u);
 }
 
@@ -110,7 +110,7 @@ TEST(MeshReader, QuadsAreTriangulated) {
 
 TEST(OffReader, CommentsBlankLinesColoursAndPolygons) {
   std::vector<std::string> warnings;
-  expect_unit_cube(read_mesh(data("off_dialect.off"), warnings), "off_dialect.off");
+  expect_unit_cube(read_mesh(testing::test_data_file("off_dialect.off"), warnings), "off_dialect.off");
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("5 polygons with more than 3 vertices triangulated"), std::string::npos);
 }
@@ -144,7 +144,7 @@ TEST(OffReader, EveryKeywordGeomviewAllowsAndNone) {
 
 TEST(OffReader, ContentAfterTheDeclaredFacesIsIgnoredWithAWarning) {
   std::vector<std::string> warnings;
-  const SurfaceMesh mesh = read_mesh(data("trailing_content.off"), warnings);
+  const SurfaceMesh mesh = read_mesh(testing::test_data_file("trailing_content.off"), warnings);
   EXPECT_EQ(mesh.triangle_count(), 3u);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("1 line after the 3 faces the header declares (from line 10) ignored"), std::string::npos)
@@ -188,7 +188,7 @@ TEST(OffReader, RefusesWhatItCannotReadWithTheLine) {
 
 TEST(PlyReader, TriangleStripsWithRestartsAndDegenerateJoins) {
   std::vector<std::string> warnings;
-  const SurfaceMesh mesh = read_mesh(data("octahedron_tristrips.ply"), warnings);
+  const SurfaceMesh mesh = read_mesh(testing::test_data_file("octahedron_tristrips.ply"), warnings);
   EXPECT_TRUE(warnings.empty()) << warnings.front();  // strip winding alternates: orientation is consistent
   EXPECT_EQ(mesh.vertex_count(), 6u);
   EXPECT_EQ(mesh.triangle_count(), 8u);
@@ -254,7 +254,7 @@ TEST(PlyReader, RefusesWhatItCannotRead) {
 }
 
 TEST(PlyReader, TruncatedBinaryAndDataAfterTheElements) {
-  std::ifstream input(data("tetrahedron_binary_le.ply"), std::ios::binary);
+  std::ifstream input(testing::test_data_file("tetrahedron_binary_le.ply"), std::ios::binary);
   const std::string whole((std::istreambuf_iterator<char>(input)), std::istreambuf_iterator<char>());
   EXPECT_REFUSED(whole.substr(0, whole.size() - 3), mesh_format_of("text.ply"), "text: file ends inside element 'face' record 3 of 4");
   std::vector<std::string> warnings;
@@ -291,7 +291,7 @@ TEST(VtkReader, FilesFromVtkAndMeshioReadAsTheSameMeshAsOff) {
                            "patch_appended_base64_zlib.vtp", "patch_strips_appended_raw.vtp"}) {
     SCOPED_TRACE(name);
     std::vector<std::string> vtk_warnings;
-    const SurfaceMesh vtk = read_mesh(data(std::string("vtk/") + name), vtk_warnings);
+    const SurfaceMesh vtk = read_mesh(testing::test_data_file(std::string("vtk/") + name), vtk_warnings);
     EXPECT_TRUE(vtk_warnings.empty()) << vtk_warnings.front();
     ASSERT_EQ(vtk.vertex_count(), off.vertex_count());
     for (VertexId v = 0; v < off.vertex_count(); ++v) {
@@ -309,7 +309,7 @@ TEST(VtkReader, ReadsPastBinaryStringArraysVtkWrote) {
   for (const char* name : {"tetrahedron_strings_vtk42_binary.vtk", "tetrahedron_strings_vtk51_binary.vtk"}) {
     SCOPED_TRACE(name);
     std::vector<std::string> warnings;
-    const SurfaceMesh mesh = read_mesh(data(std::string("vtk/") + name), warnings);
+    const SurfaceMesh mesh = read_mesh(testing::test_data_file(std::string("vtk/") + name), warnings);
     EXPECT_TRUE(warnings.empty()) << warnings.front();
     EXPECT_EQ(mesh.vertex_count(), 4u);
     EXPECT_EQ(mesh.triangle_count(), 4u);
@@ -398,7 +398,7 @@ TEST(VtkReader, RefusesWhatItCannotRead) {
 // 9.7.2 (tests/data/vtk/make_vtk_files.py).
 TEST(VtpReader, ReadsCompressedArraysOfOneBlockSmallerThanTheBlockSize) {
   std::vector<std::string> warnings;
-  const SurfaceMesh mesh = read_mesh(data("vtk/tetrahedron_zlib_one_small_block.vtp"), warnings);
+  const SurfaceMesh mesh = read_mesh(testing::test_data_file("vtk/tetrahedron_zlib_one_small_block.vtp"), warnings);
   EXPECT_TRUE(warnings.empty()) << warnings.front();
   EXPECT_EQ(mesh.vertex_count(), 4u);
   EXPECT_EQ(mesh.triangle_count(), 4u);
@@ -464,7 +464,7 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
   // The sample's two pieces are each a triangle whose three arrays lie in
   // one raw block; the second's read the first's bytes again.
   {
-    std::ifstream in(data("vtk/aliased_appended_raw.vtp"), std::ios::binary);
+    std::ifstream in(testing::test_data_file("vtk/aliased_appended_raw.vtp"), std::ios::binary);
     const std::string aliased((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     ASSERT_FALSE(aliased.empty());
     EXPECT_REFUSED(aliased, vtp, "text: <Points>: its appended data (bytes 0 to 40) overlaps another array's "
@@ -534,7 +534,7 @@ TEST(VtpReader, RefusesWhatItCannotRead) {
 
 TEST(ObjReader, TextureAndNormalEntriesNegativeIndicesGroupsAndContinuations) {
   std::vector<std::string> warnings;
-  expect_unit_cube(read_mesh(data("obj_dialect.obj"), warnings), "obj_dialect.obj");
+  expect_unit_cube(read_mesh(testing::test_data_file("obj_dialect.obj"), warnings), "obj_dialect.obj");
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("polygons with more than 3 vertices triangulated"), std::string::npos);
 }
@@ -606,9 +606,9 @@ TEST(MeshFile, RefusesWhatIsNotARegularFileWithoutWaiting) {
 }
 
 TEST(MeshFile, RefusesAFileOverTheSizeLimit) {
-  EXPECT_EQ(read_mesh_file(data("tetrahedron.obj"), "t", 70).size(), 70u);
+  EXPECT_EQ(read_mesh_file(testing::test_data_file("tetrahedron.obj"), "t", 70).size(), 70u);
   try {
-    read_mesh_file(data("tetrahedron.obj"), "t", 69);
+    read_mesh_file(testing::test_data_file("tetrahedron.obj"), "t", 69);
     ADD_FAILURE() << "a 70-byte file read under a 69-byte limit";
   } catch (const UserError& error) {
     EXPECT_EQ(std::string(error.what()), "t: 70 bytes, more than the 69 bytes a mesh file may have");
@@ -634,7 +634,7 @@ TEST(MeshReader, BrokenFilesThrowOneLineNamingTheFile) {
                            "index_out_of_range.off", "index_out_of_range.obj", "repeated_index.off"}) {
     std::vector<std::string> warnings;
     try {
-      read_mesh(data(name), warnings);
+      read_mesh(testing::test_data_file(name), warnings);
       ADD_FAILURE() << name << " was accepted";
     } catch (const UserError& error) {
       const std::string message = error.what();

@@ -20,10 +20,6 @@
 namespace meshparticles::testing {
 namespace {
 
-RunOutcome run(ParticleBackend& backend, const std::vector<VertexId>& start, Scheme scheme, unsigned colors,
-               std::size_t iterations) {
-  return run_particles(backend, start, {scheme, colors, iterations, /*quiet=*/true});
-}
 
 // The twin computes the weights on the host (std::exp), the device with its
 // own exp: a weight may differ in its last bit, so energies agree to 1e-7

@@ -14,10 +14,6 @@
 namespace meshparticles::testing {
 namespace {
 
-RunOutcome run(ParticleBackend& backend, const std::vector<VertexId>& start, Scheme scheme, unsigned colors,
-               std::size_t iterations) {
-  return run_particles(backend, start, {scheme, colors, iterations, /*quiet=*/true});
-}
 
 // The torus with 200 farthest-point particles has no near-ties along these
 // runs (a float near-tie would show up as a different vertex below).

@@ -13,6 +13,7 @@
 #include "geodesics/local_distances.hpp"
 #include "mesh/io/mesh_reader.hpp"
 #include "particles/particle_params.hpp"
+#include "particles/particle_run.hpp"
 #include "pipeline/distances.hpp"
 #include "pipeline/run_pipeline.hpp"
 
@@ -93,6 +94,12 @@ inline RunRequest quiet_run_request(const std::string& name, std::size_t particl
   request.particles = particles;
   request.quiet = true;
   return request;
+}
+
+// A quiet run of `iterations` with `scheme` from `start`.
+inline RunOutcome run(ParticleBackend& backend, const std::vector<VertexId>& start, Scheme scheme, unsigned colors,
+                      std::size_t iterations) {
+  return run_particles(backend, start, {scheme, colors, iterations, /*quiet=*/true});
 }
 
 }  // namespace meshparticles::testing

@@ -21,16 +21,11 @@
 #include "reports/particle_locations.hpp"
 #include "reports/run_outputs.hpp"
 #include "reports/run_report.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles::testing {
 namespace {
 
-std::string slurp(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The Float32 values of the first base64 DataArray in a .vtp after `after`.
 std::vector<float> first_float_array(const std::string& xml, const std::string& after) {

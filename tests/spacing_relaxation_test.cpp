@@ -23,14 +23,11 @@
 #include "pipeline/point_set_measurement.hpp"
 #include "particle_test_support.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles::testing {
 namespace {
 
-SurfaceMesh committed(const std::string& name) {
-  std::vector<std::string> warnings;
-  return read_mesh(std::string(MESHES_DIR) + "/" + name, warnings);
-}
 
 // The nearest point of any triangle of `mesh` to `p`: the definition.
 double distance_to_surface(const SurfaceMesh& mesh, Vec3 p) {
@@ -219,9 +216,6 @@ TEST(Relaxation, SeparatesParticlesOnOnePoint) {
   EXPECT_GT(outcome.candidates.front().spacing, 0.8 * d_hex);
 }
 
-std::string stem(const ::testing::TestParamInfo<const char*>& mesh) {
-  return std::string(mesh.param).substr(0, std::string(mesh.param).find('.'));
-}
 INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphere.off", "torus.off", "atrium.off"),
                          stem);
 

@@ -22,14 +22,11 @@
 #include "pipeline/run_pipeline.hpp"
 #include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles::testing {
 namespace {
 
-SurfaceMesh committed(const std::string& name) {
-  std::vector<std::string> warnings;
-  return read_mesh(std::string(MESHES_DIR) + "/" + name, warnings);
-}
 
 // The distance from every vertex to the nearest of `particles`, each
 // particle's own full solve: what the diagram's distances approximate.
@@ -224,9 +221,6 @@ TEST_P(SpreadImproves, OnTheFarthestStart) {
   EXPECT_EQ(again.positions, spread.positions);
 }
 
-std::string stem(const ::testing::TestParamInfo<const char*>& mesh) {
-  return std::string(mesh.param).substr(0, std::string(mesh.param).find('.'));
-}
 INSTANTIATE_TEST_SUITE_P(ClosedMeshes, SpreadImproves, ::testing::Values("sphere.off", "torus.off", "atrium.off"), stem);
 
 // The run's choices: the default is spread on a refined mesh with enough

@@ -20,7 +20,7 @@
 namespace meshparticles::testing {
 namespace {
 
-constexpr std::size_t kParticles = 40;
+constexpr std::size_t kTransferredParticles = 40;
 
 class JointRefinement : public ::testing::Test {
  protected:
@@ -37,7 +37,7 @@ class JointRefinement : public ::testing::Test {
     std::sort(ids.begin(), ids.end(), [&](std::size_t a, std::size_t b) {
       return sphere.positions()[a].z > sphere.positions()[b].z || (sphere.positions()[a].z == sphere.positions()[b].z && a < b);
     });
-    ids.resize(kParticles);
+    ids.resize(kTransferredParticles);
     for (const SurfaceMesh& mesh : meshes_) {
       const std::vector<SurfaceLocation> vertices = vertex_locations(mesh);
       ShapeParticles& shape = start_.emplace_back();
@@ -50,7 +50,7 @@ class JointRefinement : public ::testing::Test {
                                        JointRefinementRecord& record) const {
     std::vector<ShapeParticles> shapes = start_;
     ShapeShare share(shapes.size(), threads);
-    iterate_jointly(shapes, kParticles, options, share, record, true);
+    iterate_jointly(shapes, kTransferredParticles, options, share, record, true);
     return shapes;
   }
 
@@ -59,7 +59,7 @@ class JointRefinement : public ::testing::Test {
     for (std::size_t i = 0; i < shape.at.size(); ++i) {
       for (std::size_t j = i + 1; j < shape.at.size(); ++j) smallest = std::min(smallest, norm(shape.at[i].at + (-1.0) * shape.at[j].at));
     }
-    return smallest / hexagonal_spacing(shape.mesh->area(), kParticles);
+    return smallest / hexagonal_spacing(shape.mesh->area(), kTransferredParticles);
   }
   static double median_smallest_spacing(const std::vector<ShapeParticles>& shapes) {
     std::vector<double> values;
@@ -70,7 +70,7 @@ class JointRefinement : public ::testing::Test {
 
   static void expect_on_surface(const std::vector<ShapeParticles>& shapes) {
     for (const ShapeParticles& shape : shapes) {
-      ASSERT_EQ(shape.at.size(), kParticles);
+      ASSERT_EQ(shape.at.size(), kTransferredParticles);
       for (const SurfaceLocation& at : shape.at) {
         ASSERT_LT(at.triangle, shape.mesh->triangles().size());
         const Triangle& t = shape.mesh->triangles()[at.triangle];
@@ -87,7 +87,7 @@ class JointRefinement : public ::testing::Test {
 
   static bool same_places(const std::vector<ShapeParticles>& a, const std::vector<ShapeParticles>& b) {
     for (std::size_t k = 0; k < a.size(); ++k) {
-      for (std::size_t i = 0; i < kParticles; ++i) {
+      for (std::size_t i = 0; i < kTransferredParticles; ++i) {
         const SurfaceLocation &p = a[k].at[i], &q = b[k].at[i];
         if (p.triangle != q.triangle || p.weights != q.weights || p.at.x != q.at.x || p.at.y != q.at.y || p.at.z != q.at.z) {
           return false;
@@ -138,7 +138,7 @@ TEST_F(JointRefinement, ThePackingIsKeptOnlyWhereItSpreadsTheShapes) {
   std::vector<ShapeParticles> shapes = iterated(options, 2, record);
   const std::vector<ShapeParticles> before = shapes;
   ShapeShare share(shapes.size(), 2);
-  pack_jointly(shapes, kParticles, options, share, record, true);
+  pack_jointly(shapes, kTransferredParticles, options, share, record, true);
   EXPECT_GT(record.packing_rounds, 0u);
   EXPECT_EQ(record.packing_spacing.size(), record.packing_rounds);
   EXPECT_EQ(record.packing_correspondence_step.size(), record.packing_rounds);
@@ -152,7 +152,7 @@ TEST_F(JointRefinement, ThePackingIsKeptOnlyWhereItSpreadsTheShapes) {
   options.pack = false;
   std::vector<ShapeParticles> unpacked = before;
   JointRefinementRecord unrecorded;
-  pack_jointly(unpacked, kParticles, options, share, unrecorded, true);
+  pack_jointly(unpacked, kTransferredParticles, options, share, unrecorded, true);
   EXPECT_TRUE(same_places(unpacked, before));
   EXPECT_EQ(unrecorded.packing_rounds, 0u);
 }
@@ -169,10 +169,10 @@ TEST_F(JointRefinement, TheHoldBackKeepsAShareOfEachShapesEvening) {
   const std::vector<ShapeParticles> transfer = iterated(options, 2, record);
   std::vector<ShapeParticles> shapes = transfer;
   ShapeShare share(shapes.size(), 2);
-  iterate_jointly(shapes, kParticles, options, share, record, true);
+  iterate_jointly(shapes, kTransferredParticles, options, share, record, true);
   std::vector<std::vector<SurfaceLocation>> transferred;
   for (const ShapeParticles& shape : transfer) transferred.push_back(shape.at);
-  hold_back_evening(shapes, transferred, kParticles, options, share, record);
+  hold_back_evening(shapes, transferred, kTransferredParticles, options, share, record);
   ASSERT_EQ(record.evening_kept.size(), 3u);
   expect_on_surface(shapes);
   std::size_t held_back = 0;
@@ -191,9 +191,9 @@ TEST_F(JointRefinement, TheHoldBackKeepsAShareOfEachShapesEvening) {
   const std::vector<ShapeParticles> refined = shapes;
   std::vector<std::vector<SurfaceLocation>> same;
   for (const ShapeParticles& shape : refined) same.push_back(shape.at);
-  hold_back_evening(shapes, same, kParticles, options, share, record);
+  hold_back_evening(shapes, same, kTransferredParticles, options, share, record);
   for (std::size_t k = 0; k < 3; ++k) {
-    for (std::size_t i = 0; i < kParticles; ++i) {
+    for (std::size_t i = 0; i < kTransferredParticles; ++i) {
       EXPECT_LT(norm(shapes[k].at[i].at + (-1.0) * refined[k].at[i].at), 1e-12) << "shape " << k << " particle " << i;
     }
   }
