@@ -39,10 +39,6 @@ namespace {
 // nearer the population than its pose onto the template: where the two are
 // about as near, the template's is kept (and the output as it was).
 constexpr double kNearerPopulation = 1.02;
-// The poses a shape's fit onto the template leaves open: those whose short
-// affine fit is within this ratio of the best's. The bent family's wrong
-// poses fit within 1.03 to 1.09 of its right ones.
-constexpr double kOpenPoseRatio = 1.15;
 
 // The particles measured as `run` measures its own (through the balls of
 // kSpreadQualityCutoff around them, wider where a particle is alone there),

@@ -10,27 +10,25 @@ namespace meshparticles {
 
 namespace {
 
+// Where the shape's own fit left another pose open (kOpenPoseRatio): the
+// runner-up's margin, and the population's where it chose.
 std::string pose_doubt(const ShapeCorrespondence& shape) {
   const MeshAlignment::RunnerUp& runner_up = shape.alignment.runner_up;
-  const double population_ratio = shape.alignment.population_ratio;
-  if (population_ratio > 0) {
-    // The population chose among the poses the fit left open.
-    if (population_ratio * kAmbiguousPoseRatio <= 1) return "";
-    return shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
-           " degrees from the one chosen is " +
-           (population_ratio < 1 ? format_number("only %.1f%% farther from", 100 * (1 / population_ratio - 1))
-                                 : format_number("%.1f%% nearer", 100 * (1 - 1 / population_ratio))) +
-           " the other shapes: the population barely tells them apart, and its particles may lie turned "
-           "(fit_population_ratio in summary.json)";
-  }
   const double ratio = runner_up.rms_ratio;
-  if (ratio >= kAmbiguousPoseRatio) return "";
+  if (!(ratio < kOpenPoseRatio)) return "";
+  const double population_ratio = shape.alignment.population_ratio;
+  const std::string chosen_by =
+      population_ratio <= 0 ? ""
+      : population_ratio < 1
+          ? "; the other shapes prefer the pose chosen by only " +
+                format_number("%.1f%%", 100 * (1 / population_ratio - 1)) + " (fit_population_ratio)"
+          : "; the other shapes lie " + format_number("%.1f%%", 100 * (1 - 1 / population_ratio)) +
+                " nearer the other pose (fit_population_ratio)";
   return shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
          " degrees from the one chosen fits the template " +
          (ratio < 0.9995 ? format_number("%.1f%% better", 100 * (1 - ratio))
                          : format_number("within %.1f%%", std::max(0.0, 100 * (ratio - 1)))) +
-         ": the shape's geometry barely tells them apart, and its particles may lie turned (fit_runner_up in "
-         "summary.json)";
+         " (fit_runner_up)" + chosen_by + ": its particles may lie turned by that much";
 }
 
 }  // namespace
