@@ -182,6 +182,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
                                               : relaxation.start_spacing / d_hex},
                           {"passed_over_for_cover", relaxation.passed_over_for_cover},
                           {"undone_for_spacing", relaxation.undone_for_spacing},
+                          {"skipped_for_straight", relaxation.skipped_for_straight},
                           {"spacing_per_round", round_spacings}};
   if (spread.evening) report["evening"] = evening_json(*spread.evening, d_hex);
   report["quality"] = quality_json(result.quality);
