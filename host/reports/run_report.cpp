@@ -128,6 +128,7 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
                       {"smallest_spacing", sweep.smallest / d_hex},
                       {"mean_spacing", sweep.mean / d_hex},
                       {"cover_before", sweep.cover / d_hex},
+                      {"longest_move", sweep.longest / d_hex},
                       {"ms", sweep.ms}});
   }
   return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"sweeps", sweeps}};
