@@ -20,8 +20,8 @@ namespace {
 constexpr double kLongestMove = 1.5;
 // Neighbours whose stretch is over this are across a fold: no circle
 // through them in the tangent plane is a centre (a curved surface's
-// neighbours stretch a few per cent; measured on 5 CGAL models, 1 dropped
-// a third of the candidates of particles on curved parts).
+// neighbours stretch a few per cent: with 1, a particle on a curved part
+// of cow lost 3 of its 7 neighbours' circles).
 constexpr double kFoldStretch = 1.3;
 // A particle's gap is measured along the surface up to its estimate plus
 // this many spacings (the estimate is a straight line or a path through the
@@ -39,7 +39,7 @@ constexpr double kThroughAir = 2.0;
 // Sweeps stop once this many in a row have each raised the mean spacing by
 // under the stall gain: a sweep of few moves can open room for the next
 // (measured on dino and cow at n = 1,024: 5 in a row gave the same rho as
-// 2 in 13 sweeps against 9 or 10, three times the evening's time).
+// 2, in 13 sweeps against 9 or 10).
 constexpr std::size_t kStallSweeps = 2;
 // A move's length along the surface is taken as at most this many times
 // its straight length where the cover is bounded without a march.
