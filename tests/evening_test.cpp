@@ -4,8 +4,9 @@
 // the surface (by `quality`'s own measurement) ends more evenly spaced than
 // the sweeps left it, its smallest spacing never below theirs, its cover
 // within the limit given, although pairs across the fold face each other
-// far closer than a spacing through the air; and the same start gives the
-// same bits.
+// far closer than a spacing through the air; a run on a strip folded twice
+// skips the relaxation and evens with full jumps; and the same start gives
+// the same bits.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,8 +21,10 @@
 #include "particles/initial_placement.hpp"
 #include "particles/local_farthest_points.hpp"
 #include "particles/particle_params.hpp"
-#include "quality/distribution_quality.hpp"
+#include "particles/spacing_relaxation.hpp"
 #include "pipeline/point_set_measurement.hpp"
+#include "pipeline/run_pipeline.hpp"
+#include "quality/distribution_quality.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -40,9 +43,24 @@ Vec3 on_fold(double u, double y) {
   return {kLength - (u - kLength - around), y, 2 * kBend};
 }
 
-SurfaceMesh folded_strip() {
-  constexpr int kAlong = 160, kAcross = 16;
-  const double total = 2 * kLength + std::numbers::pi * kBend;
+// A strip folded twice, as a Z: three sheets kBend * 2 apart, the first and
+// the third facing the same way (their normals agree, so straight lines
+// between them count as facing pairs).
+Vec3 on_z_fold(double u, double y) {
+  const double around = std::numbers::pi * kBend;
+  if (u <= kLength) return {u, y, 0};
+  u -= kLength;
+  if (u < around) return {kLength + kBend * std::sin(u / kBend), y, kBend - kBend * std::cos(u / kBend)};
+  u -= around;
+  if (u <= kLength) return {kLength - u, y, 2 * kBend};
+  u -= kLength;
+  if (u < around) return {-kBend * std::sin(u / kBend), y, 3 * kBend - kBend * std::cos(u / kBend)};
+  return {u - around, y, 4 * kBend};
+}
+
+SurfaceMesh folded_strip(int folds = 1) {
+  const int kAlong = 160 * folds, kAcross = 16;
+  const double total = (folds + 1) * kLength + folds * std::numbers::pi * kBend;
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
   // Vertices off the grid (by up to a third of a cell along the strip and
@@ -52,7 +70,7 @@ SurfaceMesh folded_strip() {
   for (int i = 0; i <= kAlong; ++i) {
     for (int j = 0; j <= kAcross; ++j) {
       const double u = total * (i + jitter(i, kAlong)) / kAlong, y = kWidth * (j + jitter(j, kAcross)) / kAcross;
-      positions.push_back(on_fold(u, y));
+      positions.push_back(folds == 1 ? on_fold(u, y) : on_z_fold(u, y));
     }
   }
   const auto at = [](int i, int j) { return VertexId(i * (kAcross + 1) + j); };
@@ -142,6 +160,43 @@ TEST(Evening, NoMovePassesTheCoverLimit) {
   const Evened run = even_the_fold(96, 0);
   ASSERT_GT(run.outcome.sweeps.front().moved, 0u);
   EXPECT_LE(run.outcome.cover, run.limit * (1 + 1e-6));
+}
+
+// Farthest-point optimization's full jump: a particle goes all the way to
+// the centre of its cavity, more than half a spacing where that is where
+// the centre is, and is kept only where its own gap along the surface
+// widens, so the set's smallest spacing, measured as `quality` measures,
+// never falls below the sweeps'.
+// Where two sheets facing the same way lie a tenth of a spacing apart
+// through the air (the Z), the relaxation, which pushes by straight lines,
+// is not run at all: decided before its first round. The evening goes on
+// from the sweeps' vertices, each particle going to its cavity's centre
+// where that widens its own gap: the run ends more evenly spaced than its
+// sweeps, its smallest spacing, measured as `quality` measures, never below
+// theirs.
+TEST(Evening, TheRelaxationIsSkippedWhereStraightLinesMisjudgeTheSurface) {
+  const SurfaceMesh mesh = folded_strip(2);
+  RunRequest request;
+  request.mesh_label = "z-folded strip";
+  request.particles = 192;
+  request.quiet = true;
+  const RunResult result = run_pipeline(mesh, request);
+  ASSERT_TRUE(result.spread);
+  const RelaxationOutcome& relaxation = result.spread->relaxation;
+  EXPECT_TRUE(relaxation.skipped_for_straight);
+  EXPECT_TRUE(relaxation.round_spacings.empty());
+  EXPECT_LT(relaxation.start_spacing, kRelaxationStraightShare * result.spread->sweeps.back().min_spacing);
+  ASSERT_TRUE(result.spread->evening);
+  double longest = 0;
+  for (const EveningSweep& sweep : result.spread->evening->sweeps) longest = std::max(longest, sweep.longest);
+  RunRequest sweeps_only = request;
+  sweeps_only.relax_rounds = 0;
+  const RunResult swept = run_pipeline(mesh, sweeps_only);
+  std::cerr << "rho " << *swept.quality.rho << " -> " << *result.quality.rho << ", longest move "
+            << longest / result.quality.d_hex << " d_hex\n";
+  EXPECT_GE(*result.quality.nn_min, (1 - 1e-3) * *swept.quality.nn_min);
+  EXPECT_GT(*result.quality.rho, *swept.quality.rho);
+  EXPECT_LT(*result.quality.nn_cv, *swept.quality.nn_cv);
 }
 
 TEST(Evening, TheSameStartGivesTheSameBits) {

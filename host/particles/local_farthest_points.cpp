@@ -13,10 +13,16 @@ namespace meshparticles {
 
 namespace {
 
-// A move goes at most this many hexagonal spacings: the centre sought is
-// within the particle's own cavity, and a longer step would leave the
-// surface its neighbours' straight lines describe.
-constexpr double kLongestMove = 0.5;
+// A move goes all the way to the centre of the largest empty circle of the
+// particle's neighbours (farthest-point optimization's full jump); only a
+// centre farther than this many hexagonal spacings, the circle of three
+// neighbours nearly on a line, is not one.
+constexpr double kLongestMove = 1.5;
+// Neighbours whose stretch is over this are across a fold: no circle
+// through them in the tangent plane is a centre (a curved surface's
+// neighbours stretch a few per cent: with 1, a particle on a curved part
+// of cow lost 3 of its 7 neighbours' circles).
+constexpr double kFoldStretch = 1.3;
 // A particle's gap is measured along the surface up to its estimate plus
 // this many spacings (the estimate is a straight line or a path through the
 // diagram: within a few per cent where it is not across a fold).
@@ -30,6 +36,14 @@ constexpr int kReachSteps = 3;
 // distance is taken as that path over the same factor, not the straight
 // line through the air.
 constexpr double kThroughAir = 2.0;
+// Sweeps stop once this many in a row have each raised the mean spacing by
+// under the stall gain: a sweep of few moves can open room for the next
+// (measured on dino and cow at n = 1,024: 5 in a row gave the same rho as
+// 2, in 13 sweeps against 9 or 10).
+constexpr std::size_t kStallSweeps = 2;
+// A move's length along the surface is taken as at most this many times
+// its straight length where the cover is bounded without a march.
+constexpr double kMoveSlack = 1.1;
 
 struct Neighbour {
   std::uint32_t particle = 0;
@@ -171,22 +185,25 @@ bool circumcentre(const double* a, const double* b, const double* c, double& x, 
   return true;
 }
 
-// The point of i's tangent plane, within `longest` of it, where its
-// estimated gap is widest: of the centres of the circles through three of
-// its plain neighbours (in the plane, the corners of the Voronoi diagram of
-// its neighbours: where the largest empty circle of its cavity is centred).
-Vec3 widest_centre(const SurfaceWalk& walk, const SurfaceLocation& p, std::uint32_t i, const NeighbourLists& lists,
-                   const std::vector<SurfaceLocation>& points, double longest, double& widest) {
+// The point of the surface where i's estimated gap is widest, of the
+// centres of the circles through three of its plain neighbours in its
+// tangent plane (in the plane, the corners of the Voronoi diagram of its
+// neighbours: where the largest empty circle of its cavity is centred),
+// each within `longest` of it and walked onto the surface, judged there;
+// `p` itself where none is wider than `widest` (its gap where it stands).
+SurfaceLocation widest_centre(const SurfaceWalk& walk, const SurfaceLocation& p, std::uint32_t i,
+                              const NeighbourLists& lists, const std::vector<SurfaceLocation>& points, double longest,
+                              double& widest) {
   const Vec3 n = walk.normal(p.triangle);
   const Vec3 e1 = walk.first_edge_direction(p.triangle);
   const Vec3 e2 = cross(n, e1);
   std::vector<std::array<double, 2>> plane;
   for (const Neighbour& k : lists.near[i]) {
-    if (k.stretch > 1) continue;  // across a fold: no straight centre with it
+    if (k.stretch > kFoldStretch) continue;  // across a fold: no straight centre with it
     const Vec3 to = points[k.particle].at - p.at;
     plane.push_back({dot(to, e1), dot(to, e2)});
   }
-  Vec3 best = p.at;
+  SurfaceLocation best = p;
   for (std::size_t a = 0; a < plane.size(); ++a) {
     for (std::size_t b = a + 1; b < plane.size(); ++b) {
       for (std::size_t c = b + 1; c < plane.size(); ++c) {
@@ -194,25 +211,19 @@ Vec3 widest_centre(const SurfaceWalk& walk, const SurfaceLocation& p, std::uint3
         if (!circumcentre(plane[a].data(), plane[b].data(), plane[c].data(), x, y)) continue;
         if (x * x + y * y > longest * longest) continue;
         const Vec3 at = p.at + x * e1 + y * e2;
-        const double gap = estimated_gap(at, i, lists, points);
+        // On a curved part the surface point is nearer i's neighbours than
+        // the plane's: judged where the particle would stand.
+        if (estimated_gap(at, i, lists, points) <= widest) continue;
+        const SurfaceLocation walked = walk.walk(p.triangle, at);
+        const double gap = estimated_gap(walked.at, i, lists, points);
         if (gap > widest) {
           widest = gap;
-          best = at;
+          best = walked;
         }
       }
     }
   }
   return best;
-}
-
-// Each particle's largest distance to a vertex of its own region.
-std::vector<double> region_reach(const SurfaceVoronoi& cells, std::size_t count) {
-  std::vector<double> reach(count, 0.0);
-  for (std::size_t v = 0; v < cells.owner.size(); ++v) {
-    const std::uint32_t owner = cells.owner[v];
-    if (owner != SurfaceVoronoi::kNoPoint) reach[owner] = std::max(reach[owner], double(cells.distance[v]));
-  }
-  return reach;
 }
 
 // The farthest `p` is from a corner of its triangle.
@@ -237,14 +248,15 @@ class Evening {
     const auto started = std::chrono::steady_clock::now();
     EveningSweep record;
     record.cover = cells_.cover();
-    // A move of length m leaves the mover's old region within its reach
-    // plus m of it: the covering radius stays within the limit when that does.
-    const std::vector<double> reach = region_reach(cells_, points_.size());
     corner_reach_ = 0;
     for (const SurfaceLocation& p : points_) corner_reach_ = std::max(corner_reach_, corner_offset(mesh_, p));
     std::vector<char> moved(points_.size(), 0);
     for (std::uint32_t i = 0; i < points_.size(); ++i) {
-      if (visit_[i] && try_move(i, lists_, reach[i])) moved[i] = 1;
+      const Vec3 was = points_[i].at;
+      if (visit_[i] && try_move(i, lists_)) {
+        moved[i] = 1;
+        record.longest = std::max(record.longest, distance(was, points_[i].at));
+      }
     }
     record.moved = std::size_t(std::count(moved.begin(), moved.end(), 1));
     find_neighbours();
@@ -260,22 +272,20 @@ class Evening {
  private:
   // Moves particle i to the widest centre of its cavity where that widens
   // its own gap along the surface and holds the cover; whether it moved.
-  bool try_move(std::uint32_t i, const NeighbourLists& lists, double reach) {
+  bool try_move(std::uint32_t i, const NeighbourLists& lists) {
     SurfaceLocation& p = points_[i];
     const double before = estimated_gap(p.at, i, lists, points_);
     if (!std::isfinite(before) || norm(walk_.normal(p.triangle)) == 0) return false;
     double widest = before;
-    const Vec3 centre = widest_centre(walk_, p, i, lists, points_, kLongestMove * limits_.d_hex, widest);
+    const SurfaceLocation there = widest_centre(walk_, p, i, lists, points_, kLongestMove * limits_.d_hex, widest);
     if (widest <= before + limits_.min_gain) return false;
-    const SurfaceLocation there = walk_.walk(p.triangle, centre);
-    if (reach + distance(there.at, p.at) > std::max(limits_.cover, reach)) return false;
-    if (estimated_gap(there.at, i, lists, points_) <= before + limits_.min_gain) return false;
     // Kept only where it widens the particle's own gap along the surface,
     // measured: straight lines and the diagram's paths misjudge folds.
     const double margin = std::max(corner_reach_, corner_offset(mesh_, there));
     const double was = gap_(p, i, before + kGapMargin * limits_.d_hex, margin, corners_, points_);
     const double wanted = was + limits_.min_gain;
     if (gap_(there, i, wanted, margin, corners_, points_) < wanted) return false;
+    if (!covered_after_move(i, there)) return false;
     corners_.move(i, p.triangle, there.triangle);
     p = there;
     corner_reach_ = margin;
@@ -286,6 +296,87 @@ class Evening {
   void find_neighbours() {
     cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
     lists_ = neighbour_lists(mesh_, cells_, points_);
+    nearest_ = cells_.distance;
+    owner_ = cells_.owner;
+    region_.assign(points_.size(), {});
+    for (VertexId v = 0; v < owner_.size(); ++v) {
+      if (owner_[v] != SurfaceVoronoi::kNoPoint) region_[owner_[v]].push_back(v);
+    }
+  }
+
+  // Whether moving i to `there` leaves every vertex within limits_.cover of
+  // a particle, on the diagram as the sweep's moves have left it (nearest_,
+  // owner_): the region i holds is refilled from its rim by the particles
+  // around it (one march from the rim, each rim vertex from its own
+  // particle, as particle_voronoi refills a region), and a march from
+  // `there` takes what is nearer to it. Where the move holds the cover the
+  // diagram is left updated for it, else as it was.
+  bool covered_after_move(std::uint32_t i, const SurfaceLocation& there) {
+    std::vector<VertexId>& mine = region_[i];
+    std::erase_if(mine, [&](VertexId v) { return owner_[v] != i; });
+    std::sort(mine.begin(), mine.end());
+    mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+    // Where every vertex of the region stays within the limit of i even
+    // after the move (its distance plus the move, the move's straight
+    // length widened by kMoveSlack for the surface's bends), no march: the
+    // region stays i's, each distance raised by that much.
+    const double move = kMoveSlack * distance(there.at, points_[i].at);
+    float reach = 0;
+    for (const VertexId v : mine) reach = std::max(reach, nearest_[v]);
+    if (reach + move <= limits_.cover) {
+      for (const VertexId v : mine) nearest_[v] = float(nearest_[v] + move);
+      return true;
+    }
+    undo_.clear();
+    for (const VertexId v : mine) {
+      undo_.push_back({v, nearest_[v], owner_[v]});
+      nearest_[v] = std::numeric_limits<float>::infinity();
+      owner_[v] = SurfaceVoronoi::kNoPoint;
+    }
+    rim_.clear();
+    rim_sources_.clear();
+    for (const VertexId v : mine) {
+      for (const VertexId w : mesh_.one_ring(v)) {
+        if (owner_[w] != SurfaceVoronoi::kNoPoint) {
+          rim_.push_back(w);
+          rim_sources_.push_back(owner_[w]);
+        }
+      }
+    }
+    // Lowers nearest_ inside i's region (restored from undo_ if the move is
+    // refused) and elsewhere only where it finds a shorter path to a
+    // particle: true either way, so kept.
+    solver_.lower_nearest_from(rim_, rim_sources_, nearest_, scratch_, lowered_, lowered_sources_);
+    for (std::size_t k = 0; k < lowered_.size(); ++k) owner_[lowered_[k]] = lowered_sources_[k];
+    const Triangle& t = mesh_.triangles()[there.triangle];
+    const auto& p = mesh_.positions();
+    const double starts[3] = {distance(there.at, p[t[0]]), distance(there.at, p[t[1]]), distance(there.at, p[t[2]])};
+    const double limit = limits_.cover;
+    solver_.solve_ball_from(t, starts, limit, scratch_, there_within_);
+    if (from_there_.size() != nearest_.size()) {
+      from_there_.assign(nearest_.size(), std::numeric_limits<float>::infinity());
+    }
+    for (const auto& [v, d] : there_within_) from_there_[v] = d;
+    bool covered = true;
+    for (const VertexId v : mine) covered = covered && std::min(nearest_[v], from_there_[v]) <= limit;
+    for (const auto& [v, d] : there_within_) from_there_[v] = std::numeric_limits<float>::infinity();
+    if (!covered) {
+      for (std::size_t k = undo_.size(); k-- > 0;) {
+        nearest_[undo_[k].vertex] = undo_[k].nearest;
+        owner_[undo_[k].vertex] = undo_[k].owner;
+      }
+      return false;
+    }
+    for (std::size_t k = 0; k < lowered_.size(); ++k) region_[lowered_sources_[k]].push_back(lowered_[k]);
+    mine.clear();
+    for (const auto& [v, d] : there_within_) {
+      if (d < nearest_[v]) {
+        nearest_[v] = d;
+        owner_[v] = i;
+        mine.push_back(v);
+      }
+    }
+    return true;
   }
 
   // The record's spacings over the new diagram, and who to visit next:
@@ -318,6 +409,21 @@ class Evening {
   SolverScratch scratch_;
   SurfaceVoronoi cells_;
   NeighbourLists lists_;  // of cells_
+  // The diagram as this sweep's moves have left it: each vertex's distance
+  // to its nearest particle (measured, an upper bound) and which that is.
+  std::vector<float> nearest_;
+  std::vector<std::uint32_t> owner_;
+  std::vector<std::vector<VertexId>> region_;  // per particle: every vertex it owns (and some it no longer does)
+  struct Undo {
+    VertexId vertex;
+    float nearest;
+    std::uint32_t owner;
+  };
+  std::vector<Undo> undo_;
+  std::vector<VertexId> rim_, lowered_;
+  std::vector<std::uint32_t> rim_sources_, lowered_sources_;
+  std::vector<std::pair<VertexId, float>> there_within_;
+  std::vector<float> from_there_;  // per vertex: its distance from a move's target while it is judged, else +inf
   double corner_reach_ = 0;  // the largest corner_offset of any particle
 };
 
@@ -333,7 +439,12 @@ EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, s
     const EveningSweep& record = sweeps.back();
     progress.update(sweep, "smallest spacing " + format_number("%.4f", record.smallest / limits.d_hex) + " d_hex, " +
                                std::to_string(record.moved) + " moved");
-    const bool stalled = sweeps.size() > 1 && record.mean - sweeps[sweeps.size() - 2].mean < limits.stall_gain;
+    // Stalled: kStallSweeps sweeps in a row each raised the mean spacing by
+    // under limits.stall_gain.
+    bool stalled = sweeps.size() > kStallSweeps;
+    for (std::size_t k = 1; stalled && k <= kStallSweeps; ++k) {
+      stalled = sweeps[sweeps.size() - k].mean - sweeps[sweeps.size() - k - 1].mean < limits.stall_gain;
+    }
     if (record.moved == 0 || stalled) break;
   }
   progress.finish();

@@ -28,6 +28,7 @@ struct EveningSweep {
   std::size_t moved = 0;
   double smallest = 0, mean = 0;  // each particle's spacing to its nearest surface neighbour, after the sweep
   double cover = 0;               // the geodesic covering radius before the sweep (mesh units)
+  double longest = 0;             // the longest move kept, straight (mesh units)
   double ms = 0;
 };
 

@@ -94,7 +94,7 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
                                 std::size_t max_rounds, const std::vector<double>& cover_limits,
-                                double start_geodesic_cover, bool quiet) {
+                                double start_geodesic_cover, bool quiet, double start_geodesic_spacing) {
   const auto started = std::chrono::steady_clock::now();
   PackingRelaxation relaxation(mesh, start);
   RelaxationOutcome outcome;
@@ -114,7 +114,9 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
     (void)limit;
     outcome.candidates.push_back({{}, outcome.start_spacing, to_geodesic * outcome.start_cover, 0});
   }
-  if (max_rounds > 0 && std::isfinite(outcome.start_spacing)) {
+  outcome.skipped_for_straight = max_rounds > 0 && std::isfinite(outcome.start_spacing) &&
+                                 outcome.start_spacing < kRelaxationStraightShare * start_geodesic_spacing;
+  if (max_rounds > 0 && std::isfinite(outcome.start_spacing) && !outcome.skipped_for_straight) {
     ProgressLine progress("relax", max_rounds, quiet);
     std::optional<RadiusGrowth> growth;
     for (std::size_t round = 1; round <= max_rounds; ++round) {

@@ -184,8 +184,11 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   const std::vector<VertexId> swept_positions = result.outcome.positions;
   details.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
     const double swept_cover = relax_rounds == 0 ? 0.0 : geodesic_cover(*solver, surface, swept_positions);
+    // Where the straight lines it pushes by already misjudge the sweeps'
+    // set, decided before the first round, not after the last.
+    const double swept_spacing = details.sweeps.empty() ? 0.0 : details.sweeps.back().min_spacing;
     return relax_spacing(surface, swept_positions, d_hex, relax_rounds,
-                         {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet);
+                         {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet, swept_spacing);
   });
   RelaxationOutcome& relaxation = details.relaxation;
   std::vector<float> kept_to_nearest;  // the kept candidate's, for the measurement

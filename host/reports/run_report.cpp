@@ -128,6 +128,7 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
                       {"smallest_spacing", sweep.smallest / d_hex},
                       {"mean_spacing", sweep.mean / d_hex},
                       {"cover_before", sweep.cover / d_hex},
+                      {"longest_move", sweep.longest / d_hex},
                       {"ms", sweep.ms}});
   }
   return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"sweeps", sweeps}};
@@ -182,6 +183,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
                                               : relaxation.start_spacing / d_hex},
                           {"passed_over_for_cover", relaxation.passed_over_for_cover},
                           {"undone_for_spacing", relaxation.undone_for_spacing},
+                          {"skipped_for_straight", relaxation.skipped_for_straight},
                           {"spacing_per_round", round_spacings}};
   if (spread.evening) report["evening"] = evening_json(*spread.evening, d_hex);
   report["quality"] = quality_json(result.quality);
