@@ -14,6 +14,7 @@
 #include "batch/batch_plan.hpp"
 #include "batch/mesh_job.hpp"
 #include "reports/file_digest.hpp"
+#include "reports/output_digests.hpp"
 #include "reports/run_outputs.hpp"
 #include "test_files.hpp"
 
@@ -148,6 +149,17 @@ TEST_F(BatchResume, ReportWithoutDigestsRedoesTheMesh) {
   report.erase("outputs");
   report.erase("report_sha256");
   overwrite(edited_file("report.json"), report.dump(2) + "\n");
+  EXPECT_EQ(kept_by_a_pass(), only_edited_redone_);
+}
+
+// An output another version wrote, intact and signed, is computed again:
+// the same inputs may give other particles there.
+TEST_F(BatchResume, AnotherVersionsOutputRedoesTheMesh) {
+  auto report = nlohmann::json::parse(slurp(edited_file("report.json")));
+  report.erase("outputs");
+  report.erase("report_sha256");
+  report["version"] = "0.0.1";
+  overwrite(edited_file("report.json"), digested_report_text(report, root_ / "out" / "edited"));
   EXPECT_EQ(kept_by_a_pass(), only_edited_redone_);
 }
 

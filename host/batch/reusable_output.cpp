@@ -1,6 +1,7 @@
 #include "batch/reusable_output.hpp"
 
 #include "common/json_text.hpp"
+#include "common/version.hpp"
 #include "reports/batch_summary.hpp"
 #include "reports/output_digests.hpp"
 #include "reports/run_outputs.hpp"
@@ -34,6 +35,9 @@ std::optional<nlohmann::json> reusable_report(const std::filesystem::path& direc
   if (!intact) return std::nullopt;
   const nlohmann::json& report = *intact;
   try {  // a value of another type than a run writes (a forged report) throws: not reusable
+    // Another version may place other particles from the same inputs: a
+    // population is never a mix of two versions' runs.
+    if (report.value("version", "") != program_version()) return std::nullopt;
     // As written: a path that is not UTF-8 is recorded escaped (common/json_text.hpp).
     const nlohmann::json expected_mesh = as_written({{"path", plan.request.mesh_label},
                                                      {"sha256", mesh_sha256},

@@ -2,11 +2,12 @@
 // Whether a mesh's earlier output can stand for the run a batch plans, so a
 // resumed batch skips it: checked, never assumed. It can when its folder
 // holds exactly a run's files, report.json is intact (its text exactly as a
-// run writes it, its own SHA-256 holds: reports/output_digests.hpp), names
-// the same mesh (path, SHA-256 of the file, vertex count), the same
-// parameters (every one in effect, defaults resolved; the output path aside)
-// and the same distance store, and every other file has the size and
-// SHA-256 report.json recorded when it was written. A killed write never
+// run writes it, its own SHA-256 holds: reports/output_digests.hpp), was
+// written by this version, names the same mesh (path, SHA-256 of the file,
+// vertex count), the same parameters (every one in effect, defaults
+// resolved; the output path aside) and the same distance store, and every
+// other file has the size and SHA-256 report.json recorded when it was
+// written. A killed write never
 // leaves a half set to find (reports/run_outputs.hpp), so what fails here was
 // edited, damaged, from an older version or belongs to other inputs, and the
 // mesh is computed again.
