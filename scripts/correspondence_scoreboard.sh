@@ -6,9 +6,10 @@
 #   - radii, seed 5 and seed 6; the ellipsoid family, seed 5; bent, seed 5
 #     and seed 6; bent-either (bent to either side), seed 5
 #     (`generate --population 12 --family F --vertices 2000 --seed S`);
-#   - FAUST (pose 0 of 10 people, scripts/faust_population.sh) where
-#     $FAUST_REPO names a copy of llorz/SGA18_orientation_BCICP_dataset;
-#     without it, a line says it is skipped (the data is never fetched here).
+#   - FAUST (pose 0 of 10 people, scripts/faust_population.sh) and
+#     faust-poses (person 0 in their 10 poses: limbs turned at the joints)
+#     where $FAUST_REPO names a copy of llorz/SGA18_orientation_BCICP_dataset;
+#     without it, a line says each is skipped (the data is never fetched here).
 # Each row: the spread of particle i (median / 90th percentile, in particle
 # spacings; scripts/correspondence_error.py, FAUST by its map), the worst
 # shape's particles' mean offset from particle i's mean place, the shapes
@@ -26,7 +27,7 @@
 # (pure numpy: about 20 minutes a population at n = 256 on 2 cores);
 # SCOREBOARD_CPD=0 leaves it out (its columns read "-"), and
 # SCOREBOARD_POPULATIONS picks populations (default "radii5 radii6 ellipsoid5
-# bent5 bent6 either5 faust"). Progress on stderr; the table on stdout and in
+# bent5 bent6 either5 faust faust-poses"). Progress on stderr; the table on stdout and in
 # OUT_DIR/scoreboard.md, every figure in OUT_DIR/scoreboard.json.
 # Why: the targets of docs/CORRESPONDENCE.md (spread median 0.3 and 90th percentile 0.6, no
 # shape over 1 spacing off, rho 0.7, cover 1.15x, better than CPD) checked on
@@ -39,7 +40,7 @@ out=${1:?usage: correspondence_scoreboard.sh OUT_DIR [N...]}
 shift
 ns=("$@")
 [ ${#ns[@]} -gt 0 ] || ns=(256 512 1024)
-populations=${SCOREBOARD_POPULATIONS:-radii5 radii6 ellipsoid5 bent5 bent6 either5 faust}
+populations=${SCOREBOARD_POPULATIONS:-radii5 radii6 ellipsoid5 bent5 bent6 either5 faust faust-poses}
 [ -x "$bin" ] || { echo "build first: scripts/setup.sh" >&2; exit 2; }
 mkdir -p "$out"
 say() { echo "scoreboard: $*" >&2; }
@@ -56,12 +57,14 @@ make_population() {
     bent5) "$bin" generate --population 12 --family bent --vertices 2000 --seed 5 --out-dir "$dir/shapes" 2>/dev/null ;;
     bent6) "$bin" generate --population 12 --family bent --vertices 2000 --seed 6 --out-dir "$dir/shapes" 2>/dev/null ;;
     either5) "$bin" generate --population 12 --family bent-either --vertices 2000 --seed 5 --out-dir "$dir/shapes" 2>/dev/null ;;
-    faust)
+    faust | faust-poses)
       if [ -z "${FAUST_REPO:-}" ] || [ ! -e "$FAUST_REPO" ]; then
-        say "faust: skipped, no data (set FAUST_REPO to a copy of llorz/SGA18_orientation_BCICP_dataset)"
+        say "$name: skipped, no data (set FAUST_REPO to a copy of llorz/SGA18_orientation_BCICP_dataset)"
         return 1
       fi
-      "$here/scripts/faust_population.sh" "$FAUST_REPO" "$dir" ;;
+      local person=()
+      [ "$name" = faust-poses ] && person=(--person 0)
+      "$here/scripts/faust_population.sh" "${person[@]}" "$FAUST_REPO" "$dir" ;;
     *) echo "correspondence_scoreboard: unknown population '$name'" >&2; exit 2 ;;
   esac
 }
@@ -124,7 +127,8 @@ import numpy as np
 out, populations, ns = Path(sys.argv[1]), sys.argv[2].split(), [int(n) for n in sys.argv[3:]]
 LABELS = {"radii5": "radii, seed 5", "radii6": "radii, seed 6", "ellipsoid5": "ellipsoid family, seed 5",
           "bent5": "bent, seed 5", "bent6": "bent, seed 6",
-          "either5": "bent either way, seed 5", "faust": "FAUST, 10 people"}
+          "either5": "bent either way, seed 5", "faust": "FAUST, 10 people",
+          "faust-poses": "FAUST, 1 person in 10 poses"}
 
 
 def quality(file):
