@@ -8,7 +8,8 @@ script is never a dependency of the program. POPULATION_DIR holds the meshes (OF
 population; the first in name order (as `correspond DIR` takes it) is the template. Its particles
 are its own default run's (`meshparticles run TEMPLATE -n N`, as correspond samples its template),
 each put on the template's nearest vertex. For every other shape, pyFM computes a functional map
-between the template and the shape (Laplace-Beltrami eigenvectors of each mesh, WKS descriptors,
+between the template and the shape (each scaled to unit area, as the generated populations' shapes
+differ in scale; Laplace-Beltrami eigenvectors of each mesh, WKS descriptors,
 pyFM's default energy weights, a 50 x 50 map refined by ZoomOut (Melzi et al. 2019) in 10 steps of
 10 to 150 x 150) and turns it into a vertex map from the template to the shape; each particle goes
 to the shape vertex its template vertex maps to. The template keeps its snapped particles.
@@ -60,7 +61,7 @@ def template_to_shape(template, shape):
     from pyFM.functional import FunctionalMapping
     from pyFM.mesh import TriMesh
     # get_p2p maps mesh2 to mesh1, so the shape is mesh1 and the template mesh2.
-    model = FunctionalMapping(TriMesh(*shape), template)
+    model = FunctionalMapping(TriMesh(*shape, normalize=True), template)
     model.preprocess(descr_type="WKS", k_process=START_EIGENVECTORS + ZOOMOUT_STEPS * ZOOMOUT_STEP + 10)
     model.fit(K=(START_EIGENVECTORS, START_EIGENVECTORS))
     refined = model.zoomout_refine(nit=ZOOMOUT_STEPS, step=ZOOMOUT_STEP)
@@ -89,7 +90,7 @@ def main():
 
     (args.out / "shapes").mkdir(parents=True, exist_ok=True)
     from pyFM.mesh import TriMesh
-    template_mesh = TriMesh(*template)
+    template_mesh = TriMesh(*template, normalize=True)  # unit area (WKS is not scale-free), centred
     start = time.time()
     for index, mesh in enumerate(meshes):
         shape = template if index == 0 else read_off(mesh)
