@@ -26,7 +26,7 @@
 # Stages whose outputs are there are not run again, so an interrupted or
 # partial board resumes: OUT_DIR/POPULATION/{shapes,NNNN/...}. CPD is slow
 # (pure numpy: about 20 minutes a population at n = 256 on 2 cores);
-# SCOREBOARD_CPD=0 leaves it out (no CPD rows). ZoomOut runs in
+# SCOREBOARD_CPD=0 does not run it (rows it wrote before stay). ZoomOut runs in
 # OUT_DIR/zoomout-venv, made on first use (pip install pyfmaps numpy scipy:
 # never into a system Python, never a dependency of the program), about 30 s
 # a shape of 5,000 vertices; SCOREBOARD_ZOOMOUT=0 leaves it out. And
