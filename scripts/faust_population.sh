@@ -27,8 +27,10 @@ fi
 repo=${1:?$usage}
 out=${2:?$usage}
 shapes=${3:-10}
-[[ $shapes =~ ^[0-9]+$ ]] && ((shapes >= 2 && shapes <= 10)) ||
-  { echo "faust_population: SHAPES takes 2-10, not '$shapes'" >&2; exit 2; }
+if ! [[ $shapes =~ ^[0-9]+$ ]] || ((shapes < 2 || shapes > 10)); then
+  echo "faust_population: SHAPES takes 2-10, not '$shapes'" >&2
+  exit 2
+fi
 source_file() {  # PATH in the dataset -> stdout, from a work tree or a git folder
   if [ -e "$repo/$1" ]; then cat "$repo/$1"; else git --git-dir="$repo" show "HEAD:$1"; fi
 }
