@@ -4,7 +4,7 @@
 # the whole suite with ctest on PoCL (the CPU OpenCL device), then the fast
 # tests again under AddressSanitizer and UndefinedBehaviorSanitizer, built
 # with clang (scripts/sanitize.sh), the Python package installed with pip
-# into a fresh venv and its tests (scripts/test_python.sh), two core-minutes
+# into a fresh venv and its tests (scripts/test_python.sh), 90 core-seconds
 # of fuzzing of the mesh readers (scripts/fuzz.sh) and ten real meshes from
 # Debian's libcgal-demo (scripts/real_meshes.sh --subset). docs/PERFORMANCE.md
 # ("The test command, step by step") has each step's time.
@@ -43,7 +43,7 @@ step_done "sanitizer build and fast tests"
 # Against build/meshparticles too: the module's particles are the program's.
 MESHPARTICLES_CLI="$ROOT/build/meshparticles" "$ROOT/scripts/test_python.sh"
 step_done "Python package build and tests"
-"$ROOT/scripts/fuzz.sh" 120
+"$ROOT/scripts/fuzz.sh" 90
 step_done "fuzz build and run"
 "$ROOT/scripts/real_meshes.sh" --subset
 step_done "real meshes"
