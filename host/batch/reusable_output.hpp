@@ -7,10 +7,10 @@
 // vertex count), the same parameters (every one in effect, defaults
 // resolved; the output path aside) and the same distance store, and every
 // other file has the size and SHA-256 report.json recorded when it was
-// written. A killed write never
-// leaves a half set to find (reports/run_outputs.hpp), so what fails here was
-// edited, damaged, from an older version or belongs to other inputs, and the
-// mesh is computed again.
+// written. A killed write never leaves a half set to find
+// (reports/run_outputs.hpp), so what fails here was edited, damaged, from
+// another version or belongs to other inputs, and the mesh is computed
+// again.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
