@@ -57,7 +57,7 @@ nlohmann::json shape_summary(const ShapeCorrespondence& shape) {
           {"fit_iterations", shape.alignment.iterations},
           {"fit_from", shape.alignment.from_principal_axes ? "principal axes" : "pose as given"},
           {"fit_runner_up", runner_up_json(shape.alignment.runner_up)},
-          {"fit_population_ratio", population_ratio_json(shape.alignment.population_ratio)},
+          {"fit_relief", relief_json(shape.alignment.relief)},
           {"topology", topology_json(shape.topology)},
           {"quality", quality_json(shape.quality)}};
 }

@@ -8,7 +8,8 @@
 // to shape do not outvote the features that place it; the best start's pose
 // is then fitted rigidly. The given pose is kept where it ends in the best
 // start's pose or fits almost as well; where other poses fit almost as well
-// too, the population chooses among them (pose_consensus). Shapes may
+// too, the template's relief chooses among them after a coarse deformable
+// fit in each (relief_pose). Shapes may
 // arrive in any position, size and orientation. The best start that ends in
 // another pose is reported: where it fits almost as well, the shape's
 // geometry cannot tell the two poses apart.
@@ -58,21 +59,25 @@ struct MeshAlignment {
     double degrees = 0;
     double rms = std::numeric_limits<double>::infinity();
   } runner_up;
-  // Where the population chose among the poses this shape's fit left open
-  // (pose_consensus): the chosen pose's summed distance to the other shapes
-  // over the nearest other pose's (under 1: the population prefers it). 0:
-  // the fit left one pose open, or a body's turn was chosen.
-  double population_ratio = 0;
+  // Where the fit left several poses open and the template's relief chose
+  // among them (relief_pose): the correlation of the template's relief with
+  // the shape's after a coarse deformable fit in the chosen pose, and in the
+  // best pose whose fit ends elsewhere (-infinity: none), that pose's turn
+  // from the chosen.
+  struct Relief {
+    bool measured = false;
+    double agreement = 0;
+    double runner_up = -std::numeric_limits<double>::infinity();
+    double runner_up_degrees = 0;
+  } relief;
 };
 
 // The poses a shape's fit onto the template leaves open: those whose short
-// affine fit is within this ratio of the best's (the population then
-// chooses among them, pose_consensus). The bent family's wrong poses fit
-// within 1.03 to 1.09 of its right ones. A shape whose runner-up lies within
-// it is warned of (population_doubts), whatever the population chose: the
-// population's margins on bent-either (0.96 to 0.99, the shapes that end
-// turned among them) are no narrower than on the one-way bent family (0.94
-// to 0.96, every shape right), so no margin of its own tells them apart.
+// affine fit is within this ratio of the best's (the template's relief then
+// chooses among them, relief_pose). The bent family's wrong poses fit
+// within 1.03 to 1.09 of its right ones; FAUST's right poses up to 1.15 of
+// a turned one's. A shape turned by its body whose runner-up lies within it
+// is warned of (population_doubts).
 inline constexpr double kOpenPoseRatio = 1.15;
 
 // The vertices an alignment fits: all, or every k-th of a large mesh.

@@ -18,8 +18,9 @@
 #include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/population_doubts.hpp"
-#include "correspondence/pose_consensus.hpp"
+#include "correspondence/relief_pose.hpp"
 #include "correspondence/shape_records.hpp"
+#include "correspondence/surface_relief.hpp"
 #include "correspondence/template_deformation.hpp"
 #include "mesh/nearest_on_triangle.hpp"
 #include "mesh/nearest_surface_point.hpp"
@@ -267,81 +268,37 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
   }
 }
 
-// A list of point sets as one message: each its row count, then its values.
-std::vector<double> point_sets_message(const std::vector<PointSet>& sets) {
-  std::vector<double> message;
-  for (const PointSet& set : sets) {
-    const Eigen::VectorXd flat = flattened(set);
-    message.push_back(double(set.rows()));
-    message.insert(message.end(), flat.begin(), flat.end());
-  }
-  return message;
-}
-
-std::vector<PointSet> point_sets_from_message(const std::vector<double>& message) {
-  std::vector<PointSet> sets;
-  for (std::size_t at = 0; at < message.size();) {
-    const Eigen::Index rows = Eigen::Index(message[at]);
-    sets.push_back(unflattened(Eigen::Map<const Eigen::VectorXd>(message.data() + at + 1, 3 * rows)));
-    at += 1 + std::size_t(3 * rows);
-  }
-  return sets;
-}
-
 // Every owned shape's first pose: its fit onto the template where that
-// leaves one pose open, else the one of those the population prefers
-// (PoseCandidates: every process gathers the candidates, each owner
-// measures its shapes' distances, every process makes the same choices). A
-// shape `turned_by_body` keeps its fit's pose (choose_body_turns turns it
-// later).
+// leaves one pose open, else the one of those in which the template's
+// relief lands on the shape's (relief_pose). A shape `turned_by_body` keeps
+// its fit's pose (choose_body_turns turns it later). Each owner decides its
+// own shapes: the same choice on any number of threads or processes.
 std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const std::vector<std::optional<SurfaceMesh>>& meshes,
                                        ShapeShare& share, const Similarity& template_frame,
                                        const PointSet& template_points, const std::vector<char>& turned_by_body) {
-  const std::size_t count = meshes.size();
   const std::vector<std::size_t> owned = share.owned();
   const PointsTree template_tree(template_points);
-  // Each owned shape's open poses, each fitted rigidly, its fit's choice first.
-  std::vector<std::vector<MeshAlignment>> poses(count);
-  std::vector<std::vector<double>> message(count);
+  const SurfaceMesh& template_mesh = *meshes.front();
+  const Eigen::VectorXd template_relief = surface_relief(template_mesh, template_points);
+  std::vector<MeshAlignment> alignments(meshes.size());
   SharedProgress fitting("align", owned.size(), request.quiet);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
     const PoseTrials trials = pose_trials(*meshes[k], template_points, template_frame, template_tree);
     const std::vector<std::size_t> open =
         k == 0 || turned_by_body[k] ? std::vector{trials.chosen} : trials.distinct_poses(kOpenPoseRatio);
-    for (const std::size_t trial : open) poses[k].push_back(fit_pose(trials, trial, template_points, template_tree));
-    // A settled shape serves the others only as a reference.
-    if (open.size() > 1 || k < PoseCandidates::kReferences) {
-      std::vector<PointSet> placed;
-      for (const MeshAlignment& pose : poses[k]) {
-        placed.push_back(stretched_pose(trials.points, pose, template_points, template_tree));
-      }
-      message[k] = point_sets_message(placed);
+    std::vector<MeshAlignment> poses;
+    for (const std::size_t trial : open) poses.push_back(fit_pose(trials, trial, template_points, template_tree));
+    if (poses.size() == 1) {
+      alignments[k] = poses.front();
+    } else {
+      const ReliefChoice choice =
+          choose_pose_by_relief(template_mesh, template_points, template_relief, *meshes[k], poses);
+      alignments[k] = poses[choice.chosen];
+      alignments[k].relief = choice.relief;
     }
     fitting.advance();
   });
   fitting.finish();
-  share.gather(message);
-  std::vector<std::vector<PointSet>> placed(count);
-  for (std::size_t k = 0; k < count; ++k) placed[k] = point_sets_from_message(message[k]);
-  const PoseCandidates candidates(std::move(placed));
-  std::vector<std::vector<double>> distances(count);
-  std::vector<std::size_t> open;
-  for (const std::size_t k : owned) {
-    if (candidates.candidates(k) > 1) open.push_back(k);
-  }
-  SharedProgress comparing("poses", open.size(), request.quiet);
-  for_each_index(open, share.threads(), [&](std::size_t k) {
-    distances[k] = candidates.distances(k);
-    comparing.advance();
-  });
-  comparing.finish();
-  share.gather(distances);
-  const std::vector<PoseChoice> choices = candidates.choose(distances);
-  std::vector<MeshAlignment> alignments(count);
-  for (const std::size_t k : owned) {
-    alignments[k] = poses[k][choices[k].chosen];
-    alignments[k].population_ratio = choices[k].ratio;
-  }
   return alignments;
 }
 

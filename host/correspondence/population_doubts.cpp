@@ -4,31 +4,41 @@
 
 #include "common/text_format.hpp"
 #include "correspondence/mesh_alignment.hpp"
+#include "correspondence/relief_pose.hpp"
 #include "mesh/mesh_topology.hpp"
 
 namespace meshparticles {
 
 namespace {
 
-// Where the shape's own fit left another pose open (kOpenPoseRatio): the
-// runner-up's margin, and the population's where it chose.
+// Where the template's relief chose the pose (relief_pose): another pose
+// that lays it almost as well, or none that lays it well. Where a body's
+// profile chose (body_turn): another turn within kOpenPoseRatio.
 std::string pose_doubt(const ShapeCorrespondence& shape) {
+  const std::string name = shape.mesh.string() + ": ";
+  const std::string turned = ": its particles may lie turned by that much";
+  const MeshAlignment::Relief& relief = shape.alignment.relief;
+  if (relief.measured) {
+    if (relief.agreement < kWeakRelief) {
+      return name + "the template's features agree with its own by " + format_number("%.2f", relief.agreement) +
+             " at best (fit_relief, under " + format_number("%.2f", kWeakRelief) +
+             "): no pose tried lays them over each other, so its particles may lie turned or its limbs not followed";
+    }
+    if (relief.runner_up > relief.agreement - kCloseRelief) {
+      return name + "a pose " + format_number("%.0f", relief.runner_up_degrees) +
+             " degrees from the one chosen lays the template's features over its own almost as well (fit_relief: " +
+             format_number("%.2f", relief.runner_up) + " against " + format_number("%.2f", relief.agreement) + ")" +
+             turned;
+    }
+    return "";
+  }
   const MeshAlignment::RunnerUp& runner_up = shape.alignment.runner_up;
   const double ratio = runner_up.rms_ratio;
   if (!(ratio < kOpenPoseRatio)) return "";
-  const double population_ratio = shape.alignment.population_ratio;
-  const std::string chosen_by =
-      population_ratio <= 0 ? ""
-      : population_ratio < 1
-          ? "; the other shapes prefer the pose chosen by only " +
-                format_number("%.1f%%", 100 * (1 / population_ratio - 1)) + " (fit_population_ratio)"
-          : "; the other shapes lie " + format_number("%.1f%%", 100 * (1 - 1 / population_ratio)) +
-                " nearer the other pose (fit_population_ratio)";
-  return shape.mesh.string() + ": a pose " + format_number("%.0f", runner_up.degrees) +
-         " degrees from the one chosen fits the template " +
+  return name + "a pose " + format_number("%.0f", runner_up.degrees) + " degrees from the one chosen fits the template " +
          (ratio < 0.9995 ? format_number("%.1f%% better", 100 * (1 - ratio))
                          : format_number("within %.1f%%", std::max(0.0, 100 * (ratio - 1)))) +
-         " (fit_runner_up)" + chosen_by + ": its particles may lie turned by that much";
+         " (fit_runner_up)" + turned;
 }
 
 }  // namespace

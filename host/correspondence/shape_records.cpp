@@ -88,7 +88,13 @@ nlohmann::json runner_up_json(const MeshAlignment::RunnerUp& runner_up) {
   return {{"rms_ratio", runner_up.rms_ratio}, {"degrees", runner_up.degrees}, {"rms", runner_up.rms}};
 }
 
-nlohmann::json population_ratio_json(double ratio) { return ratio > 0 ? nlohmann::json(ratio) : nlohmann::json(nullptr); }
+nlohmann::json relief_json(const MeshAlignment::Relief& relief) {
+  if (!relief.measured) return nullptr;
+  const bool runner_up = std::isfinite(relief.runner_up);
+  return {{"agreement", relief.agreement},
+          {"runner_up", runner_up ? nlohmann::json(relief.runner_up) : nlohmann::json(nullptr)},
+          {"runner_up_degrees", runner_up ? nlohmann::json(relief.runner_up_degrees) : nlohmann::json(nullptr)}};
+}
 
 nlohmann::json alignment_json(const MeshAlignment& alignment) {
   const Similarity& to_common = alignment.to_common;
@@ -101,7 +107,7 @@ nlohmann::json alignment_json(const MeshAlignment& alignment) {
           {"iterations", alignment.iterations},
           {"from_principal_axes", alignment.from_principal_axes},
           {"runner_up", runner_up_json(alignment.runner_up)},
-          {"population_ratio", population_ratio_json(alignment.population_ratio)}};
+          {"relief", relief_json(alignment.relief)}};
 }
 
 MeshAlignment alignment_from_json(const nlohmann::json& json) {
@@ -114,8 +120,15 @@ MeshAlignment alignment_from_json(const nlohmann::json& json) {
   alignment.rms = json.at("rms").get<double>();
   alignment.iterations = json.at("iterations").get<std::size_t>();
   alignment.from_principal_axes = json.at("from_principal_axes").get<bool>();
-  const nlohmann::json& population_ratio = json.at("population_ratio");
-  if (!population_ratio.is_null()) alignment.population_ratio = population_ratio.get<double>();
+  const nlohmann::json& relief = json.at("relief");
+  if (!relief.is_null()) {
+    alignment.relief.measured = true;
+    alignment.relief.agreement = relief.at("agreement").get<double>();
+    if (!relief.at("runner_up").is_null()) {
+      alignment.relief.runner_up = relief.at("runner_up").get<double>();
+      alignment.relief.runner_up_degrees = relief.at("runner_up_degrees").get<double>();
+    }
+  }
   const nlohmann::json& runner_up = json.at("runner_up");
   if (!runner_up.is_null()) {
     alignment.runner_up = {runner_up.at("rms_ratio").get<double>(), runner_up.at("degrees").get<double>(),

@@ -35,8 +35,8 @@ std::vector<SurfaceLocation> locations_from_json(const nlohmann::json& json, std
                                                  std::size_t particles);
 
 nlohmann::json runner_up_json(const MeshAlignment::RunnerUp& runner_up);
-// null where the population did not choose the pose (MeshAlignment::population_ratio 0).
-nlohmann::json population_ratio_json(double ratio);
+// null where the relief did not choose the pose (one pose open, or a body's turn).
+nlohmann::json relief_json(const MeshAlignment::Relief& relief);
 nlohmann::json alignment_json(const MeshAlignment& alignment);
 MeshAlignment alignment_from_json(const nlohmann::json& json);
 

@@ -79,7 +79,7 @@ TEST(MeshAlignment, ACopyOfTheTemplateFitsItExactly) {
   EXPECT_LT((alignment.to_common.apply(vertex_points(copy)) - template_points).cwiseAbs().maxCoeff(), 1e-6);
   EXPECT_NEAR(alignment.to_common.scale * 0.4, template_frame.scale, 1e-9);
   EXPECT_GT(alignment.runner_up.rms_ratio, kOpenPoseRatio);  // no other pose left open
-  EXPECT_EQ(alignment.population_ratio, 0.0);
+  EXPECT_FALSE(alignment.relief.measured);
 }
 
 // The symmetric distance: zero from a shape to itself, the same both ways.

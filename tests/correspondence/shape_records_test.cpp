@@ -33,7 +33,7 @@ ShapeCorrespondence awkward_shape() {
   shape.alignment.iterations = 17;
   shape.alignment.from_principal_axes = true;
   shape.alignment.runner_up = {1.0 + kAwkward[0], 179.5, kAwkward[1]};
-  shape.alignment.population_ratio = 0.7 + 1e-16;
+  shape.alignment.relief = {true, 0.7 + 1e-16, kAwkward[2], 179.25};
   shape.topology = {1, 2, -2, 1};
   shape.particles.resize(3, 3);
   for (Eigen::Index i = 0; i < 3; ++i) {
@@ -82,7 +82,10 @@ TEST(ShapeRecords, AShapeReadsBackToTheBit) {
   EXPECT_EQ(a.runner_up.rms_ratio, shape.alignment.runner_up.rms_ratio);
   EXPECT_EQ(a.runner_up.degrees, 179.5);
   EXPECT_EQ(a.runner_up.rms, shape.alignment.runner_up.rms);
-  EXPECT_EQ(a.population_ratio, shape.alignment.population_ratio);
+  EXPECT_TRUE(a.relief.measured);
+  EXPECT_EQ(a.relief.agreement, shape.alignment.relief.agreement);
+  EXPECT_EQ(a.relief.runner_up, shape.alignment.relief.runner_up);
+  EXPECT_EQ(a.relief.runner_up_degrees, 179.25);
   EXPECT_EQ(back.topology, shape.topology);
   EXPECT_EQ(back.quality.nn_min, shape.quality.nn_min);
   EXPECT_EQ(back.quality.nn_cv, shape.quality.nn_cv);
@@ -92,15 +95,21 @@ TEST(ShapeRecords, AShapeReadsBackToTheBit) {
   EXPECT_EQ(json_text(shape_json(back)), json_text(shape_json(shape)));
 }
 
-// No runner-up (infinite ratio, which JSON cannot hold), no population
-// choice (0), no genus: each comes back as it was.
+// No runner-up (infinite ratio, which JSON cannot hold), no relief choice,
+// a relief choice with no other end state (-infinity), no genus: each comes
+// back as it was.
 TEST(ShapeRecords, WhatJsonCannotHoldComesBackAsItWas) {
   MeshAlignment alignment;
   const MeshAlignment back = alignment_from_json(through_text(alignment_json(alignment)));
   EXPECT_TRUE(std::isinf(back.runner_up.rms_ratio));
   EXPECT_TRUE(std::isinf(back.runner_up.rms));
-  EXPECT_EQ(back.population_ratio, 0.0);
-  EXPECT_TRUE(population_ratio_json(0).is_null());
+  EXPECT_FALSE(back.relief.measured);
+  EXPECT_TRUE(relief_json(alignment.relief).is_null());
+  alignment.relief = {true, 0.5};
+  const MeshAlignment alone = alignment_from_json(through_text(alignment_json(alignment)));
+  EXPECT_TRUE(alone.relief.measured);
+  EXPECT_EQ(alone.relief.agreement, 0.5);
+  EXPECT_TRUE(std::isinf(alone.relief.runner_up) && alone.relief.runner_up < 0);
   MeshTopology nonmanifold{1, 0, 3, std::nullopt};
   EXPECT_EQ(topology_from_json(through_text(topology_json(nonmanifold))), nonmanifold);
 }

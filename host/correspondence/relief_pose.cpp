@@ -1,0 +1,51 @@
+#include "correspondence/relief_pose.hpp"
+
+#include "correspondence/deformation_graph.hpp"
+#include "correspondence/surface_relief.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+// Points of the common frame as `pose` placed the shape, in the shape's own
+// coordinates: where two poses' fits put the template on the shape itself.
+PointSet in_shape_frame(const MeshAlignment& pose, const PointSet& common) {
+  const Similarity& to_common = pose.to_common;
+  return (common.rowwise() - to_common.translation.transpose()) * to_common.rotation / to_common.scale;
+}
+
+}  // namespace
+
+ReliefChoice choose_pose_by_relief(const SurfaceMesh& template_mesh, const PointSet& template_points,
+                                   const Eigen::VectorXd& template_relief, const SurfaceMesh& mesh,
+                                   const std::vector<MeshAlignment>& poses) {
+  const PointSet own = vertex_points(mesh);
+  const Eigen::VectorXd relief = surface_relief(mesh, own);
+  std::vector<double> agreements;
+  std::vector<PointSet> ends;  // the template's vertices after each pose's fit, on the shape
+  for (const MeshAlignment& pose : poses) {
+    const PointSet placed = pose.to_common.apply(own);
+    const PointsTree tree(placed);
+    const PointSet moved =
+        deform_by_graph(template_mesh, template_points, mesh, placed, coarse_deformation_graph_options()).moved;
+    std::vector<Eigen::Index> pairs(std::size_t(moved.rows()));
+    for (Eigen::Index v = 0; v < moved.rows(); ++v) pairs[std::size_t(v)] = tree.nearest(moved.row(v)).front();
+    agreements.push_back(relief_agreement(template_relief, relief, pairs));
+    ends.push_back(in_shape_frame(pose, moved));
+  }
+  ReliefChoice choice;
+  for (std::size_t c = 1; c < poses.size(); ++c) {
+    if (agreements[c] > agreements[choice.chosen]) choice.chosen = c;
+  }
+  choice.relief.agreement = agreements[choice.chosen];
+  for (std::size_t c = 0; c < poses.size(); ++c) {
+    // At unit area, as the common frame is.
+    const double apart = (ends[c] - ends[choice.chosen]).rowwise().norm().mean() * poses[choice.chosen].to_common.scale;
+    if (apart < kSameEndState || !(agreements[c] > choice.relief.runner_up)) continue;
+    choice.relief.runner_up = agreements[c];
+    choice.relief.runner_up_degrees = turn_angle(poses[c].to_common.rotation, poses[choice.chosen].to_common.rotation);
+  }
+  return choice;
+}
+
+}  // namespace meshparticles
