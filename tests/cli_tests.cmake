@@ -413,13 +413,12 @@ add_test(NAME cli.correspond COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $
                                      ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond)
 # About 20 s here, 150 s under the sanitizers: slow (over about 10 s).
 set_tests_properties(cli.correspond PROPERTIES LABELS slow)
-# The same with the template moved by the deformation graph; an unknown --deformation refused.
-add_test(NAME cli.correspond_graph COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
-                                           ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond_graph
-                                           --deformation graph)
-# About a minute (three copies of the atrium through the graph): slow, so
-# the sanitizer pass, which runs the fast tests, leaves it to ctest.
-set_tests_properties(cli.correspond_graph PROPERTIES LABELS slow TIMEOUT 600)
+# The same with the template moved by the smoothed displacement (the
+# default is the deformation graph); an unknown --deformation refused.
+add_test(NAME cli.correspond_smooth COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/correspond.sh $<TARGET_FILE:meshparticles>
+                                            ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${CMAKE_CURRENT_BINARY_DIR}/correspond_smooth
+                                            --deformation smooth)
+set_tests_properties(cli.correspond_smooth PROPERTIES LABELS slow TIMEOUT 600)
 expect_exit(correspond_unknown_deformation 2 "--deformation: bend not in .smooth,graph." correspond
             ${PROJECT_SOURCE_DIR}/meshes/atrium.off ${PROJECT_SOURCE_DIR}/meshes/atrium.off --out ${CMAKE_CURRENT_BINARY_DIR}/cli_unknown_deformation
             --deformation bend)

@@ -20,7 +20,7 @@ struct CorrespondOptions {
   std::string out;
   bool no_scale = false;
   bool no_packing = false;
-  std::string deformation = "smooth";
+  std::string deformation = "graph";
 };
 
 void run_correspond_command(const CorrespondOptions& options) {
@@ -63,8 +63,8 @@ void add_correspond_command(CLI::App& app) {
                           "Model: shapes drawn per number of modes, for specificity");
   command
       ->add_option("--deformation", options->deformation,
-                   "How the template is moved onto each shape before its particles are carried over: smooth (a "
-                   "displacement smoothed over the template) or graph (a deformation graph, which can bend at a joint)")
+                   "How the template is moved onto each shape before its particles are carried over: graph (a "
+                   "deformation graph, which bends at a joint) or smooth (a displacement smoothed over the template)")
       ->check(CLI::IsMember({deformation_name(TemplateDeformation::smooth), deformation_name(TemplateDeformation::graph)}))
       ->capture_default_str();
   add_whole_number_option(*command, "--refine-iterations", options->request.refinement.iterations, WholeRange{0, 100000},

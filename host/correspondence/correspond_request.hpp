@@ -24,7 +24,7 @@ struct CorrespondRequest {
   std::size_t particles = 256;
   std::uint64_t seed = 1;  // the template's start and the model's draws
   JointRefinementOptions refinement;
-  TemplateDeformation deformation = TemplateDeformation::smooth;  // the template onto each shape
+  TemplateDeformation deformation = TemplateDeformation::graph;  // the template onto each shape
   bool scale = true;           // the model's alignment scales the shapes
   std::size_t samples = 1000;  // the model's shapes drawn per number of modes
   unsigned threads = 0;        // per process (0: the cores, shared among a node's ranks)

@@ -59,6 +59,7 @@ nlohmann::json shape_summary(const ShapeCorrespondence& shape) {
           {"fit_runner_up", runner_up_json(shape.alignment.runner_up)},
           {"fit_relief", relief_json(shape.alignment.relief)},
           {"topology", topology_json(shape.topology)},
+          {"transfer_repaired", shape.repaired},
           {"quality", quality_json(shape.quality)}};
 }
 

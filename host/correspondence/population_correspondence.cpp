@@ -7,6 +7,7 @@
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "common/json_text.hpp"
 #include "common/parallel_for.hpp"
@@ -16,6 +17,7 @@
 #include "correspondence/body_turn.hpp"
 #include "correspondence/deformation_graph.hpp"
 #include "correspondence/ellipsoid_body.hpp"
+#include "correspondence/geodesic_repair.hpp"
 #include "correspondence/joint_refinement.hpp"
 #include "correspondence/population_doubts.hpp"
 #include "correspondence/relief_pose.hpp"
@@ -413,6 +415,7 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   const std::vector<std::size_t> owned = share.owned();
   const std::vector<MeshAlignment> alignments =
       align_population(request, meshes, share, template_frame, template_points);
+  const TemplateGeodesics template_distances = template_geodesics(template_mesh, template_particles);
 
   // Each process's shapes, each on a thread: the template carried onto them.
   population.shapes.resize(count);
@@ -422,8 +425,9 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
     const SurfaceMesh& mesh = *meshes[k];
     const auto transferred = [&](const nlohmann::json& values) {
       check_entry_mesh(values.at("mesh"), request.meshes[k].string());
-      return std::pair(alignment_from_json(values.at("alignment")),
-                       locations_from_json(values.at("locations"), mesh.triangle_count(), particle_count));
+      return std::tuple(alignment_from_json(values.at("alignment")),
+                        locations_from_json(values.at("locations"), mesh.triangle_count(), particle_count),
+                        values.at("repaired").get<std::size_t>());
     };
     const auto kept = checkpoint ? checkpoint->read(shape_entry("transfer", k), transferred) : std::nullopt;
     if (kept) {
@@ -431,14 +435,17 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
       shape.mesh = request.meshes[k];
       shape.vertices = mesh.vertex_count();
       shape.topology = mesh_topology(mesh);
-      shape.alignment = kept->first;
-      particles[k] = {&mesh, kept->second};
+      shape.alignment = std::get<0>(*kept);
+      particles[k] = {&mesh, std::get<1>(*kept)};
+      shape.repaired = std::get<2>(*kept);
     } else {
       population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, alignments[k],
                                       template_particles, request.deformation, particles[k]);
+      if (k != 0) population.shapes[k].repaired = repair_by_geodesics(template_distances, mesh, particles[k].at).moved;
       if (checkpoint) {
         checkpoint->write(shape_entry("transfer", k), {{"mesh", request.meshes[k].string()},
                                                        {"alignment", alignment_json(population.shapes[k].alignment)},
+                                                       {"repaired", population.shapes[k].repaired},
                                                        {"locations", locations_json(particles[k].at)}});
       }
     }

@@ -1,12 +1,15 @@
 #pragma once
 // Particles that correspond across a population (issue 31): the template
 // (the first shape) is sampled by the default run (spread); every shape is
-// brought into the template's frame (mesh_alignment) and the template is
-// deformed onto it (template_deformation); each template particle goes to
-// the nearest point of each shape's surface, so particle i sits at the same
-// place, up to how well the shapes fit, on every shape; then every shape's
-// particles are refined together (joint_refinement): each shape evened out
-// while the correspondence holds. docs/CORRESPONDENCE.md.
+// brought into the template's frame (mesh_alignment; among the poses its fit
+// leaves open, the one relief_pose chooses) and the template is deformed
+// onto it (deformation_graph, or template_deformation); each template
+// particle goes to the nearest point of each shape's surface, so particle i
+// sits at the same place, up to how well the shapes fit, on every shape;
+// particles left where their geodesic distances to the others do not hold
+// are put back (geodesic_repair); then every shape's particles are refined
+// together (joint_refinement): each shape evened out while the
+// correspondence holds. docs/CORRESPONDENCE.md.
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -26,7 +29,7 @@ struct PopulationRequest {
   std::vector<std::filesystem::path> meshes;  // the first is the template
   RunRequest run;                             // the template's run (-n, seed, method, ...)
   JointRefinementOptions refinement;
-  TemplateDeformation deformation = TemplateDeformation::smooth;
+  TemplateDeformation deformation = TemplateDeformation::graph;
   bool quiet = false;
 };
 

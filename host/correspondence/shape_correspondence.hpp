@@ -20,6 +20,7 @@ struct ShapeCorrespondence {
   std::size_t vertices = 0;
   MeshAlignment alignment;
   MeshTopology topology;                 // components, boundary loops, genus
+  std::size_t repaired = 0;              // particles the transfer left out of place, put back (geodesic_repair)
   std::vector<InputLocation> locations;  // per particle: where it lies on this shape
   PointSet particles;                      // their positions, the shape's own coordinates
   DistributionQuality quality;             // how evenly they cover the shape, as `run` measures its own

@@ -150,6 +150,7 @@ nlohmann::json shape_json(const ShapeCorrespondence& shape) {
           {"vertices", shape.vertices},
           {"alignment", alignment_json(shape.alignment)},
           {"topology", topology_json(shape.topology)},
+          {"repaired", shape.repaired},
           {"locations", locations},
           {"quality", quality_json(shape.quality)}};
 }
@@ -160,6 +161,7 @@ ShapeCorrespondence shape_from_json(const nlohmann::json& json) {
   shape.vertices = json.at("vertices").get<std::size_t>();
   shape.alignment = alignment_from_json(json.at("alignment"));
   shape.topology = topology_from_json(json.at("topology"));
+  shape.repaired = json.at("repaired").get<std::size_t>();
   const nlohmann::json& rows = json.at("locations");
   shape.particles.resize(Eigen::Index(rows.size()), 3);
   for (std::size_t i = 0; i < rows.size(); ++i) {

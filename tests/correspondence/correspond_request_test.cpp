@@ -28,7 +28,7 @@ TEST(CorrespondRequest, ParamsHoldWhatWasAsked) {
   request.refinement.pack = false;
   request.refinement.packing_hold = 0.5;
   request.refinement.even_enough = 0.6;
-  request.deformation = TemplateDeformation::graph;
+  request.deformation = TemplateDeformation::smooth;
   const nlohmann::json params = correspond_params(request);
   EXPECT_EQ(params.at("particles"), 96);
   EXPECT_EQ(params.at("seed"), 7);
@@ -39,7 +39,7 @@ TEST(CorrespondRequest, ParamsHoldWhatWasAsked) {
   EXPECT_EQ(params.at("packing"), false);
   EXPECT_EQ(params.at("packing_hold"), 0.5);
   EXPECT_EQ(params.at("even_enough"), 0.6);
-  EXPECT_EQ(params.at("deformation"), "graph");
+  EXPECT_EQ(params.at("deformation"), "smooth");
   EXPECT_EQ(params.size(), 10u) << params.dump();
 }
 
@@ -60,7 +60,7 @@ TEST(CorrespondRequest, TheFingerprintFollowsEveryParameterButTheModelsOwn) {
       [](CorrespondRequest& r) { r.refinement.pack = false; },
       [](CorrespondRequest& r) { r.refinement.packing_hold = 0.3; },
       [](CorrespondRequest& r) { r.refinement.even_enough = 0.9; },
-      [](CorrespondRequest& r) { r.deformation = TemplateDeformation::graph; }};
+      [](CorrespondRequest& r) { r.deformation = TemplateDeformation::smooth; }};
   for (std::size_t k = 0; k < stage_changes.size(); ++k) {
     CorrespondRequest changed = base;
     stage_changes[k](changed);
