@@ -7,7 +7,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 work=$(cd "$work" && pwd)
 "$bin" generate --population 5 --family ellipsoid --vertices 900 --seed 3 --out-dir "$work/shapes" 2> /dev/null
-options=("$work/shapes" -n 48 --samples 10 --refine-iterations 60)
+# A script that runs correspond dozens of times may set `deformation`
+# (smooth: a fifth of the default graph's transfer time) before sourcing.
+options=("$work/shapes" -n 48 --samples 10 --refine-iterations 60 --deformation "${deformation:-graph}")
 "$bin" correspond "${options[@]}" --out "$work/reference" > /dev/null 2> "$work/reference.log"
 [ -d "$work/reference/checkpoint" ] && fail "a finished run left its checkpoint"
 
