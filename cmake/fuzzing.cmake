@@ -13,6 +13,8 @@ if(MESHPARTICLES_FUZZ)
   # cannot see inside an allocation.
   add_compile_definitions(_GLIBCXX_ASSERTIONS)
   add_library(fuzzed_mesh_input STATIC ${MESH_INPUT_SOURCES} ${GEODESIC_SOLVER_SOURCES})
+  # Eight files to a unit, as in the program's build (CMakeLists.txt).
+  set_target_properties(fuzzed_mesh_input PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
   target_include_directories(fuzzed_mesh_input PUBLIC host)
   find_package(EXPAT REQUIRED)  # the .vtp reader's XML and zlib, as in the program
   find_package(ZLIB REQUIRED)

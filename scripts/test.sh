@@ -23,7 +23,13 @@ step_done() {
 # pip's build of the wheel, which compiles the same files with the same
 # compiler and flags (scripts/test_python.sh), those objects back instead of
 # compiling them again. The cache lives in build/ unless CCACHE_DIR says where.
-export CCACHE_DIR="${CCACHE_DIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/build/ccache}"
+build_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/build"
+export CCACHE_DIR="${CCACHE_DIR:-$build_dir/ccache}"
+# The library compiles eight files to a unit (CMakeLists.txt), and a unit is
+# a file of its build directory: with build/ as ccache's base, the unit's
+# path is the same relative one in build/ and in pip's build/python-wheel,
+# so pip's build finds it in the cache too.
+export CCACHE_BASEDIR="$build_dir"
 # On a miss, ccache reads the compiler's own dependency list (-MD) rather
 # than running the preprocessor a second time.
 export CCACHE_DEPEND="${CCACHE_DEPEND:-true}"

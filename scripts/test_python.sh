@@ -20,7 +20,8 @@ echo "test_python: creating a venv in $VENV" >&2
 echo "test_python: installing $ROOT (the build's progress follows)" >&2
 # The wheel compiles as build/ did (its compiler, launcher and warnings), so
 # that where build/ went through ccache (scripts/test.sh), pip's build finds
-# every object there instead of compiling it again.
+# every object there instead of compiling it again (the library's units, files
+# of each build directory, only with CCACHE_BASEDIR=build/, as test.sh sets).
 same_compile=()
 for variable in CMAKE_CXX_COMPILER CMAKE_CXX_COMPILER_LAUNCHER MESHPARTICLES_STRICT; do
   value=$(sed -n "s/^$variable:[A-Z]*=//p" "$ROOT/build/CMakeCache.txt" 2>/dev/null || true)

@@ -25,7 +25,7 @@ bin=$1 shim=$2 disk_shim=$3 meshes=$4 work=$5
 fail() { echo "FAIL: $*" >&2; exit 1; }  # on stderr: it may come from inside $(which_set)
 rm -rf "$work" && mkdir -p "$work"
 work=$(cd "$work" && pwd)
-"$bin" generate --population 4 --family ellipsoid --vertices 600 --seed 5 --out-dir "$work/shapes" 2> /dev/null
+"$bin" generate --population 4 --family ellipsoid --vertices 300 --seed 5 --out-dir "$work/shapes" 2> /dev/null
 # The quicker deformation: these runs test the writes, not the fit.
 old_options=("$work/shapes" -n 24 --samples 10 --refine-iterations 20 --deformation smooth)
 new_options=("$work/shapes" -n 48 --samples 10 --refine-iterations 20 --deformation smooth)

@@ -5,9 +5,10 @@
 namespace meshparticles {
 
 // Arguments of naive_update and tiled_update, in order.
-enum UpdateArg : cl_uint {
-  kDistances, kVertexCount, kRingOffsets, kRingNeighbors, kPositions, kParticleCount, kColor, kColors,
-  kRankStacks, kInvTwoSigmaSq, kChosen, kClaims
+enum DirectSumArg : cl_uint {
+  kDirectDistances, kDirectVertexCount, kDirectRingOffsets, kDirectRingNeighbors, kDirectPositions,
+  kDirectParticleCount, kDirectColor, kDirectColors, kDirectRankStacks, kDirectInvTwoSigmaSq, kDirectChosen,
+  kDirectClaims
 };
 
 DirectSumBackend::DirectSumBackend(const DeviceDescription& device, const UpdateKernel& kernel,
@@ -22,12 +23,12 @@ DirectSumBackend::DirectSumBackend(const DeviceDescription& device, const Update
   distances_ = allocate(CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, distances.byte_size(), "the distance table",
                         distances.values().data());
   const float inv_two_sigma_sq = float(inputs.energy.inv_two_sigma_sq());
-  update_.setArg(kDistances, distances_);
-  update_.setArg(kVertexCount, vertex_count_);
-  update_.setArg(kRingOffsets, ring_offsets_);
-  update_.setArg(kRingNeighbors, ring_neighbors_);
-  update_.setArg(kInvTwoSigmaSq, inv_two_sigma_sq);
-  update_.setArg(kClaims, claims_);
+  update_.setArg(kDirectDistances, distances_);
+  update_.setArg(kDirectVertexCount, vertex_count_);
+  update_.setArg(kDirectRingOffsets, ring_offsets_);
+  update_.setArg(kDirectRingNeighbors, ring_neighbors_);
+  update_.setArg(kDirectInvTwoSigmaSq, inv_two_sigma_sq);
+  update_.setArg(kDirectClaims, claims_);
   particle_energies_.setArg(0, distances_);
   particle_energies_.setArg(1, vertex_count_);
   particle_energies_.setArg(4, inv_two_sigma_sq);
@@ -36,16 +37,16 @@ DirectSumBackend::DirectSumBackend(const DeviceDescription& device, const Update
 void DirectSumBackend::positions_changed(bool resized) {
   if (!resized) return;
   energies_ = allocate(CL_MEM_READ_WRITE, particle_count_ * sizeof(cl_float), "the particle energies");
-  update_.setArg(kPositions, positions_);
-  update_.setArg(kParticleCount, particle_count_);
-  update_.setArg(kChosen, chosen_);
+  update_.setArg(kDirectPositions, positions_);
+  update_.setArg(kDirectParticleCount, particle_count_);
+  update_.setArg(kDirectChosen, chosen_);
   particle_energies_.setArg(2, positions_);
   particle_energies_.setArg(3, particle_count_);
   particle_energies_.setArg(5, energies_);
 }
 
 cl::Event DirectSumBackend::enqueue_update(cl_uint color, cl_uint colors, cl_uint particles, cl_uint rank_stacks) {
-  return launch_update(update_, kColor, color, colors, particles, rank_stacks);
+  return launch_update(update_, kDirectColor, color, colors, particles, rank_stacks);
 }
 
 double DirectSumBackend::total_energy() {

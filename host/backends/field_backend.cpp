@@ -10,7 +10,7 @@
 namespace meshparticles {
 
 // Arguments of field_update, in order.
-enum UpdateArg : cl_uint {
+enum FieldUpdateArg : cl_uint {
   kField, kWeights, kVertexCount, kRingOffsets, kRingNeighbors, kOccupancy, kPositions, kParticleCount, kColor,
   kColors, kRankStacks, kChosen, kClaims
 };

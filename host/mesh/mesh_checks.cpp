@@ -62,7 +62,7 @@ std::vector<Triangle> triangulate_checked_faces(const PolygonSoup& soup, const s
   return triangles;
 }
 
-std::uint64_t edge_key(VertexId a, VertexId b) { return (std::uint64_t(a) << 32) | b; }
+std::uint64_t ordered_edge_key(VertexId a, VertexId b) { return (std::uint64_t(a) << 32) | b; }
 
 // A triangle with the same three vertices as an earlier one adds nothing to
 // a surface and would count its edges twice: dropped, or refused if strict.
@@ -70,7 +70,7 @@ void drop_repeated_triangles(std::vector<Triangle>& triangles, const std::string
                              std::vector<std::string>& warnings, bool strict) {
   struct SortedHash {
     std::size_t operator()(const Triangle& t) const {
-      return std::hash<std::uint64_t>()(edge_key(t[0], t[1]) * 0x9E3779B97F4A7C15ull ^ t[2]);
+      return std::hash<std::uint64_t>()(ordered_edge_key(t[0], t[1]) * 0x9E3779B97F4A7C15ull ^ t[2]);
     }
   };
   std::unordered_map<Triangle, std::size_t, SortedHash> first_with_vertices;
@@ -105,8 +105,8 @@ void check_edges(const std::vector<Triangle>& triangles, const std::string& labe
   for (const Triangle& t : triangles) {
     for (int k = 0; k < 3; ++k) {
       const VertexId a = t[k], b = t[(k + 1) % 3];
-      undirected.push_back(edge_key(std::min(a, b), std::max(a, b)));
-      directed.push_back(edge_key(a, b));
+      undirected.push_back(ordered_edge_key(std::min(a, b), std::max(a, b)));
+      directed.push_back(ordered_edge_key(a, b));
     }
   }
   std::sort(undirected.begin(), undirected.end());

@@ -45,7 +45,7 @@ struct Piece {
   std::array<Weights, 3> weights;  // per corner
 };
 
-std::uint64_t edge_key(VertexId a, VertexId b) {
+std::uint64_t split_edge_key(VertexId a, VertexId b) {
   return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
 }
 
@@ -75,7 +75,7 @@ class Refiner {
     for (const Piece& piece : pieces_) {
       for (int k = 0; k < 3; ++k) {
         const VertexId a = piece.corners[(k + 1) % 3], b = piece.corners[(k + 2) % 3];
-        if (seen.try_emplace(edge_key(a, b), true).second && split(a, b)) ++count;
+        if (seen.try_emplace(split_edge_key(a, b), true).second && split(a, b)) ++count;
       }
     }
     return count;
@@ -112,7 +112,7 @@ class Refiner {
  private:
   VertexId midpoint(const Piece& piece, VertexId a, VertexId b, const Weights& weights,
                     std::unordered_map<std::uint64_t, VertexId>& midpoint_of_edge) {
-    const auto [it, created] = midpoint_of_edge.try_emplace(edge_key(a, b), VertexId(positions_.size()));
+    const auto [it, created] = midpoint_of_edge.try_emplace(split_edge_key(a, b), VertexId(positions_.size()));
     if (!created) return it->second;
     // Placed by its weights, so that position and weights agree exactly.
     const Triangle& corners = input_.triangles()[piece.input_triangle];

@@ -30,7 +30,7 @@ std::set<std::string> all_file_names(const std::vector<std::string>& shapes) {
 }
 
 // Exact coordinates (common/exact_number.hpp): the files read back to the model's points.
-void write_points(std::ostream& out, const PointSet& points) {
+void write_point_set(std::ostream& out, const PointSet& points) {
   for (Eigen::Index i = 0; i < points.rows(); ++i) out << exact_triple(points(i, 0), points(i, 1), points(i, 2)) << "\n";
 }
 
@@ -115,9 +115,11 @@ void write_shape_model(const std::filesystem::path& directory, const ShapeModelO
   const std::vector<std::string> aligned_names = aligned_file_names(outputs.shapes);
   write_directory_atomically(directory, all_file_names(outputs.shapes), [&](const std::filesystem::path& staging) {
     for (std::size_t s = 0; s < aligned_names.size(); ++s) {
-      write_new_file(staging / aligned_names[s], [&](std::ostream& out) { write_points(out, alignment.aligned[s]); });
+      write_new_file(staging / aligned_names[s],
+                     [&](std::ostream& out) { write_point_set(out, alignment.aligned[s]); });
     }
-    write_new_file(staging / "mean.particles", [&](std::ostream& out) { write_points(out, unflattened(model.mean)); });
+    write_new_file(staging / "mean.particles",
+                   [&](std::ostream& out) { write_point_set(out, unflattened(model.mean)); });
     write_new_file(staging / "modes.csv", [&](std::ostream& out) {
       out << "mode,variance,explained,cumulative\n";
       for (Eigen::Index k = 0; k < model.variances.size(); ++k) {

@@ -30,7 +30,7 @@ namespace {
 enum class PlyType { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
 enum class PlyEncoding { ascii, binary_little_endian, binary_big_endian };
 
-std::optional<PlyType> parse_type(std::string_view name) {
+std::optional<PlyType> parse_ply_type(std::string_view name) {
   static constexpr std::pair<std::string_view, PlyType> kNames[] = {
       {"char", PlyType::int8},      {"int8", PlyType::int8},       {"uchar", PlyType::uint8},
       {"uint8", PlyType::uint8},    {"short", PlyType::int16},     {"int16", PlyType::int16},
@@ -198,13 +198,13 @@ class PlyReader {
     auto type_name = tokens.next();
     if (type_name == "list") {
       const auto count_type_name = tokens.next();
-      property.list_count_type = count_type_name ? parse_type(*count_type_name) : std::nullopt;
+      property.list_count_type = count_type_name ? parse_ply_type(*count_type_name) : std::nullopt;
       if (!property.list_count_type || !is_integer_type(*property.list_count_type)) {
         header_error("a list's count type must be an integer type, found " + quoted(count_type_name.value_or("")));
       }
       type_name = tokens.next();
     }
-    const auto type = type_name ? parse_type(*type_name) : std::nullopt;
+    const auto type = type_name ? parse_ply_type(*type_name) : std::nullopt;
     const auto name = tokens.next();
     if (!type || !name) header_error("expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
     property.type = *type;

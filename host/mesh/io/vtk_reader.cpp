@@ -37,7 +37,7 @@ namespace meshparticles {
 
 namespace {
 
-std::optional<ValueType> parse_type(std::string_view name) {
+std::optional<ValueType> parse_vtk_type(std::string_view name) {
   static constexpr std::pair<std::string_view, ValueType> kNames[] = {
       {"bit", ValueType::uint8},  // not a numeric array for geometry; refused below by size 0
       {"char", ValueType::int8},          {"unsigned_char", ValueType::uint8},
@@ -153,7 +153,7 @@ class VtkReader {
 
   ValueType header_type() { return type_of(header_word("a data type")); }
   ValueType type_of(std::string_view word) {
-    const auto type = parse_type(word);
+    const auto type = parse_vtk_type(word);
     if (!type || word == "bit") fail("unknown data type " + quoted(word));
     return *type;
   }

@@ -199,7 +199,7 @@ std::vector<unsigned char> decode_base64(std::string_view text, std::size_t max_
   return bytes;
 }
 
-std::optional<ValueType> parse_type(std::string_view name) {
+std::optional<ValueType> parse_vtp_type(std::string_view name) {
   static constexpr std::pair<std::string_view, ValueType> kNames[] = {
       {"Int8", ValueType::int8},     {"UInt8", ValueType::uint8},     {"Int16", ValueType::int16},
       {"UInt16", ValueType::uint16}, {"Int32", ValueType::int32},     {"UInt32", ValueType::uint32},
@@ -423,7 +423,7 @@ class VtpReader {
     std::vector<long long> integers;
   };
   Values values(const DataArray& array, std::size_t expected, bool integers, const std::string& what) {
-    const auto type = parse_type(value_or(array.attributes, "type", ""));
+    const auto type = parse_vtp_type(value_or(array.attributes, "type", ""));
     if (!type) fail(what + ": unknown type " + quoted(value_or(array.attributes, "type", "")));
     if (integers && (*type == ValueType::float32 || *type == ValueType::float64)) fail(what + ": not an integer type");
     const std::string format = value_or(array.attributes, "format", "ascii");
