@@ -18,9 +18,9 @@ namespace meshparticles {
 // A pose's agreement (MeshAlignment::Relief) within this of the best
 // other's, or under kWeakRelief in every pose, is warned of
 // (population_doubts). Measured at n = 256: on the one-way bent family the
-// right pose agrees 0.61 to 0.86 and the half turn 0.15 to 0.30 less; on
+// right pose agrees 0.61 to 0.86 and the half turn 0.1 to 0.3 less; on
 // FAUST's poses the right pose 0.46 to 0.96, the turned 0.20 to 0.67 less,
-// and one shape (arms spread) 0.20 at best, turned.
+// and one shape (arms overhead) 0.20 at best, turned.
 inline constexpr double kCloseRelief = 0.1;
 inline constexpr double kWeakRelief = 0.3;
 

@@ -47,7 +47,7 @@ TEST(PopulationDoubts, AnotherTopologyAndAnOpenPoseNameTheirShapes) {
 
 // Where the relief chose, its margin decides, not the rigid fit's: the
 // one-way bent family's right poses fit within 3 to 9% of their half turns
-// (warned of before, every shape), but lay the features 0.15 to 0.30 better.
+// (warned of before, every shape), but lay the features 0.1 to 0.3 better.
 TEST(PopulationDoubts, TheReliefsMarginDecidesWhereItChose) {
   std::vector<ShapeCorrespondence> shapes = {sphere_shape("a.off", 8), sphere_shape("b.off", 8),
                                              sphere_shape("c.off", 8), sphere_shape("d.off", 8)};
