@@ -11,6 +11,7 @@
 
 #include <Eigen/Sparse>
 
+#include "correspondence/vertex_fields.hpp"
 #include "geodesics/solver_factory.hpp"
 #include "mesh/nearest_surface_point.hpp"
 #include "mesh/point_cloud_tree.hpp"
@@ -44,22 +45,6 @@ std::vector<Vec3> positions_of(const PointSet& points) {
 std::size_t node_count(std::size_t vertices, const DeformationGraphOptions& options) {
   const std::size_t wanted = std::clamp(vertices / options.vertices_per_node, options.min_nodes, options.max_nodes);
   return std::min(wanted, vertices);
-}
-
-// Area-weighted vertex normals of `points` with `triangles` (zero where a
-// vertex's triangles have no area: such a vertex agrees with no normal).
-PointSet vertex_normals(const std::vector<Triangle>& triangles, const PointSet& points) {
-  PointSet normals = PointSet::Zero(points.rows(), 3);
-  for (const Triangle& t : triangles) {
-    const Eigen::RowVector3d a = points.row(t[0]), b = points.row(t[1]), c = points.row(t[2]);
-    const Eigen::RowVector3d n = (b - a).cross(c - a);
-    for (const VertexId v : t) normals.row(Eigen::Index(v)) += n;
-  }
-  for (Eigen::Index v = 0; v < normals.rows(); ++v) {
-    const double length = normals.row(v).norm();
-    if (length > 0) normals.row(v) /= length;
-  }
-  return normals;
 }
 
 // The normal equations' blocks: one 12 x 12 block for each pair of nodes
@@ -406,11 +391,21 @@ DeformationGraph build_deformation_graph(const SurfaceMesh& mesh, const Deformat
   return graph;
 }
 
+DeformationGraph template_graph(const SurfaceMesh& template_mesh, const PointSet& template_points,
+                                const DeformationGraphOptions& options) {
+  return build_deformation_graph(SurfaceMesh(positions_of(template_points), template_mesh.triangles()), options);
+}
+
 GraphFit deform_by_graph(const SurfaceMesh& template_mesh, const PointSet& template_points,
                          const SurfaceMesh& shape_mesh, const PointSet& shape_points,
                          const DeformationGraphOptions& options) {
-  const SurfaceMesh template_common(positions_of(template_points), template_mesh.triangles());
-  const DeformationGraph graph = build_deformation_graph(template_common, options);
+  return deform_by_graph(template_graph(template_mesh, template_points, options), template_mesh, template_points,
+                         shape_mesh, shape_points, options);
+}
+
+GraphFit deform_by_graph(const DeformationGraph& graph, const SurfaceMesh& template_mesh,
+                         const PointSet& template_points, const SurfaceMesh& shape_mesh, const PointSet& shape_points,
+                         const DeformationGraphOptions& options) {
   // In node spacings about the template's centroid: the weights mean the
   // same at any scale.
   const Eigen::RowVector3d centre = template_points.colwise().mean();

@@ -87,6 +87,11 @@ struct DeformationGraph {
 
 DeformationGraph build_deformation_graph(const SurfaceMesh& mesh, const DeformationGraphOptions& options = {});
 
+// The graph on `template_mesh` as it lies at `template_points` (ids as its
+// vertices): built once, it bends the template onto any number of shapes.
+DeformationGraph template_graph(const SurfaceMesh& template_mesh, const PointSet& template_points,
+                                const DeformationGraphOptions& options = {});
+
 struct GraphFit {
   PointSet moved;          // the template's vertices on the shape, ids as the template's
   double rms = 0;          // of the distances to the other surface, both ways (below)
@@ -100,6 +105,12 @@ struct GraphFit {
 // and every shape vertex's to the moved template's.
 GraphFit deform_by_graph(const SurfaceMesh& template_mesh, const PointSet& template_points,
                          const SurfaceMesh& shape_mesh, const PointSet& shape_points,
+                         const DeformationGraphOptions& options = {});
+
+// The same with the template's graph given (template_graph of these
+// template points, at these options).
+GraphFit deform_by_graph(const DeformationGraph& graph, const SurfaceMesh& template_mesh,
+                         const PointSet& template_points, const SurfaceMesh& shape_mesh, const PointSet& shape_points,
                          const DeformationGraphOptions& options = {});
 
 }  // namespace meshparticles

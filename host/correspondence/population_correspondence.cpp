@@ -22,7 +22,6 @@
 #include "correspondence/population_doubts.hpp"
 #include "correspondence/relief_pose.hpp"
 #include "correspondence/shape_records.hpp"
-#include "correspondence/surface_relief.hpp"
 #include "correspondence/template_deformation.hpp"
 #include "mesh/nearest_on_triangle.hpp"
 #include "mesh/nearest_surface_point.hpp"
@@ -71,10 +70,11 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
 // the surface, found exactly in the shape's own coordinates: a similarity
 // keeps the nearest point nearest). The template's particles are points of
 // its triangles by their corners' weights, so that they follow it as it
-// deforms.
+// deforms: by `graph`, the template's deformation graph, or where that is
+// null by the smoothed displacement (template_deformation).
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const SurfaceMesh& template_mesh,
                              const PointSet& template_points, const MeshAlignment& alignment,
-                             const std::vector<SurfaceLocation>& template_particles, TemplateDeformation deformation,
+                             const std::vector<SurfaceLocation>& template_particles, const DeformationGraph* graph,
                              ShapeParticles& carried) {
   ShapeCorrespondence shape;
   shape.mesh = file;
@@ -85,9 +85,8 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   const Eigen::Matrix3d& stretch = shape.alignment.stretch;
   const PointSet common = (to_common.apply(vertex_points(mesh)) * stretch.transpose()).rowwise() +
                           shape.alignment.shift.transpose();
-  const PointSet deformed = deformation == TemplateDeformation::graph
-                                ? deform_by_graph(template_mesh, template_points, mesh, common).moved
-                                : deform_template(template_mesh, template_points, common);
+  const PointSet deformed = graph ? deform_by_graph(*graph, template_mesh, template_points, mesh, common).moved
+                                 : deform_template(template_mesh, template_points, common);
   const Eigen::Matrix3d unstretch = stretch.inverse();
   const NearestSurfacePoint nearest(mesh);
   carried.mesh = &mesh;
@@ -280,8 +279,7 @@ std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const s
                                        const PointSet& template_points, const std::vector<char>& turned_by_body) {
   const std::vector<std::size_t> owned = share.owned();
   const PointsTree template_tree(template_points);
-  const SurfaceMesh& template_mesh = *meshes.front();
-  const Eigen::VectorXd template_relief = surface_relief(template_mesh, template_points);
+  const ReliefTemplate relief_template(*meshes.front(), template_points);
   std::vector<MeshAlignment> alignments(meshes.size());
   SharedProgress fitting("align", owned.size(), request.quiet);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
@@ -294,7 +292,7 @@ std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const s
       alignments[k] = poses.front();
     } else {
       const ReliefChoice choice =
-          choose_pose_by_relief(template_mesh, template_points, template_relief, *meshes[k], poses);
+          choose_pose_by_relief(relief_template, *meshes[k], poses);
       alignments[k] = poses[choice.chosen];
       alignments[k].relief = choice.relief;
     }
@@ -415,7 +413,15 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   const std::vector<std::size_t> owned = share.owned();
   const std::vector<MeshAlignment> alignments =
       align_population(request, meshes, share, template_frame, template_points);
-  const TemplateGeodesics template_distances = template_geodesics(template_mesh, template_particles);
+  // The template's side of the transfer, made for the first shape not
+  // resumed from the checkpoint (none, where every shape is).
+  std::once_flag template_side;
+  std::optional<DeformationGraph> graph;
+  TemplateGeodesics template_distances;
+  const auto make_template_side = [&] {
+    if (request.deformation == TemplateDeformation::graph) graph = template_graph(template_mesh, template_points);
+    template_distances = template_geodesics(template_mesh, template_particles);
+  };
 
   // Each process's shapes, each on a thread: the template carried onto them.
   population.shapes.resize(count);
@@ -439,8 +445,9 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
       particles[k] = {&mesh, std::get<1>(*kept)};
       shape.repaired = std::get<2>(*kept);
     } else {
+      std::call_once(template_side, make_template_side);
       population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, alignments[k],
-                                      template_particles, request.deformation, particles[k]);
+                                      template_particles, graph ? &*graph : nullptr, particles[k]);
       if (k != 0) population.shapes[k].repaired = repair_by_geodesics(template_distances, mesh, particles[k].at).moved;
       if (checkpoint) {
         checkpoint->write(shape_entry("transfer", k), {{"mesh", request.meshes[k].string()},

@@ -1,6 +1,5 @@
 #include "correspondence/relief_pose.hpp"
 
-#include "correspondence/deformation_graph.hpp"
 #include "correspondence/surface_relief.hpp"
 
 namespace meshparticles {
@@ -16,8 +15,13 @@ PointSet in_shape_frame(const MeshAlignment& pose, const PointSet& common) {
 
 }  // namespace
 
-ReliefChoice choose_pose_by_relief(const SurfaceMesh& template_mesh, const PointSet& template_points,
-                                   const Eigen::VectorXd& template_relief, const SurfaceMesh& mesh,
+ReliefTemplate::ReliefTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points)
+    : mesh(template_mesh),
+      points(template_points),
+      relief(surface_relief(template_mesh, template_points)),
+      graph(template_graph(template_mesh, template_points, coarse_deformation_graph_options())) {}
+
+ReliefChoice choose_pose_by_relief(const ReliefTemplate& reference, const SurfaceMesh& mesh,
                                    const std::vector<MeshAlignment>& poses) {
   const PointSet own = vertex_points(mesh);
   const Eigen::VectorXd relief = surface_relief(mesh, own);
@@ -27,10 +31,11 @@ ReliefChoice choose_pose_by_relief(const SurfaceMesh& template_mesh, const Point
     const PointSet placed = pose.to_common.apply(own);
     const PointsTree tree(placed);
     const PointSet moved =
-        deform_by_graph(template_mesh, template_points, mesh, placed, coarse_deformation_graph_options()).moved;
+        deform_by_graph(reference.graph, reference.mesh, reference.points, mesh, placed, coarse_deformation_graph_options())
+            .moved;
     std::vector<Eigen::Index> pairs(std::size_t(moved.rows()));
     for (Eigen::Index v = 0; v < moved.rows(); ++v) pairs[std::size_t(v)] = tree.nearest(moved.row(v)).front();
-    agreements.push_back(relief_agreement(template_relief, relief, pairs));
+    agreements.push_back(relief_agreement(reference.relief, relief, pairs));
     ends.push_back(in_shape_frame(pose, moved));
   }
   ReliefChoice choice;

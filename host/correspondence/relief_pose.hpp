@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "correspondence/deformation_graph.hpp"
 #include "correspondence/mesh_alignment.hpp"
 #include "mesh/surface_mesh.hpp"
 
@@ -34,11 +35,20 @@ struct ReliefChoice {
   MeshAlignment::Relief relief{true};
 };
 
-// `poses`: the shape's open poses, rigidly fitted (the fit's choice first);
-// `template_points`: the template's vertices in the common frame, and
-// `template_relief` its surface_relief there. Ties keep the earlier pose.
-ReliefChoice choose_pose_by_relief(const SurfaceMesh& template_mesh, const PointSet& template_points,
-                                   const Eigen::VectorXd& template_relief, const SurfaceMesh& mesh,
+// The template's side of the choice, the same for every shape: its
+// vertices in the common frame, their surface_relief, and its coarse
+// deformation graph there.
+struct ReliefTemplate {
+  ReliefTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points);
+  const SurfaceMesh& mesh;
+  PointSet points;
+  Eigen::VectorXd relief;
+  DeformationGraph graph;
+};
+
+// `poses`: the shape's open poses, rigidly fitted (the fit's choice first).
+// Ties keep the earlier pose.
+ReliefChoice choose_pose_by_relief(const ReliefTemplate& reference, const SurfaceMesh& mesh,
                                    const std::vector<MeshAlignment>& poses);
 
 }  // namespace meshparticles

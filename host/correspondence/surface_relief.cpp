@@ -3,36 +3,23 @@
 #include <algorithm>
 #include <cmath>
 
+#include "correspondence/vertex_fields.hpp"
+
 namespace meshparticles {
 
 Eigen::VectorXd surface_relief(const SurfaceMesh& mesh, const PointSet& points) {
   const Eigen::Index count = points.rows();
-  double area = 0;
-  PointSet normals = PointSet::Zero(count, 3);
-  for (const Triangle& t : mesh.triangles()) {
-    const Eigen::RowVector3d a = points.row(Eigen::Index(t[0]));
-    const Eigen::RowVector3d n = (points.row(Eigen::Index(t[1])) - a).cross(points.row(Eigen::Index(t[2])) - a);
-    area += 0.5 * n.norm();
-    for (const VertexId v : t) normals.row(Eigen::Index(v)) += n;
-  }
-  normals.rowwise().normalize();
+  const PointSet normals = vertex_normals(mesh.triangles(), points);
   // One-ring averaging spreads like diffusion: after r rounds over edges of
   // length e, about sqrt(r / 2) e; e^2 is about 1.15 area / vertices (an
-  // even mesh's), so the reach follows the area whatever the resolution.
-  const double edge_squared = 1.15 * area / double(std::max<Eigen::Index>(count, 1));
-  // At most 400 rounds: past 90,000 vertices the reach narrows rather than
-  // the cost growing with the square of the resolution.
-  const int rounds = std::clamp(int(std::lround(2 * kReliefScale * kReliefScale * area / edge_squared)), 1, 400);
+  // even mesh's), so r = 2 scale^2 vertices / 1.15 reaches kReliefScale of
+  // sqrt(area) whatever the resolution. At most 400 rounds: past 90,000
+  // vertices the reach narrows rather than the cost growing with the
+  // square of the resolution.
+  const int rounds =
+      std::clamp(int(std::lround(2 * kReliefScale * kReliefScale * double(count) / 1.15)), 1, 400);
   PointSet smooth = points;
-  PointSet next(count, 3);
-  for (int round = 0; round < rounds; ++round) {
-    for (VertexId v = 0; v < VertexId(count); ++v) {
-      Eigen::RowVector3d sum = smooth.row(Eigen::Index(v));
-      for (const VertexId w : mesh.one_ring(v)) sum += smooth.row(Eigen::Index(w));
-      next.row(Eigen::Index(v)) = sum / double(mesh.valence(v) + 1);
-    }
-    smooth.swap(next);
-  }
+  smooth_over(mesh, smooth, rounds);
   Eigen::VectorXd relief(count);
   for (Eigen::Index v = 0; v < count; ++v) relief(v) = (points.row(v) - smooth.row(v)).dot(normals.row(v));
   return relief;

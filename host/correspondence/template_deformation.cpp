@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "correspondence/vertex_fields.hpp"
 #include "mesh/point_cloud_tree.hpp"
 
 namespace meshparticles {
@@ -12,19 +13,6 @@ namespace {
 // stage: the field is smooth at first (the whole shape follows), finer later.
 constexpr std::array<int, 4> kSmoothingRounds = {64, 32, 16, 8};
 constexpr int kFitsPerStage = 8;
-
-// Each vertex's displacement replaced by its one-ring's mean, `rounds` times.
-void smooth_over(const SurfaceMesh& mesh, PointSet& field, int rounds) {
-  PointSet next(field.rows(), 3);
-  for (int round = 0; round < rounds; ++round) {
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
-      Eigen::RowVector3d sum = field.row(Eigen::Index(v));
-      for (const VertexId w : mesh.one_ring(v)) sum += field.row(Eigen::Index(w));
-      next.row(Eigen::Index(v)) = sum / double(mesh.valence(v) + 1);
-    }
-    field.swap(next);
-  }
-}
 
 }  // namespace
 

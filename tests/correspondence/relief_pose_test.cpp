@@ -64,13 +64,13 @@ TEST(SurfaceRelief, AgreementIsTheCorrelationOverPairs) {
 TEST(ReliefPose, TheRightPoseLaysTheTemplatesFeaturesOverTheShapes) {
   const SurfaceMesh template_mesh = bumped_sphere_mesh(1500, 0.2);
   const PointSet template_points = vertex_points(template_mesh);
-  const Eigen::VectorXd template_relief = surface_relief(template_mesh, template_points);
+  const ReliefTemplate reference(template_mesh, template_points);
   const SurfaceMesh shape = bumped_sphere_mesh(2200, 0.15);  // lower bumps, meshed apart
   // Either order: the choice does not lean on the fit's.
   for (const bool right_first : {true, false}) {
     const std::vector<MeshAlignment> poses = right_first ? std::vector{posed(Eigen::Matrix3d::Identity()), posed(kHalfTurn)}
                                                          : std::vector{posed(kHalfTurn), posed(Eigen::Matrix3d::Identity())};
-    const ReliefChoice choice = choose_pose_by_relief(template_mesh, template_points, template_relief, shape, poses);
+    const ReliefChoice choice = choose_pose_by_relief(reference, shape, poses);
     EXPECT_EQ(choice.chosen, right_first ? 0u : 1u);
     EXPECT_TRUE(choice.relief.measured);
     EXPECT_GT(choice.relief.agreement, 0.8);
@@ -84,7 +84,7 @@ TEST(ReliefPose, AShapeWithoutFeaturesLeavesThePosesClose) {
   const PointSet template_points = vertex_points(template_mesh);
   const SurfaceMesh shape = generate_mesh_at("sphere", 2200);
   const ReliefChoice choice =
-      choose_pose_by_relief(template_mesh, template_points, surface_relief(template_mesh, template_points), shape,
+      choose_pose_by_relief(ReliefTemplate(template_mesh, template_points), shape,
                             {posed(Eigen::Matrix3d::Identity()), posed(kHalfTurn)});
   // Nothing to lay over anything: warned of either way (population_doubts).
   EXPECT_TRUE(choice.relief.agreement < kWeakRelief || choice.relief.runner_up > choice.relief.agreement - kCloseRelief)

@@ -1,0 +1,31 @@
+#include "correspondence/vertex_fields.hpp"
+
+namespace meshparticles {
+
+PointSet vertex_normals(const std::vector<Triangle>& triangles, const PointSet& points) {
+  PointSet normals = PointSet::Zero(points.rows(), 3);
+  for (const Triangle& t : triangles) {
+    const Eigen::RowVector3d a = points.row(Eigen::Index(t[0]));
+    const Eigen::RowVector3d n = (points.row(Eigen::Index(t[1])) - a).cross(points.row(Eigen::Index(t[2])) - a);
+    for (const VertexId v : t) normals.row(Eigen::Index(v)) += n;
+  }
+  for (Eigen::Index v = 0; v < normals.rows(); ++v) {
+    const double length = normals.row(v).norm();
+    if (length > 0) normals.row(v) /= length;
+  }
+  return normals;
+}
+
+void smooth_over(const SurfaceMesh& mesh, PointSet& field, int rounds) {
+  PointSet next(field.rows(), 3);
+  for (int round = 0; round < rounds; ++round) {
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+      Eigen::RowVector3d sum = field.row(Eigen::Index(v));
+      for (const VertexId w : mesh.one_ring(v)) sum += field.row(Eigen::Index(w));
+      next.row(Eigen::Index(v)) = sum / double(mesh.valence(v) + 1);
+    }
+    field.swap(next);
+  }
+}
+
+}  // namespace meshparticles
