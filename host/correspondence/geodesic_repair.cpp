@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 
+#include "common/median.hpp"
 #include "geodesics/solver_factory.hpp"
 #include "mesh/vertex_triangles.hpp"
 
@@ -53,13 +54,6 @@ std::vector<double> distances_from(const GeodesicSolver& solver, SolverScratch& 
   return field;
 }
 
-double median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
 }  // namespace
 
 TemplateGeodesics template_geodesics(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles) {
@@ -91,6 +85,16 @@ GeodesicRepair repair_by_geodesics(const TemplateGeodesics& reference, const Sur
   const VertexTriangles around = vertex_triangles(mesh.triangles(), mesh.vertex_count());
   std::vector<std::vector<double>> fields(anchors);
   std::vector<char> moved(count, 0), ever_moved(count, 0);
+  // How far particle i's distances to the `trusted` anchors are from the
+  // template's: the median anchor's miss.
+  const auto inconsistency = [&](std::size_t i, const std::vector<char>& trusted) {
+    std::vector<double> misses;
+    for (std::size_t a = 0; a < anchors; ++a) {
+      if (!trusted[a]) continue;
+      misses.push_back(std::abs(distance_at(fields[a], mesh, particles[i]) - reference.between[a][i]));
+    }
+    return median(misses);
+  };
   double out_of_place = kOutOfPlace;
   for (int round = 0; round < kRounds; ++round) {
     // Each anchor's distances on the shape, from where it now lies.
@@ -99,15 +103,6 @@ GeodesicRepair repair_by_geodesics(const TemplateGeodesics& reference, const Sur
         fields[a] = distances_from(*solver, scratch, mesh, particles[reference.anchors[a]], unit);
       }
     }
-    // How far each particle's distances to the anchors are from the template's.
-    const auto inconsistency = [&](std::size_t i, const std::vector<char>& trusted) {
-      std::vector<double> misses;
-      for (std::size_t a = 0; a < anchors; ++a) {
-        if (!trusted[a]) continue;
-        misses.push_back(std::abs(distance_at(fields[a], mesh, particles[i]) - reference.between[a][i]));
-      }
-      return median(misses);
-    };
     std::vector<char> trusted(anchors, 1);
     std::vector<double> anchor_misses(anchors);
     for (std::size_t a = 0; a < anchors; ++a) anchor_misses[a] = inconsistency(reference.anchors[a], trusted);
@@ -118,7 +113,8 @@ GeodesicRepair repair_by_geodesics(const TemplateGeodesics& reference, const Sur
     std::fill(moved.begin(), moved.end(), 0);
     std::size_t moved_now = 0;
     for (std::size_t i = 0; i < count; ++i) {
-      if (inconsistency(i, trusted) < out_of_place) continue;
+      const double before = inconsistency(i, trusted);
+      if (before < out_of_place) continue;
       // The vertex whose distances to the trusted anchors fit the template's best.
       VertexId best = 0;
       double best_cost = std::numeric_limits<double>::infinity();
@@ -138,8 +134,7 @@ GeodesicRepair repair_by_geodesics(const TemplateGeodesics& reference, const Sur
       for (std::size_t a = 0; a < anchors; ++a) {
         if (trusted[a]) misses_there.push_back(std::abs(fields[a][best] - reference.between[a][i]));
       }
-      const double before = inconsistency(i, trusted), after = median(misses_there);
-      if (!(after * kGain < before)) continue;
+      if (!(median(misses_there) * kGain < before)) continue;
       SurfaceLocation& at = particles[i];
       at.triangle = around.around(best).front();
       const Triangle& corners = mesh.triangles()[at.triangle];
@@ -150,15 +145,10 @@ GeodesicRepair repair_by_geodesics(const TemplateGeodesics& reference, const Sur
     }
     if (moved_now == 0) break;
   }
+  // Every anchor's field was computed in the first round.
+  const std::vector<char> every(anchors, 1);
   std::vector<double> after;
-  for (std::size_t i = 0; i < count; ++i) {
-    std::vector<double> misses;
-    for (std::size_t a = 0; a < anchors; ++a) {
-      if (fields[a].empty()) continue;
-      misses.push_back(std::abs(distance_at(fields[a], mesh, particles[i]) - reference.between[a][i]));
-    }
-    after.push_back(median(misses));
-  }
+  for (std::size_t i = 0; i < count; ++i) after.push_back(inconsistency(i, every));
   repair.inconsistency = median(after);
   repair.moved = std::size_t(std::count(ever_moved.begin(), ever_moved.end(), 1));
   return repair;
