@@ -23,9 +23,6 @@ constexpr Eigen::Index kMaxFitPoints = 4000;  // vertices fitted, evenly strided
 // given is the better guess.
 constexpr double kGivenPoseKept = 1.02;
 constexpr std::size_t kTrialIterations = 8;
-// Two shapes compared by fitted_shape_distance: the points and iterations of its fit.
-constexpr Eigen::Index kComparedFitPoints = 500;
-constexpr std::size_t kComparedFitIterations = 30;
 // Trials that end this far from the chosen pose are another pose.
 constexpr double kOtherPoseDegrees = 30;
 
@@ -151,15 +148,6 @@ double one_way_squared(const PointSet& a, const PointSet& b, const PointsTree& b
 
 double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree) {
   return std::sqrt(0.5 * (one_way_squared(a, b, b_tree) + one_way_squared(b, a, a_tree)));
-}
-
-double fitted_shape_distance(const PointSet& a, const PointSet& b, const PointsTree& b_tree) {
-  // The map is fitted on every k-th point: a few hundred fix 12 numbers.
-  const PointSet sparse = every_kth_row(a, std::max<Eigen::Index>(1, a.rows() / kComparedFitPoints));
-  const ClosestPointFit fit = affine_closest_point_fit(sparse, b, b_tree, kComparedFitIterations);
-  const PointSet fitted = (a * fit.linear.transpose()).rowwise() + fit.translation.transpose();
-  const PointsTree fitted_tree(fitted);
-  return shape_distance(fitted, fitted_tree, b, b_tree);
 }
 
 PointSet alignment_points(const SurfaceMesh& mesh) { return fit_points(vertex_points(mesh)); }
@@ -311,13 +299,6 @@ MeshAlignment fit_pose(const PoseTrials& found, std::size_t chosen, const PointS
     alignment.runner_up = {trial.rms / start.rms, angle, trial.rms};
   }
   return alignment;
-}
-
-PointSet stretched_pose(const PointSet& points, const MeshAlignment& pose, const PointSet& template_points,
-                        const PointsTree& template_tree) {
-  const PointSet posed = pose.to_common.apply(points);
-  const ClosestPointFit fit = affine_closest_point_fit(posed, template_points, template_tree, kMaxIterations);
-  return (posed * fit.linear.transpose()).rowwise() + fit.translation.transpose();
 }
 
 MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& template_points,

@@ -89,10 +89,6 @@ using PointsTree = MatrixRowTree<PointSet>;
 // other's nearest, the two means of squares averaged).
 double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree);
 
-// shape_distance after `a` is fitted onto `b` by a short affine
-// closest-point fit: what differs once pose and proportions are taken out.
-double fitted_shape_distance(const PointSet& a, const PointSet& b, const PointsTree& b_tree);
-
 // A population's shapes as first aligned (each a shape's alignment_points
 // in the common frame), with a k-d tree over each, built once for the
 // medoid and for every shape's distance to the population (searched from
@@ -153,12 +149,6 @@ PoseTrials pose_trials(const SurfaceMesh& mesh, const PointSet& template_points,
 // start, and its runner-up among the other trials.
 MeshAlignment fit_pose(const PoseTrials& trials, std::size_t chosen, const PointSet& template_points,
                        const PointsTree& template_tree);
-
-// `points` (a shape's, as PoseTrials holds them) in `pose` (fit_pose), then
-// stretched onto the template by an affine closest-point fit: what is left
-// are the shape's features.
-PointSet stretched_pose(const PointSet& points, const MeshAlignment& pose, const PointSet& template_points,
-                        const PointsTree& template_tree);
 
 // pose_trials, then fit_pose of the chosen trial.
 MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& template_points,
