@@ -13,6 +13,7 @@
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
 #include "common/worker_threads.hpp"
+#include "geodesics/memory_guard.hpp"
 #include "particles/surface_voronoi.hpp"
 
 namespace meshparticles {
@@ -50,6 +51,9 @@ constexpr std::size_t kStallSweeps = 2;
 // A move's length along the surface is taken as at most this many times
 // its straight length where the cover is bounded without a march.
 constexpr double kMoveSlack = 1.1;
+// What a march's scratch holds per vertex (SolverScratch::fit: accepted,
+// heap_slot, origin, distances).
+constexpr std::uint64_t kScratchBytesPerVertex = 1 + 4 + 4 + 8;
 
 // work(k, slot) for k = 0 .. count - 1 on up to `threads` threads (the
 // caller's among them), each thread with its own `slot` below `threads`;
@@ -594,6 +598,11 @@ class Evening {
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
                         const EveningLimits& limits, unsigned threads, bool quiet) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  // Each thread marches with scratch arrays over the whole mesh: no more
+  // threads than a quarter of the usable memory holds (--threads 1024 on
+  // a working mesh of 4M vertices would ask 70 GB).
+  const std::uint64_t scratch_bytes = kScratchBytesPerVertex * std::max<std::uint64_t>(mesh.vertex_count(), 1);
+  threads = unsigned(std::clamp<std::uint64_t>(usable_host_memory_bytes() / 4 / scratch_bytes, 1, threads));
   Evening evening(mesh, solver, std::move(points), limits, threads);
   std::vector<EveningSweep> sweeps;
   ProgressLine progress("even", limits.max_sweeps, quiet);
