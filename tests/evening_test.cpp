@@ -108,7 +108,8 @@ struct Evened {
 
 // `cover_share`: the limit on the covering radius, a share of the farthest
 // start's (the run's rule is 1.1); 0: the sweeps' own cover.
-Evened even_the_fold(std::size_t particles, double cover_share = 1.1) {
+// `threads`: the evening's (0: every core).
+Evened even_the_fold(std::size_t particles, double cover_share = 1.1, unsigned threads = 0) {
   const SurfaceMesh mesh = folded_strip();
   const auto solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
   const double d_hex = hexagonal_spacing(mesh.area(), particles);
@@ -131,7 +132,7 @@ Evened even_the_fold(std::size_t particles, double cover_share = 1.1) {
   const SurfaceWalk walk(mesh);
   std::vector<SurfaceLocation> from;
   for (const VertexId v : swept.positions) from.push_back(walk.at_vertex(v));
-  result.outcome = even_out(mesh, *solver, from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, result.limit}, true);
+  result.outcome = even_out(mesh, *solver, from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, result.limit}, threads, true);
   for (const SurfaceLocation& p : result.outcome.points) result.evened.push_back(p.at);
   return result;
 }
@@ -207,6 +208,51 @@ TEST(Evening, TheSameStartGivesTheSameBits) {
     EXPECT_EQ(first.evened[i].x, second.evened[i].x);
     EXPECT_EQ(first.evened[i].y, second.evened[i].y);
     EXPECT_EQ(first.evened[i].z, second.evened[i].z);
+  }
+}
+
+// Each sweep's moves are judged in independent sets on several threads and
+// committed in index order: the particles are the same bits for 1, 2 and 8
+// threads, on a strip folded once and, through the whole run (`--threads`),
+// on the strip folded twice, where the relaxation is skipped and the
+// evening runs.
+TEST(Evening, AnyNumberOfThreadsGivesTheSameBits) {
+  const Evened one = even_the_fold(192, 1.1, 1);
+  ASSERT_GT(one.outcome.sweeps.front().moved, 0u);
+  for (const unsigned threads : {2u, 8u}) {
+    const Evened many = even_the_fold(192, 1.1, threads);
+    ASSERT_EQ(one.outcome.points.size(), many.outcome.points.size());
+    ASSERT_EQ(one.outcome.sweeps.size(), many.outcome.sweeps.size()) << threads << " threads";
+    for (std::size_t i = 0; i < one.outcome.points.size(); ++i) {
+      EXPECT_EQ(one.outcome.points[i].triangle, many.outcome.points[i].triangle) << threads << " threads, " << i;
+      EXPECT_EQ(one.evened[i].x, many.evened[i].x) << threads << " threads, " << i;
+      EXPECT_EQ(one.evened[i].y, many.evened[i].y) << threads << " threads, " << i;
+      EXPECT_EQ(one.evened[i].z, many.evened[i].z) << threads << " threads, " << i;
+    }
+    EXPECT_EQ(one.outcome.cover, many.outcome.cover) << threads << " threads";
+  }
+  const SurfaceMesh mesh = folded_strip(2);
+  RunRequest request;
+  request.mesh_label = "z-folded strip";
+  request.particles = 192;
+  request.quiet = true;
+  std::vector<Vec3> first;
+  for (const unsigned threads : {1u, 2u, 8u}) {
+    request.distances.geodesics.threads = threads;
+    const RunResult result = run_pipeline(mesh, request);
+    ASSERT_TRUE(result.spread && result.spread->evening);
+    std::vector<Vec3> positions;
+    for (const VertexId v : result.outcome.positions) positions.push_back(result.particle_mesh(mesh).positions()[v]);
+    if (threads == 1) {
+      first = positions;
+      continue;
+    }
+    ASSERT_EQ(first.size(), positions.size());
+    for (std::size_t i = 0; i < first.size(); ++i) {
+      EXPECT_EQ(first[i].x, positions[i].x) << threads << " threads, " << i;
+      EXPECT_EQ(first[i].y, positions[i].y) << threads << " threads, " << i;
+      EXPECT_EQ(first[i].z, positions[i].z) << threads << " threads, " << i;
+    }
   }
 }
 

@@ -141,11 +141,13 @@ namespace {
 // found v nearer, lists those vertices (and, given `sources`, the source
 // each now measures from), and leaves the scratch clean.
 void keep_nearer(std::span<float> nearest, SolverScratch& scratch, std::vector<VertexId>& lowered,
-                 std::vector<std::uint32_t>* sources) {
+                 std::vector<std::uint32_t>* sources, std::vector<float>* was = nullptr) {
   lowered.clear();
   if (sources) sources->clear();
+  if (was) was->clear();
   for (const VertexId v : scratch.touched) {
     if (scratch.accepted[v] && float(scratch.distances[v]) < nearest[v]) {
+      if (was) was->push_back(nearest[v]);
       nearest[v] = float(scratch.distances[v]);
       lowered.push_back(v);
       if (sources) sources->push_back(scratch.origin[v]);
@@ -168,14 +170,15 @@ void GeodesicSolver::lower_nearest(VertexId source, std::span<float> nearest, So
 void GeodesicSolver::lower_nearest_from(std::span<const VertexId> rim, std::span<const std::uint32_t> rim_sources,
                                         std::span<float> nearest, SolverScratch& scratch,
                                         std::vector<VertexId>& lowered,
-                                        std::vector<std::uint32_t>& lowered_sources) const {
+                                        std::vector<std::uint32_t>& lowered_sources,
+                                        std::vector<float>* was) const {
   scratch.fit(vertex_count_);
   for (const VertexId v : rim) {
     scratch.distances[v] = nearest[v];
     scratch.touched.push_back(v);
   }
   march(rim, scratch.distances, scratch, kNoDistanceLimit, nearest, rim_sources);
-  keep_nearer(nearest, scratch, lowered, &lowered_sources);
+  keep_nearer(nearest, scratch, lowered, &lowered_sources, was);
 }
 
 double largest_finite(std::span<const float> distances) {

@@ -94,10 +94,11 @@ class GeodesicSolver {
   // whose source was taken away (its nearest[] set to +inf) from the sources
   // around it, at a cost in proportion to the region. `lowered`: the
   // vertices whose nearest[] dropped; `lowered_sources`: parallel, the
-  // source each now belongs to.
+  // source each now belongs to; `was`, given: parallel, each one's
+  // nearest[] before (what undoes the march).
   void lower_nearest_from(std::span<const VertexId> rim, std::span<const std::uint32_t> rim_sources,
                           std::span<float> nearest, SolverScratch& scratch, std::vector<VertexId>& lowered,
-                          std::vector<std::uint32_t>& lowered_sources) const;
+                          std::vector<std::uint32_t>& lowered_sources, std::vector<float>* was = nullptr) const;
 
  protected:
   explicit GeodesicSolver(std::size_t vertex_count) : vertex_count_(vertex_count) {}

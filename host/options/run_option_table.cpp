@@ -123,7 +123,8 @@ std::vector<RunOptionSpec> declared_options() {
       strict,
       path("cache-dir", &V::cache_dir, "Distance cache directory (default: $XDG_CACHE_HOME/meshparticles)"),
       flag("no-cache", &V::no_cache, "Neither read nor write the distance cache"),
-      shown_default(whole("threads", &V::threads, kThreadRange, "Threads for all-pairs distances (0: all cores)"),
+      shown_default(whole("threads", &V::threads, kThreadRange,
+                          "Threads for all-pairs distances and spread's evening (0: all cores)"),
                     std::to_string(defaults.distances.geodesics.threads)),
       quiet,
   };

@@ -1,12 +1,19 @@
 #include "particles/local_farthest_points.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <functional>
 #include <limits>
+#include <mutex>
+#include <thread>
 
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
+#include "common/worker_threads.hpp"
+#include "geodesics/memory_guard.hpp"
 #include "particles/surface_voronoi.hpp"
 
 namespace meshparticles {
@@ -44,6 +51,39 @@ constexpr std::size_t kStallSweeps = 2;
 // A move's length along the surface is taken as at most this many times
 // its straight length where the cover is bounded without a march.
 constexpr double kMoveSlack = 1.1;
+// What a march's scratch holds per vertex (SolverScratch::fit: accepted,
+// heap_slot, origin, distances).
+constexpr std::uint64_t kScratchBytesPerVertex = 1 + 4 + 4 + 8;
+
+// work(k, slot) for k = 0 .. count - 1 on up to `threads` threads (the
+// caller's among them), each thread with its own `slot` below `threads`;
+// which thread takes which k is left to the run, so work(k, ...) may write
+// only what belongs to k (and its slot's scratch). The first exception a
+// thread throws is thrown here once all have stopped.
+void share_out(std::size_t count, unsigned threads, const std::function<void(std::size_t, unsigned)>& work) {
+  threads = unsigned(std::min<std::size_t>(threads, count));
+  if (threads <= 1) {
+    for (std::size_t k = 0; k < count; ++k) work(k, 0);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::mutex failure_mutex;
+  std::exception_ptr failure;
+  const auto take = [&](unsigned slot) {
+    try {
+      for (std::size_t k = next++; k < count; k = next++) work(k, slot);
+    } catch (...) {
+      next = count;
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+  };
+  {
+    WorkerThreads helpers(threads - 1, [&](unsigned index) { take(index + 1); });
+    take(0);
+  }
+  if (failure) std::rethrow_exception(failure);
+}
 
 struct Neighbour {
   std::uint32_t particle = 0;
@@ -82,7 +122,7 @@ void reachable(std::uint32_t i, const PathsFrom& paths, std::vector<double>& alo
 }
 
 NeighbourLists neighbour_lists(const SurfaceMesh& mesh, const SurfaceVoronoi& cells,
-                               const std::vector<SurfaceLocation>& points) {
+                               const std::vector<SurfaceLocation>& points, unsigned threads) {
   NeighbourLists lists;
   lists.near.resize(points.size());
   lists.around.resize(points.size());
@@ -95,9 +135,14 @@ NeighbourLists neighbour_lists(const SurfaceMesh& mesh, const SurfaceVoronoi& ce
     paths[path.a].emplace_back(path.b, path.length);
     paths[path.b].emplace_back(path.a, path.length);
   }
-  std::vector<double> along(points.size(), std::numeric_limits<double>::infinity());
-  std::vector<std::uint32_t> reached;
-  for (std::uint32_t i = 0; i < points.size(); ++i) {
+  // Each particle's list from its own paths: one thread's scratch per slot.
+  std::vector<std::vector<double>> alongs(threads);
+  std::vector<std::vector<std::uint32_t>> reacheds(threads);
+  share_out(points.size(), threads, [&](std::size_t particle, unsigned slot) {
+    const auto i = std::uint32_t(particle);
+    std::vector<double>& along = alongs[slot];
+    std::vector<std::uint32_t>& reached = reacheds[slot];
+    if (along.empty()) along.assign(points.size(), std::numeric_limits<double>::infinity());
     reachable(i, paths, along, reached);
     for (const Neighbour& k : lists.near[i]) along[k.particle] = -along[k.particle];  // marked: listed already
     for (const std::uint32_t k : reached) {
@@ -109,7 +154,7 @@ NeighbourLists neighbour_lists(const SurfaceMesh& mesh, const SurfaceVoronoi& ce
       }
       along[k] = std::numeric_limits<double>::infinity();
     }
-  }
+  });
   return lists;
 }
 
@@ -153,14 +198,17 @@ class SurfaceGap {
   SurfaceGap(const SurfaceMesh& mesh, const GeodesicSolver& solver) : mesh_(mesh), solver_(solver) {}
   // `reach`: the farthest any particle is from a corner of its triangle
   // (a particle nearer than `radius` has a corner within radius + reach).
+  // `read`: every vertex whose particles it looked at is appended.
   double operator()(const SurfaceLocation& from, std::uint32_t i, double radius, double reach,
-                    const CornerIndex& corners, const std::vector<SurfaceLocation>& points) {
+                    const CornerIndex& corners, const std::vector<SurfaceLocation>& points,
+                    std::vector<VertexId>& read) {
     const Triangle& t = mesh_.triangles()[from.triangle];
     const auto& p = mesh_.positions();
     const double starts[3] = {distance(from.at, p[t[0]]), distance(from.at, p[t[1]]), distance(from.at, p[t[2]])};
     solver_.solve_ball_from(t, starts, radius + reach, scratch_, within_);
     double nearest = radius;
     for (const auto& [v, d] : within_) {
+      read.push_back(v);
       for (const std::uint32_t k : corners.at(v)) {
         if (k != i) nearest = std::min(nearest, double(d) + distance(p[v], points[k].at));
       }
@@ -233,17 +281,98 @@ double corner_offset(const SurfaceMesh& mesh, const SurfaceLocation& p) {
   return offset;
 }
 
+// What a particle's move is judged against, read only while proposals are
+// computed: the state as the moves before them left it.
+struct EveningView {
+  const SurfaceMesh& mesh;
+  const SurfaceWalk& walk;
+  const EveningLimits& limits;
+  const NeighbourLists& lists;
+  const std::vector<SurfaceLocation>& points;
+  const CornerIndex& corners;
+  double corner_reach = 0;  // the largest corner_offset of any particle
+};
+
+// One particle's move as proposed: where to, and what it read.
+struct Proposal {
+  bool move = false;      // the widest centre widens its own gap along the surface
+  SurfaceLocation there;  // where to, when it does
+  // The vertices whose particles the marches looked at (a particle moved
+  // from or to a triangle of one of them changes the proposal).
+  std::vector<VertexId> read;
+};
+
+// Particle i's move, a function of i and the state `view` alone (`gap`
+// brings the march's scratch): to the widest centre of its cavity
+// (widest_centre) where that widens its own gap along the surface, measured
+// by two marches (straight lines and the diagram's paths misjudge folds).
+// The cover is judged at the commit (Evening::covered_after_move). One
+// work-item per particle, as an OpenCL kernel would have it.
+void propose_move(std::uint32_t i, const EveningView& view, SurfaceGap& gap, Proposal& proposal) {
+  proposal.move = false;
+  proposal.read.clear();
+  const SurfaceLocation& p = view.points[i];
+  const double before = estimated_gap(p.at, i, view.lists, view.points);
+  if (!std::isfinite(before) || norm(view.walk.normal(p.triangle)) == 0) return;
+  const EveningLimits& limits = view.limits;
+  double widest = before;
+  const SurfaceLocation there =
+      widest_centre(view.walk, p, i, view.lists, view.points, kLongestMove * limits.d_hex, widest);
+  if (widest <= before + limits.min_gain) return;
+  const double margin = std::max(view.corner_reach, corner_offset(view.mesh, there));
+  const double was = gap(p, i, before + kGapMargin * limits.d_hex, margin, view.corners, view.points, proposal.read);
+  const double wanted = was + limits.min_gain;
+  if (gap(there, i, wanted, margin, view.corners, view.points, proposal.read) < wanted) return;
+  proposal.move = true;
+  proposal.there = there;
+}
+
+// The particles to visit in sets whose moves cannot meet: a greedy
+// colouring by index of the graph joining each particle to those within
+// kReachSteps steps (its lists, all a proposal reads of others' positions).
+// Sets in colour order, each in index order.
+std::vector<std::vector<std::uint32_t>> independent_sets(const NeighbourLists& lists, const std::vector<char>& visit) {
+  constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> colour(visit.size(), kNone);
+  std::vector<std::vector<std::uint32_t>> sets;
+  std::vector<char> taken;
+  for (std::uint32_t i = 0; i < visit.size(); ++i) {
+    if (!visit[i]) continue;
+    taken.assign(sets.size() + 1, 0);
+    for (const auto* list : {&lists.near[i], &lists.around[i]}) {
+      for (const Neighbour& k : *list) {
+        if (colour[k.particle] != kNone) taken[colour[k.particle]] = 1;
+      }
+    }
+    colour[i] = std::uint32_t(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+    if (colour[i] == sets.size()) sets.emplace_back();
+    sets[colour[i]].push_back(i);
+  }
+  return sets;
+}
+
 // The evening's state between sweeps, and one particle's move.
 class Evening {
  public:
   Evening(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
-          const EveningLimits& limits)
-      : mesh_(mesh), solver_(solver), walk_(mesh), gap_(mesh, solver), limits_(limits), points_(std::move(points)),
-        corners_(mesh, points_), visit_(points_.size(), 1) {
+          const EveningLimits& limits, unsigned threads)
+      : mesh_(mesh), solver_(solver), walk_(mesh), limits_(limits), threads_(std::max(1u, threads)),
+        points_(std::move(points)), corners_(mesh, points_), visit_(points_.size(), 1),
+        moved_in_set_(points_.size(), 0), stamp_(mesh.vertex_count(), 0) {
+    for (unsigned k = 0; k < threads_; ++k) gaps_.emplace_back(mesh, solver);
     find_neighbours();
   }
 
-  // One sweep over the particles to visit; its record.
+  // One sweep over the particles to visit; its record. The particles go in
+  // independent sets (independent_sets): each set's moves are proposed at
+  // once against the state the sets before it left (propose_move, on
+  // threads_ threads), then committed in index order, each after its cover
+  // check. A proposal that read what a commit of its own set changed (a
+  // particle of its lists moved, or one moved from or to a triangle of a
+  // vertex its marches read: a colouring by graph steps does not bound the
+  // marches) is computed again at its commit. So the result is that of
+  // visiting the particles one by one in the sets' order, whatever the
+  // number of threads.
   EveningSweep sweep() {
     const auto started = std::chrono::steady_clock::now();
     EveningSweep record;
@@ -251,11 +380,24 @@ class Evening {
     corner_reach_ = 0;
     for (const SurfaceLocation& p : points_) corner_reach_ = std::max(corner_reach_, corner_offset(mesh_, p));
     std::vector<char> moved(points_.size(), 0);
-    for (std::uint32_t i = 0; i < points_.size(); ++i) {
-      const Vec3 was = points_[i].at;
-      if (visit_[i] && try_move(i, lists_)) {
-        moved[i] = 1;
-        record.longest = std::max(record.longest, distance(was, points_[i].at));
+    for (const std::vector<std::uint32_t>& set : independent_sets(lists_, visit_)) {
+      ++set_stamp_;
+      if (proposals_.size() < set.size()) proposals_.resize(set.size());
+      const EveningView view{mesh_, walk_, limits_, lists_, points_, corners_, corner_reach_};
+      share_out(set.size(), threads_,
+                [&](std::size_t k, unsigned slot) { propose_move(set[k], view, gaps_[slot], proposals_[k]); });
+      for (std::size_t k = 0; k < set.size(); ++k) {
+        const std::uint32_t i = set[k];
+        Proposal& proposal = proposals_[k];
+        if (read_a_commit(i, proposal)) {
+          const EveningView now{mesh_, walk_, limits_, lists_, points_, corners_, corner_reach_};
+          propose_move(i, now, gaps_[0], proposal);
+        }
+        const Vec3 was = points_[i].at;
+        if (proposal.move && commit(i, proposal.there)) {
+          moved[i] = 1;
+          record.longest = std::max(record.longest, distance(was, points_[i].at));
+        }
       }
     }
     record.moved = std::size_t(std::count(moved.begin(), moved.end(), 1));
@@ -270,32 +412,35 @@ class Evening {
   }
 
  private:
-  // Moves particle i to the widest centre of its cavity where that widens
-  // its own gap along the surface and holds the cover; whether it moved.
-  bool try_move(std::uint32_t i, const NeighbourLists& lists) {
-    SurfaceLocation& p = points_[i];
-    const double before = estimated_gap(p.at, i, lists, points_);
-    if (!std::isfinite(before) || norm(walk_.normal(p.triangle)) == 0) return false;
-    double widest = before;
-    const SurfaceLocation there = widest_centre(walk_, p, i, lists, points_, kLongestMove * limits_.d_hex, widest);
-    if (widest <= before + limits_.min_gain) return false;
-    // Kept only where it widens the particle's own gap along the surface,
-    // measured: straight lines and the diagram's paths misjudge folds.
-    const double margin = std::max(corner_reach_, corner_offset(mesh_, there));
-    const double was = gap_(p, i, before + kGapMargin * limits_.d_hex, margin, corners_, points_);
-    const double wanted = was + limits_.min_gain;
-    if (gap_(there, i, wanted, margin, corners_, points_) < wanted) return false;
+  // Whether i's proposal read what a commit of its own set has changed since.
+  bool read_a_commit(std::uint32_t i, const Proposal& proposal) const {
+    for (const auto* list : {&lists_.near[i], &lists_.around[i]}) {
+      for (const Neighbour& k : *list) {
+        if (moved_in_set_[k.particle] == set_stamp_) return true;
+      }
+    }
+    return std::any_of(proposal.read.begin(), proposal.read.end(),
+                       [&](VertexId v) { return stamp_[v] == set_stamp_; });
+  }
+
+  // Moves i to `there` where that holds the cover; whether it moved.
+  bool commit(std::uint32_t i, const SurfaceLocation& there) {
     if (!covered_after_move(i, there)) return false;
+    SurfaceLocation& p = points_[i];
+    for (const std::uint32_t triangle : {p.triangle, there.triangle}) {
+      for (const VertexId c : mesh_.triangles()[triangle]) stamp_[c] = set_stamp_;
+    }
+    moved_in_set_[i] = set_stamp_;
     corners_.move(i, p.triangle, there.triangle);
     p = there;
-    corner_reach_ = margin;
+    corner_reach_ = std::max(corner_reach_, corner_offset(mesh_, there));
     return true;
   }
 
   // The diagram of the particles where they are, and their neighbours in it.
   void find_neighbours() {
     cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
-    lists_ = neighbour_lists(mesh_, cells_, points_);
+    lists_ = neighbour_lists(mesh_, cells_, points_, threads_);
     nearest_ = cells_.distance;
     owner_ = cells_.owner;
     region_.assign(points_.size(), {});
@@ -343,39 +488,54 @@ class Evening {
         }
       }
     }
-    // Lowers nearest_ inside i's region (restored from undo_ if the move is
-    // refused) and elsewhere only where it finds a shorter path to a
-    // particle: true either way, so kept.
-    solver_.lower_nearest_from(rim_, rim_sources_, nearest_, scratch_, lowered_, lowered_sources_);
-    for (std::size_t k = 0; k < lowered_.size(); ++k) owner_[lowered_[k]] = lowered_sources_[k];
+    // i's new triangle's corners join the rim as i's own sources, at their
+    // straight distance from where it goes, where that is nearer: one
+    // march fills the region from the particles around it and from i where
+    // it goes, with the rules of surface_voronoi's (a vertex measured from
+    // neighbours of one source only), so the cover judged here is the one
+    // the next sweep's diagram finds.
     const Triangle& t = mesh_.triangles()[there.triangle];
-    const auto& p = mesh_.positions();
-    const double starts[3] = {distance(there.at, p[t[0]]), distance(there.at, p[t[1]]), distance(there.at, p[t[2]])};
-    const double limit = limits_.cover;
-    solver_.solve_ball_from(t, starts, limit, scratch_, there_within_);
-    if (from_there_.size() != nearest_.size()) {
-      from_there_.assign(nearest_.size(), std::numeric_limits<float>::infinity());
+    for (const VertexId c : t) {
+      const auto d = float(distance(there.at, mesh_.positions()[c]));
+      if (d >= nearest_[c]) continue;
+      undo_.push_back({c, nearest_[c], owner_[c]});
+      nearest_[c] = d;
+      owner_[c] = i;
+      rim_.push_back(c);
+      rim_sources_.push_back(i);
     }
-    for (const auto& [v, d] : there_within_) from_there_[v] = d;
+    solver_.lower_nearest_from(rim_, rim_sources_, nearest_, scratch_, lowered_, lowered_sources_, &lowered_was_);
+    lowered_owners_.clear();
+    for (std::size_t k = 0; k < lowered_.size(); ++k) {
+      lowered_owners_.push_back(owner_[lowered_[k]]);
+      owner_[lowered_[k]] = lowered_sources_[k];
+    }
+    const double limit = limits_.cover;
     bool covered = true;
-    for (const VertexId v : mine) covered = covered && std::min(nearest_[v], from_there_[v]) <= limit;
-    for (const auto& [v, d] : there_within_) from_there_[v] = std::numeric_limits<float>::infinity();
+    for (const VertexId v : mine) covered = covered && nearest_[v] <= limit;
     if (!covered) {
+      // What i's march reached is undone; what the others' reached
+      // outside i's region stays (a shorter path to a particle: true
+      // either way), and their regions list it.
+      for (std::size_t k = lowered_.size(); k-- > 0;) {
+        if (lowered_sources_[k] != i) continue;
+        nearest_[lowered_[k]] = lowered_was_[k];
+        owner_[lowered_[k]] = lowered_owners_[k];
+      }
       for (std::size_t k = undo_.size(); k-- > 0;) {
         nearest_[undo_[k].vertex] = undo_[k].nearest;
         owner_[undo_[k].vertex] = undo_[k].owner;
       }
+      for (std::size_t k = 0; k < lowered_.size(); ++k) {
+        if (owner_[lowered_[k]] == lowered_sources_[k]) region_[lowered_sources_[k]].push_back(lowered_[k]);
+      }
       return false;
     }
-    for (std::size_t k = 0; k < lowered_.size(); ++k) region_[lowered_sources_[k]].push_back(lowered_[k]);
     mine.clear();
-    for (const auto& [v, d] : there_within_) {
-      if (d < nearest_[v]) {
-        nearest_[v] = d;
-        owner_[v] = i;
-        mine.push_back(v);
-      }
+    for (const VertexId c : t) {
+      if (owner_[c] == i) mine.push_back(c);
     }
+    for (std::size_t k = 0; k < lowered_.size(); ++k) region_[lowered_sources_[k]].push_back(lowered_[k]);
     return true;
   }
 
@@ -401,11 +561,17 @@ class Evening {
   const SurfaceMesh& mesh_;
   const GeodesicSolver& solver_;
   const SurfaceWalk walk_;
-  SurfaceGap gap_;
   const EveningLimits limits_;
+  const unsigned threads_;
   std::vector<SurfaceLocation> points_;
   CornerIndex corners_;
   std::vector<char> visit_;
+  std::vector<SurfaceGap> gaps_;     // one per thread
+  std::vector<Proposal> proposals_;  // of the set in hand, in its order
+  // The sets' stamps: per particle, the set it moved in; per vertex, the
+  // set in which a particle moved from or to a triangle of it.
+  std::uint32_t set_stamp_ = 0;
+  std::vector<std::uint32_t> moved_in_set_, stamp_;
   SolverScratch scratch_;
   SurfaceVoronoi cells_;
   NeighbourLists lists_;  // of cells_
@@ -422,16 +588,22 @@ class Evening {
   std::vector<Undo> undo_;
   std::vector<VertexId> rim_, lowered_;
   std::vector<std::uint32_t> rim_sources_, lowered_sources_;
-  std::vector<std::pair<VertexId, float>> there_within_;
-  std::vector<float> from_there_;  // per vertex: its distance from a move's target while it is judged, else +inf
+  std::vector<std::uint32_t> lowered_owners_;  // the owners before the march, parallel to lowered_
+  std::vector<float> lowered_was_;             // the distances before it
   double corner_reach_ = 0;  // the largest corner_offset of any particle
 };
 
 }  // namespace
 
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
-                        const EveningLimits& limits, bool quiet) {
-  Evening evening(mesh, solver, std::move(points), limits);
+                        const EveningLimits& limits, unsigned threads, bool quiet) {
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  // Each thread marches with scratch arrays over the whole mesh: no more
+  // threads than a quarter of the usable memory holds (--threads 1024 on
+  // a working mesh of 4M vertices would ask 70 GB).
+  const std::uint64_t scratch_bytes = kScratchBytesPerVertex * std::max<std::uint64_t>(mesh.vertex_count(), 1);
+  threads = unsigned(std::clamp<std::uint64_t>(usable_host_memory_bytes() / 4 / scratch_bytes, 1, threads));
+  Evening evening(mesh, solver, std::move(points), limits, threads);
   std::vector<EveningSweep> sweeps;
   ProgressLine progress("even", limits.max_sweeps, quiet);
   for (std::size_t sweep = 1; sweep <= limits.max_sweeps; ++sweep) {

@@ -1,7 +1,7 @@
 #pragma once
 // Farthest-point optimization off the vertices, among surface neighbours:
 // the evening step after the sweeps on vertices (docs/ALGORITHM.md,
-// "Evening"). A sweep visits every particle in index order and moves it to
+// "Evening"). A sweep visits every particle and moves it to
 // the centre of the largest empty circle of its neighbours on the surface
 // (the regions of the geodesic Voronoi diagram that touch its own, found
 // anew each sweep), if that widens its own gap: the move is kept only when
@@ -51,9 +51,10 @@ struct EveningLimits {
 // than `limits.stall_gain`, or `limits.max_sweeps` have run. A move must
 // gain more than `limits.min_gain`, and must leave the region it came from
 // within `limits.cover` of it (a region already wider may not widen).
-// Deterministic: the same inputs give the same bits. Unless `quiet`, a
-// progress line.
+// Each sweep's particles go in independent sets, each set's moves judged
+// on `threads` threads (0: every core). Deterministic: the same inputs give
+// the same bits, for any number of threads. Unless `quiet`, a progress line.
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> start,
-                        const EveningLimits& limits, bool quiet);
+                        const EveningLimits& limits, unsigned threads, bool quiet);
 
 }  // namespace meshparticles

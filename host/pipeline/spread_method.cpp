@@ -119,7 +119,7 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
                              cover_limit};
   std::optional<EveningOutcome>& evening = result.spread->evening;
   evening = naming_memory_failures(request.mesh_label, "evening the spacing", [&] {
-    return even_out(surface, solver, std::move(from), limits, request.quiet);
+    return even_out(surface, solver, std::move(from), limits, request.distances.geodesics.threads, request.quiet);
   });
   InsertedPoints inserted = insert_points(*working, mesh, evening->points);
   result.outcome.positions = std::move(inserted.vertices);
