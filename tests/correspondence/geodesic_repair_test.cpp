@@ -2,6 +2,7 @@
 // part of a shape, put back by their geodesic distances to the others.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "correspondence/geodesic_repair.hpp"
@@ -49,6 +50,33 @@ TEST(GeodesicRepair, ParticlesSentAcrossTheShapeComeBackAndTheRestStay) {
     EXPECT_LT(d.x * d.x + d.y * d.y + d.z * d.z, 1e-18) << "particle " << i;
   }
   EXPECT_LT(repair.inconsistency, 1e-3);
+}
+
+// Two particles whose distances fit one vertex best (the template's
+// particle twice) are not both put on it: one takes it, the other the
+// nearest fit beside it.
+TEST(GeodesicRepair, NoTwoParticlesArePutOnOneVertex) {
+  const SurfaceMesh mesh = generate_ellipsoid_variant(4, 1500).mesh;
+  const VertexTriangles around = vertex_triangles(mesh.triangles(), mesh.vertex_count());
+  std::vector<VertexId> places;
+  for (VertexId v = 0; v < mesh.vertex_count(); v += 23) places.push_back(v);
+  places.push_back(places[10]);
+  std::vector<SurfaceLocation> particles;
+  for (const VertexId v : places) particles.push_back(at_vertex(mesh, around, v));
+  const TemplateGeodesics reference = template_geodesics(mesh, particles);
+  std::vector<SurfaceLocation> carried = particles;
+  const std::size_t twin = places.size() - 1;
+  for (const std::size_t i : {std::size_t(10), twin}) {
+    carried[i] = at_vertex(mesh, around, places[(i + places.size() / 2) % places.size()]);  // across the shape
+  }
+  const GeodesicRepair repair = repair_by_geodesics(reference, mesh, carried);
+  EXPECT_EQ(repair.moved, 2u);
+  const Vec3 d = carried[10].at - carried[twin].at;
+  EXPECT_GT(d.x * d.x + d.y * d.y + d.z * d.z, 0) << "stacked";
+  for (const std::size_t i : {std::size_t(10), twin}) {
+    const Vec3 off = carried[i].at - mesh.positions()[places[10]];
+    EXPECT_LT(std::sqrt(off.x * off.x + off.y * off.y + off.z * off.z), 0.05 * std::sqrt(mesh.area())) << i;
+  }
 }
 
 // A shape whose particles all lie right: none moves.
