@@ -1,6 +1,6 @@
 #pragma once
 // Independent pieces of work shared out among threads: work(k) for every k
-// in a list, each k on whichever thread takes it next. Each piece must be
+// in a range or a list, each k on whichever thread takes it next. Each piece must be
 // its own work (no piece reads what another writes), so that the result does
 // not depend on the number of threads.
 #include <algorithm>
@@ -15,19 +15,19 @@
 
 namespace meshparticles {
 
-// Runs work(k) for every k of `indices` on at most `threads` threads (the
-// caller's among them). The first exception stops the others from taking
-// more and is rethrown here.
-inline void for_each_index(const std::vector<std::size_t>& indices, unsigned threads,
-                           const std::function<void(std::size_t)>& work) {
-  if (indices.empty()) return;
+// Runs work(k, slot) for k = 0 .. count - 1 on at most `threads` threads
+// (the caller's among them); `slot`, below `threads`, names the thread
+// running it, so that each may keep scratch of its own. The first exception
+// stops the others from taking more and is rethrown here.
+inline void for_each_with_slot(std::size_t count, unsigned threads,
+                               const std::function<void(std::size_t, unsigned)>& work) {
+  if (count == 0) return;
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex mutex;
-  const std::size_t count = indices.size();
-  const auto share = [&] {
+  const auto share = [&](unsigned slot) {
     try {
-      for (std::size_t i = next++; i < count; i = next++) work(indices[i]);
+      for (std::size_t k = next++; k < count; k = next++) work(k, slot);
     } catch (...) {  // out of memory, a mesh that cannot be read: rethrown on the calling thread
       const std::lock_guard lock(mutex);
       if (!failure) failure = std::current_exception();
@@ -36,10 +36,16 @@ inline void for_each_index(const std::vector<std::size_t>& indices, unsigned thr
   };
   const unsigned used = unsigned(std::clamp<std::size_t>(threads, 1, count));
   {
-    WorkerThreads workers(used - 1, [&](unsigned) { share(); });
-    share();
+    WorkerThreads workers(used - 1, [&](unsigned index) { share(index + 1); });
+    share(0);
   }
   if (failure) std::rethrow_exception(failure);
+}
+
+// Runs work(k) for every k of `indices` as for_each_with_slot does.
+inline void for_each_index(const std::vector<std::size_t>& indices, unsigned threads,
+                           const std::function<void(std::size_t)>& work) {
+  for_each_with_slot(indices.size(), threads, [&](std::size_t i, unsigned) { work(indices[i]); });
 }
 
 }  // namespace meshparticles

@@ -1,18 +1,14 @@
 #include "particles/local_farthest_points.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
-#include <functional>
 #include <limits>
-#include <mutex>
 #include <thread>
 
+#include "common/parallel_for.hpp"
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
-#include "common/worker_threads.hpp"
 #include "geodesics/memory_guard.hpp"
 #include "particles/surface_voronoi.hpp"
 
@@ -54,36 +50,6 @@ constexpr double kMoveSlack = 1.1;
 // What a march's scratch holds per vertex (SolverScratch::fit: accepted,
 // heap_slot, origin, distances).
 constexpr std::uint64_t kScratchBytesPerVertex = 1 + 4 + 4 + 8;
-
-// work(k, slot) for k = 0 .. count - 1 on up to `threads` threads (the
-// caller's among them), each thread with its own `slot` below `threads`;
-// which thread takes which k is left to the run, so work(k, ...) may write
-// only what belongs to k (and its slot's scratch). The first exception a
-// thread throws is thrown here once all have stopped.
-void share_out(std::size_t count, unsigned threads, const std::function<void(std::size_t, unsigned)>& work) {
-  threads = unsigned(std::min<std::size_t>(threads, count));
-  if (threads <= 1) {
-    for (std::size_t k = 0; k < count; ++k) work(k, 0);
-    return;
-  }
-  std::atomic<std::size_t> next{0};
-  std::mutex failure_mutex;
-  std::exception_ptr failure;
-  const auto take = [&](unsigned slot) {
-    try {
-      for (std::size_t k = next++; k < count; k = next++) work(k, slot);
-    } catch (...) {
-      next = count;
-      const std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-    }
-  };
-  {
-    WorkerThreads helpers(threads - 1, [&](unsigned index) { take(index + 1); });
-    take(0);
-  }
-  if (failure) std::rethrow_exception(failure);
-}
 
 struct Neighbour {
   std::uint32_t particle = 0;
@@ -138,7 +104,7 @@ NeighbourLists neighbour_lists(const SurfaceMesh& mesh, const SurfaceVoronoi& ce
   // Each particle's list from its own paths: one thread's scratch per slot.
   std::vector<std::vector<double>> alongs(threads);
   std::vector<std::vector<std::uint32_t>> reacheds(threads);
-  share_out(points.size(), threads, [&](std::size_t particle, unsigned slot) {
+  for_each_with_slot(points.size(), threads, [&](std::size_t particle, unsigned slot) {
     const auto i = std::uint32_t(particle);
     std::vector<double>& along = alongs[slot];
     std::vector<std::uint32_t>& reached = reacheds[slot];
@@ -384,7 +350,7 @@ class Evening {
       ++set_stamp_;
       if (proposals_.size() < set.size()) proposals_.resize(set.size());
       const EveningView view{mesh_, walk_, limits_, lists_, points_, corners_, corner_reach_};
-      share_out(set.size(), threads_,
+      for_each_with_slot(set.size(), threads_,
                 [&](std::size_t k, unsigned slot) { propose_move(set[k], view, gaps_[slot], proposals_[k]); });
       for (std::size_t k = 0; k < set.size(); ++k) {
         const std::uint32_t i = set[k];
