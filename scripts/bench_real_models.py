@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Our particles against four public Poisson-disk samplers, on real meshes: quality and time.
+"""Our particles against four public Poisson-disk samplers and ACVD, on real meshes: quality and time.
 
     scripts/bench_real_models.py [-n 256,1024,4096] [--models DIR] [--only NAME,...] [--limit K]
                                  [--max-vertices V] [--binary PATH] [--json FILE] [--markdown FILE]
@@ -21,13 +21,16 @@ Samplers, for each mesh and n:
   exactnumflag=True, subsample=True / False)`, as scripts/compare_samplers.py calls it;
 - Open3D: `TriangleMesh.sample_points_poisson_disk(n)` (exactly n points);
 - pcu: point-cloud-utils' `sample_mesh_poisson_disk(v, f, n)` (about n points: the count it gave
-  is recorded, and shown where it is not n).
+  is recorded, and shown where it is not n);
+- pyacvd: `pyacvd.Clustering(mesh)`, subdivided until it has 100 vertices a cluster, then
+  `cluster(n)`, the clusters' centroids (ACVD's clusters grown over mesh edges: not on the
+  surface; `quality` measures them at their nearest surface points).
 Each peer reads the file with its own reader; where that fails, with trimesh's, else
 pymeshlab's (the JSON's `loader` says which).
 
 The peers and the Python module live in a virtual environment made on first use:
 $MESHPARTICLES_PEER_VENV, default ${XDG_CACHE_HOME:-~/.cache}/meshparticles/peer-venv (pip install
-pymeshlab open3d point-cloud-utils trimesh pycpd; Open3D needs Debian's libusb-1.0-0, installed with apt-
+pymeshlab open3d point-cloud-utils trimesh pycpd pyacvd; Open3D needs Debian's libusb-1.0-0, installed with apt-
 get if missing). Unless `--no-python`, the module is built into it from `--module-source` (default:
 this checkout) on every start, with pip as scripts/test_python.sh does but without build isolation
 (scikit-build-core and ninja installed in the venv), its CMake build kept in the venv (module-
@@ -90,6 +93,7 @@ shared.PROG = PROG  # the shared helpers' messages under this script's name
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_COUNTS = [256, 1024, 4096]
 VERTICES_PER_PARTICLE = 4
+ACVD_VERTICES_PER_CLUSTER = 100  # subdivided to this: on cow at 256, rho 0.35 / 0.48 / 0.50 / 0.39 after 0 to 3 levels
 MODEL_EXTENSIONS = {".off", ".ply", ".obj", ".stl"}
 DEFAULT_TIMEOUT = 900
 
@@ -100,10 +104,11 @@ MESHLAB_VERTEX = "meshlab-vertex"
 PEERS = [(MESHLAB_VERTEX, "MeshLab vertex", "pymeshlab"),
          ("meshlab-surface", "MeshLab surface", "pymeshlab"),
          ("open3d", "Open3D", "open3d"),
-         ("pcu", "pcu", "point-cloud-utils")]
+         ("pcu", "pcu", "point-cloud-utils"),
+         ("acvd", "pyacvd", "pyacvd")]
 # pycpd: scripts/cpd_baseline.py's registrations, in this venv too.
 PEER_PACKAGES = {"pymeshlab": "pymeshlab", "open3d": "open3d", "point-cloud-utils": "point_cloud_utils",
-                 "trimesh": "trimesh", "pycpd": "pycpd"}  # pip name -> import name
+                 "trimesh": "trimesh", "pycpd": "pycpd", "pyacvd": "pyacvd"}  # pip name -> import name
 # What building the Python module in the venv needs (pip name -> import name).
 MODULE_BUILD_PACKAGES = {"scikit-build-core": "scikit_build_core", "ninja": "ninja", "numpy": "numpy"}
 LABELS = dict([(OURS, "ours"), (IN_PROCESS, "ours in-process")] + [(key, label) for key, label, _ in PEERS])
@@ -230,6 +235,42 @@ def pcu_sampler():
     return load, sample, "point-cloud-utils"
 
 
+def acvd_sampler():
+    """ACVD (Valette and Chassery 2004): n clusters of vertices grown over the mesh's edges, their centroids.
+
+    pyacvd asks for a mesh much denser than the clusters: subdivided (each level four times the
+    triangles) until it has at least ACVD_VERTICES_PER_CLUSTER vertices per cluster; the load
+    column holds the reading, the call the subdivision and the clustering.
+    """
+    import numpy as np
+    import pyacvd
+    import pyvista
+
+    def native(path):
+        mesh = pyvista.read(path)
+        if not isinstance(mesh, pyvista.PolyData) or mesh.n_cells == 0:
+            raise ValueError("no surface")
+        return mesh.triangulate()
+
+    def from_arrays(vertices, faces):
+        cells = np.hstack([np.full((len(faces), 1), 3, dtype=np.int64), faces.astype(np.int64)]).ravel()
+        return pyvista.PolyData(vertices, cells)
+
+    load = loader_with_fallback(native, from_arrays)
+
+    def sample(mesh, n):
+        clusters = pyacvd.Clustering(mesh)
+        levels = 0
+        while mesh.n_points * 4 ** levels < ACVD_VERTICES_PER_CLUSTER * n and levels < 3:
+            levels += 1
+        if levels:
+            clusters.subdivide(levels)
+        clusters.cluster(n)
+        return np.asarray(clusters.cluster_centroid), {"subdivisions": levels}
+
+    return load, sample, "pyacvd"
+
+
 def in_process_sampler():
     """Ours through the Python module; its report's seconds ride along with the points."""
     import warnings
@@ -252,7 +293,7 @@ def in_process_sampler():
 
 # Each makes load(path) -> (mesh, loader) and sample(mesh, n) -> (points, extra figures), and names its package.
 WORKER_SAMPLERS = {MESHLAB_VERTEX: lambda: meshlab_sampler(True), "meshlab-surface": lambda: meshlab_sampler(False),
-                   "open3d": open3d_sampler, "pcu": pcu_sampler, IN_PROCESS: in_process_sampler}
+                   "open3d": open3d_sampler, "pcu": pcu_sampler, "acvd": acvd_sampler, IN_PROCESS: in_process_sampler}
 
 
 def load_and_sample(load, sample, path, n):
