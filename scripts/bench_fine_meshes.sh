@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# scripts/bench_fine_meshes.sh [--quick] [--repeat K] [--only REGEX] [--budget MINUTES] [--cgal K]
-#                              [--force] OUT_DIR
+# scripts/bench_fine_meshes.sh [--quick | --scale MODELS] [--threads T] [--repeat K] [--only REGEX]
+#                              [--budget MINUTES] [--cgal K] [--force] OUT_DIR
 #
 # What: the default run, `meshparticles run MESH -n N` (method spread), on fine meshes against
 # MeshLab's vertex Poisson-disk sampling (pymeshlab generate_sampling_poisson_disk(samplenum=n,
@@ -27,6 +27,11 @@
 #            the generated meshes first (smallest first), then the CGAL ones
 #   --quick  the generated meshes at 100k and 200k only, n = 256 and 4096 (8 cases, about 4 min
 #            on 2 cores)
+#   --scale MODELS  issue 58's scale rows instead: a 35k-vertex scan at 4,096 (CGAL's bunny00,
+#            37,706 vertices), a 134k-vertex scan at 20,000 (MODELS/data/igea.ply, from a clone of
+#            github.com/alecjacobson/common-3d-test-models; 134,345 vertices) and the generated
+#            1M sphere at 100,000; memory limits 1 GiB (the scan) and 4 GiB (1M)
+#   --threads T  ours with `--threads T` (0: every core, the default); the labels end in -tT
 #
 # How: per case, one call of scripts/compare_samplers.py MESH -n N --vertex-only --no-farthest
 # --no-warmup --repeat K (default K = 1): ours (the whole `run`, wall time and the process's peak
@@ -57,10 +62,12 @@ usage() {
   echo "usage: $0 [--quick] [--repeat K] [--only REGEX] [--budget MINUTES] [--cgal K] [--force] OUT_DIR" >&2
   exit 2
 }
-quick=0 repeat=1 only=. budget='' cgal=4 force=0 out=''
+quick=0 scale='' threads='' repeat=1 only=. budget='' cgal=4 force=0 out=''
 while (($#)); do
   case "$1" in
     --quick) quick=1 ;;
+    --scale) scale=${2:?}; shift ;;
+    --threads) threads=${2:?}; shift ;;
     --repeat) repeat=${2:?}; shift ;;
     --only) only=${2:?}; shift ;;
     --budget) budget=${2:?}; shift ;;
@@ -73,7 +80,8 @@ while (($#)); do
   shift
 done
 [ -n "$out" ] || usage
-[[ $repeat =~ ^[1-9][0-9]*$ && $cgal =~ ^[0-9]+$ && $budget =~ ^[0-9]*$ ]] || usage
+[[ $repeat =~ ^[1-9][0-9]*$ && $cgal =~ ^[0-9]+$ && $budget =~ ^[0-9]*$ && $threads =~ ^[0-9]*$ ]] || usage
+((quick == 0)) || [ -z "$scale" ] || usage
 
 progress() { echo "bench_fine_meshes: $*" >&2; }
 die() { progress "error: $*"; exit 2; }
@@ -141,16 +149,26 @@ add_cases() {  # MESH_LABEL MESH SOURCE N...
     limit=-
     [[ $name == *-200k && $n == 4096 ]] && limit=$GiB
     [[ $name == *-1m && $n == 4096 ]] && limit=$((4 * GiB))
-    printf '%s\t%s\t%s\t%s\t%s\n' "$name-n$n" "$mesh" "$n" "$limit" "$source" >> "$plan"
+    [[ $name == scan-134k && $n == 20000 ]] && limit=$GiB
+    [[ $name == *-1m && $n == 100000 ]] && limit=$((4 * GiB))
+    printf '%s\t%s\t%s\t%s\t%s\n' "$name-n$n${threads:+-t$threads}" "$mesh" "$n" "$limit" "$source" >> "$plan"
   done
 }
-if ((quick)); then
+if [ -n "$scale" ]; then
+  [ -f "$scale/data/igea.ply" ] || die "$scale/data/igea.ply: not there (git clone https://github.com/alecjacobson/common-3d-test-models)"
+  bunny=$(compare_samplers "c.corpus_directory() / 'bunny00.off'")
+  [ -f "$bunny" ] || die "$bunny: not there (CGAL's meshes: scripts/real_meshes.sh unpacks them)"
+  add_cases scan-35k "$bunny" "CGAL bunny00.off (a 35k-vertex scan)" 4096
+  add_cases scan-134k "$scale/data/igea.ply" "igea.ply (a 134k-vertex scan), common-3d-test-models" 20000
+  add_cases sphere-1m "$(generated sphere 1000000)" "generate sphere --vertices 1000000" 100000
+  counts=() large=() cgal=0
+elif ((quick)); then
   counts=(256 4096) large=() cgal=0
 else
   counts=(64 256 1024 4096) large=(1000000)
 fi
 peer=$(compare_samplers "c.peer_venv_python()")
-for size in 100000 200000; do
+for size in ${counts[@]:+100000 200000}; do
   for kind in sphere atrium; do
     add_cases "$kind-$((size / 1000))k" "$(generated $kind "$size")" "generate $kind --vertices $size" "${counts[@]}"
   done
@@ -268,7 +286,7 @@ while IFS=$'\t' read -r label mesh n limit source; do
   load_before=$(cut -d' ' -f1 /proc/loadavg)
   status=0
   python3 "$COMPARE" "$mesh" -n "$n" --vertex-only --no-farthest --no-warmup --repeat "$repeat" \
-    --binary "$bin" --json "$scratch/compare.json" --keep "$scratch/keep" > "$scratch/compare.txt" || status=$?
+    ${threads:+--ours-args "--threads $threads"} --binary "$bin" --json "$scratch/compare.json" --keep "$scratch/keep" > "$scratch/compare.txt" || status=$?
   case_json "$label" "$mesh" "$n" "$limit" "$source" "$status" "$load_before"
   rm -rf "$scratch"
   if ((status != 0)); then
