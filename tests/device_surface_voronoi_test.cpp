@@ -1,0 +1,211 @@
+// The evening's geodesic Voronoi diagram on the device
+// (particles/device_surface_voronoi, kernels/surface_voronoi.cl) against the
+// host's (particles/surface_voronoi, fast marching), its oracle, on the
+// committed meshes and a CGAL mesh, at 64 and 1,024 points.
+//
+// Two oracles: the host's diagram by the fast iterative method (the same
+// updates, pushed in another order) and by fast marching (what the evening
+// uses on the host). The solvers agree to their accuracy, not bit for bit
+// (the bounds and why: kSameMethod, kFastMarching): distances on average,
+// and at a small share of vertices by up to an edge; owners except at a
+// small share of vertices, each where the device's point is within the
+// distances' bound as near as the host's by single solves from both (a
+// near-tie); covering radii. And the same bits from two diagrams of the same
+// points, on one solver and on two.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include "common/random.hpp"
+#include "geodesics/solver_factory.hpp"
+#include "mesh/nearest_on_triangle.hpp"
+#include "opencl/device_discovery.hpp"
+#include "particles/device_surface_voronoi.hpp"
+#include "particles/surface_voronoi.hpp"
+#include "test_files.hpp"
+
+namespace meshparticles::testing {
+namespace {
+
+
+std::vector<SurfaceLocation> random_surface_points(const SurfaceMesh& mesh, std::size_t count, std::uint64_t seed) {
+  SplitMix64 random(seed);
+  std::vector<SurfaceLocation> points;
+  for (std::size_t k = 0; k < count; ++k) {
+    SurfaceLocation p;
+    p.triangle = std::uint32_t(random.below(mesh.triangles().size()));
+    double a = random.uniform();
+    double b = random.uniform();
+    if (a + b > 1) {
+      a = 1 - a;
+      b = 1 - b;
+    }
+    p.weights = {a, b, 1 - a - b};
+    const auto& corners = mesh.triangles()[p.triangle];
+    p.at = at_weights(p.weights, mesh.positions()[corners[0]], mesh.positions()[corners[1]],
+                      mesh.positions()[corners[2]]);
+    points.push_back(p);
+  }
+  return points;
+}
+
+struct VoronoiAgreement {
+  std::size_t compared = 0, owners_changed = 0, only_one_reached = 0, off_by_a_percent = 0;
+  double sum_relative = 0, worst_relative = 0, cover_relative = 0;
+  double widest_tie = 0;  // at a vertex of another owner: |d(device's) - d(host's)| / max(h, edge), single solves
+};
+
+// Point i's distance at v, alone: a march from its triangle's corners, each at
+// its straight distance (the seeding of both diagrams), out to `radius`.
+double distance_from_point(const SurfaceMesh& mesh, const GeodesicSolver& solver, const SurfaceLocation& point,
+                           VertexId v, double radius) {
+  std::vector<VertexId> corners;
+  std::vector<double> starts;
+  for (const VertexId c : mesh.triangles()[point.triangle]) {
+    corners.push_back(c);
+    starts.push_back(distance(point.at, mesh.positions()[c]));
+  }
+  SolverScratch scratch;
+  std::vector<std::pair<VertexId, float>> within;
+  solver.solve_ball_from(corners, starts, radius, scratch, within);
+  for (const auto& [w, d] : within) {
+    if (w == v) return d;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+// The device's diagram against a host's, vertex by vertex; `solver` measures
+// the single points at the vertices whose owners differ.
+VoronoiAgreement compare_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                                 std::span<const SurfaceLocation> points, const SurfaceVoronoi& device,
+                                 const SurfaceVoronoi& host) {
+  VoronoiAgreement agreement;
+  const double floor = mesh.mean_edge_length();
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    const double d = device.distance[v], h = host.distance[v];
+    if (std::isinf(h) || std::isinf(d)) {
+      agreement.only_one_reached += std::size_t(std::isinf(h) != std::isinf(d) ||
+                                                (device.owner[v] == SurfaceVoronoi::kNoPoint) !=
+                                                    (host.owner[v] == SurfaceVoronoi::kNoPoint));
+      continue;
+    }
+    const double scale = std::max(h, floor);
+    const double relative = std::abs(d - h) / scale;
+    ++agreement.compared;
+    agreement.sum_relative += relative;
+    agreement.worst_relative = std::max(agreement.worst_relative, relative);
+    agreement.off_by_a_percent += std::size_t(relative > 0.01);
+    if (device.owner[v] == host.owner[v]) continue;
+    ++agreement.owners_changed;
+    const double radius = 2 * std::max(d, h) + 4 * floor;
+    const double from_device_owner = distance_from_point(mesh, solver, points[device.owner[v]], v, radius);
+    const double from_host_owner = distance_from_point(mesh, solver, points[host.owner[v]], v, radius);
+    agreement.widest_tie = std::max(agreement.widest_tie, (from_device_owner - from_host_owner) / scale);
+  }
+  agreement.cover_relative = std::abs(device.cover() - host.cover()) / host.cover();
+  return agreement;
+}
+
+struct VoronoiTolerance {
+  double worst_relative, mean_relative, off_share, owner_change_share, tie, cover_relative;
+};
+// Distances in units of max(h, the mean edge). Where two points' regions
+// meet, a triangle update needs both corners of one owner (fast_marching.cpp):
+// a border vertex may keep an edge update, up to most of an edge long, and
+// which border triangles qualify depends on the order the solver fills them
+// in. So a few vertices differ by up to an edge (measured, worst of 18 cases:
+// 0.65, camel at 1,024, 10 vertices a point), the rest agree: the means and
+// shares are what hold the diagram. Against the host's fim (the same updates
+// in another order): mean 0.0022, 2.5% of the vertices off by over 1%
+// (camel), 0.9% change owner; against fast marching (the evening's host
+// diagram, whose start from a point's corners overestimates near the point,
+// up to 27% on the flat patch where the device and fim give the straight
+// line): mean 0.011, 14% off by 1%, 2.6% change owner (camel). `tie`: at a
+// vertex the device gives another point, how much farther that point is, by
+// single solves from each (measured: 0.43). Covers: 2.0% (atrium, torus).
+// Each bound is about twice the worst measured.
+const VoronoiTolerance kSameMethod{1.0, 0.005, 0.05, 0.02, 1.0, 0.04};
+const VoronoiTolerance kFastMarching{1.0, 0.025, 0.25, 0.05, 1.0, 0.04};
+
+void expect_within(const VoronoiAgreement& agreement, const VoronoiTolerance& tolerance, std::size_t vertices,
+                   const std::string& oracle) {
+  SCOPED_TRACE("against the host's " + oracle);
+  EXPECT_EQ(agreement.only_one_reached, 0u) << "a vertex reached by one diagram only";
+  EXPECT_LE(agreement.worst_relative, tolerance.worst_relative);
+  EXPECT_LE(agreement.sum_relative / double(std::max<std::size_t>(agreement.compared, 1)), tolerance.mean_relative);
+  EXPECT_LE(double(agreement.owners_changed), tolerance.owner_change_share * double(vertices))
+      << agreement.owners_changed << " of " << vertices << " vertices change owner";
+  EXPECT_LE(double(agreement.off_by_a_percent), tolerance.off_share * double(vertices));
+  EXPECT_LE(agreement.widest_tie, tolerance.tie) << "a vertex changes owner where its two points are not near-tied";
+  EXPECT_LE(agreement.cover_relative, tolerance.cover_relative);
+}
+
+void print_agreement(const std::string& what, const VoronoiAgreement& a) {
+  std::cout << "[ info ] " << what << ": worst " << a.worst_relative << ", mean "
+            << a.sum_relative / double(std::max<std::size_t>(a.compared, 1)) << " relative, " << a.off_by_a_percent
+            << " off by 1%; " << a.owners_changed << " owners changed (widest tie " << a.widest_tie << "); cover "
+            << a.cover_relative << "\n";
+}
+
+void expect_device_matches_host(const SurfaceMesh& mesh, const std::string& name) {
+  const auto marching = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
+  const auto iterative = make_geodesic_solver(mesh, GeodesicMethod::fast_iterative);
+  DeviceSurfaceVoronoi device(mesh, select_device(""));
+  for (const std::size_t n : {64, 1024}) {
+    SCOPED_TRACE(name + ", n = " + std::to_string(n));
+    const std::vector<SurfaceLocation> points = random_surface_points(mesh, n, 59 + n);
+    SolverScratch scratch;
+    const SurfaceVoronoi first = device.diagram(points);
+    const VoronoiAgreement same_method =
+        compare_voronoi(mesh, *iterative, points, first, surface_voronoi(mesh, *iterative, points, scratch));
+    const VoronoiAgreement evening =
+        compare_voronoi(mesh, *marching, points, first, surface_voronoi(mesh, *marching, points, scratch));
+    print_agreement(name + " n=" + std::to_string(n) + " vs fim", same_method);
+    print_agreement(name + " n=" + std::to_string(n) + " vs fmm", evening);
+    expect_within(same_method, kSameMethod, mesh.vertex_count(), "fast iterative method");
+    expect_within(evening, kFastMarching, mesh.vertex_count(), "fast marching");
+    const SurfaceVoronoi second = device.diagram(points);
+    EXPECT_EQ(first.distance, second.distance) << "two diagrams of the same points differ";
+    EXPECT_EQ(first.owner, second.owner);
+  }
+}
+
+class DeviceVoronoiCommitted : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(DeviceVoronoiCommitted, IsTheHostsDiagramToTheSolversAccuracy) {
+  expect_device_matches_host(committed(GetParam()), GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(CommittedMeshes, DeviceVoronoiCommitted,
+                         ::testing::Values("sphere.off", "atrium.off", "torus.off", "patch.off", "high_valence.off",
+                                           "two_pieces.off", "tetrahedron.off"),
+                         stem);
+
+// CGAL's meshes (Debian's libcgal-demo, unpacked where scripts/compare_samplers.py --corpus puts them,
+// or $MESHPARTICLES_CGAL_MESHES): a real scan's irregular triangles, not a generator's.
+std::filesystem::path cgal_meshes_folder() {
+  if (const char* given = std::getenv("MESHPARTICLES_CGAL_MESHES")) return given;
+  return "/root/.cache/meshparticles/cgal-data/data/meshes";
+}
+
+TEST(DeviceVoronoi, IsTheHostsDiagramOnACgalMesh) {
+  const std::filesystem::path camel = cgal_meshes_folder() / "camel.off";
+  if (!std::filesystem::exists(camel)) GTEST_SKIP() << camel << " is not here (set $MESHPARTICLES_CGAL_MESHES)";
+  std::vector<std::string> warnings;
+  expect_device_matches_host(read_mesh(camel.string(), warnings), "camel");
+}
+
+TEST(DeviceVoronoi, ASecondSolverGivesTheSameBits) {
+  const SurfaceMesh mesh = committed("atrium.off");
+  const std::vector<SurfaceLocation> points = random_surface_points(mesh, 1024, 7);
+  DeviceSurfaceVoronoi one(mesh, select_device("")), other(mesh, select_device(""));
+  const SurfaceVoronoi a = one.diagram(points), b = other.diagram(points);
+  EXPECT_EQ(a.distance, b.distance);
+  EXPECT_EQ(a.owner, b.owner);
+}
+
+}  // namespace
+}  // namespace meshparticles::testing
