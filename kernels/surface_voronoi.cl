@@ -20,10 +20,12 @@
 // (X, Y) whose two corners have the same owner (point_source_update, X's
 // owner): the updates host/geodesics/fast_iterative pushes, listed by target.
 // Only a vertex one of whose inputs changed in the last round (`dirty`)
-// computes; one that changed tells its dependents. The three dirty buffers
+// computes, and only the candidates that read such an input; one that
+// changed tells its dependents. A vertex's distance, owner and when it last
+// changed lie together (vertex_state): a neighbour costs one read. The three dirty buffers
 // rotate: a round reads one, marks the next, and clears the one after. A
 // vertex that changed in the last round copies itself into the buffer this
-// round writes (`changed_at`); the rest leave both buffers as they are.
+// round writes; the rest leave both buffers as they are.
 // Whether anything changed goes to round_changed[flag], so the host reads one
 // flag per batch of rounds, not one per round.
 #pragma OPENCL FP_CONTRACT OFF
@@ -39,52 +41,67 @@ typedef struct {
   float frame[3];  // length_xy, c_x, c_y: target from (x, y)
 } pull_update;
 
+// A vertex's state, one 16-byte read for a neighbour's candidate:
+// VertexState in particles/device_surface_voronoi.cpp, the same layout.
+// `stamp`: round + 2 in the state a round writes where the vertex changed,
+// copied on otherwise; 1 marks the seeds ("changed" before round 0).
+typedef struct {
+  float distance;
+  uint owner;
+  uint stamp;
+  uint unused;
+} vertex_state;
+
 __kernel void surface_voronoi_round(uint vertex_count, uint round, __global const uint* ring_offsets,
                                     __global const uint* ring_neighbors, __global const float* edge_lengths,
                                     __global const uint* pull_offsets, __global const pull_update* pulls,
                                     __global const uint* dependent_offsets, __global const uint* dependents,
-                                    __global const float* distance_in, __global const uint* owner_in,
-                                    __global float* distance_out, __global uint* owner_out,
+                                    __global const vertex_state* state_in, __global vertex_state* state_out,
                                     __global const uchar* dirty_in, __global uchar* dirty_out,
-                                    __global uchar* dirty_clear, __global uint* changed_at,
-                                    __global uint* round_changed, uint flag) {
+                                    __global uchar* dirty_clear, __global uint* round_changed, uint flag) {
   const uint v = (uint)get_global_id(0);
   if (v >= vertex_count) return;
   dirty_clear[v] = 0;
   const int dirty = dirty_in[v] != 0;
-  // Unchanged and changed more than a round ago: both buffers hold v already.
-  if (!dirty && changed_at[v] + 1u != round) return;
-  const float was = distance_in[v];
-  const uint was_owner = owner_in[v];
-  float best = was;
-  uint best_owner = was_owner;
+  // A candidate reads the vertices it is computed from; one none of which
+  // changed in the last round (stamp round + 1) was taken or beaten when
+  // they last did: skipping it changes nothing.
+  const uint recent = round + 1u;
+  const vertex_state was = state_in[v];
+  // Not dirty, and not changed in the last round: both buffers hold v already.
+  if (!dirty && was.stamp != recent) return;
+  float best = was.distance;
+  uint best_owner = was.owner;
   if (dirty) {
     for (uint k = ring_offsets[v]; k < ring_offsets[v + 1]; ++k) {
-      const uint w = ring_neighbors[k];
-      const uint o = owner_in[w];
-      if (o == NO_POINT) continue;
-      const float candidate = distance_in[w] + edge_lengths[k];
-      if (candidate < best || (candidate == best && o < best_owner)) {
+      const vertex_state w = state_in[ring_neighbors[k]];
+      if (w.stamp != recent || w.owner == NO_POINT) continue;
+      const float candidate = w.distance + edge_lengths[k];
+      if (candidate < best || (candidate == best && w.owner < best_owner)) {
         best = candidate;
-        best_owner = o;
+        best_owner = w.owner;
       }
     }
     for (uint k = pull_offsets[v]; k < pull_offsets[v + 1]; ++k) {
       const pull_update p = pulls[k];
-      const uint o = owner_in[p.x];
-      if (o == NO_POINT || owner_in[p.y] != o) continue;
-      const float candidate = point_source_update(p.frame[0], p.frame[1], p.frame[2], distance_in[p.x], distance_in[p.y]);
+      const vertex_state x = state_in[p.x], y = state_in[p.y];
+      if ((x.stamp != recent && y.stamp != recent) || x.owner == NO_POINT || y.owner != x.owner) continue;
+      const float candidate = point_source_update(p.frame[0], p.frame[1], p.frame[2], x.distance, y.distance);
       if (!(candidate < INFINITY)) continue;
-      if (candidate < best || (candidate == best && o < best_owner)) {
+      if (candidate < best || (candidate == best && x.owner < best_owner)) {
         best = candidate;
-        best_owner = o;
+        best_owner = x.owner;
       }
     }
   }
-  distance_out[v] = best;
-  owner_out[v] = best_owner;
-  if (best != was || best_owner != was_owner) {
-    changed_at[v] = round;
+  const int changed = best != was.distance || best_owner != was.owner;
+  vertex_state now;
+  now.distance = best;
+  now.owner = best_owner;
+  now.stamp = changed ? round + 2u : was.stamp;
+  now.unused = 0;
+  state_out[v] = now;
+  if (changed) {
     for (uint k = dependent_offsets[v]; k < dependent_offsets[v + 1]; ++k) dirty_out[dependents[k]] = 1;
     round_changed[flag] = 1;  // every writer stores the same value
   }

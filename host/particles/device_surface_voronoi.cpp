@@ -23,6 +23,15 @@ struct PullUpdate {
 };
 static_assert(sizeof(PullUpdate) == 20, "kernels/surface_voronoi.cl reads pull_update with this layout");
 
+// A vertex's state in the rounds: vertex_state in kernels/surface_voronoi.cl.
+struct VertexState {
+  float distance;
+  std::uint32_t owner;
+  std::uint32_t stamp;  // round + 2 where it changed in that round; 1: a seed
+  std::uint32_t unused;
+};
+static_assert(sizeof(VertexState) == 16, "kernels/surface_voronoi.cl reads vertex_state with this layout");
+
 // The stencils of fast marching and the fast iterative method
 // (build_triangle_stencils: listed by the vertex that triggers them) listed
 // by the vertex they update, and for each vertex the vertices whose
@@ -102,7 +111,7 @@ void check_voronoi_memory(const DeviceDescription& device, std::uint64_t vertice
       ring * (sizeof(cl_uint) + sizeof(cl_float)),             // one-rings, edge lengths
       pulls,                                                   // the largest, about 250 B a vertex
       dependent_entries * sizeof(cl_uint),
-      vertices * (2 * (sizeof(cl_float) + sizeof(cl_uint)) + 3 + sizeof(cl_uint))};  // distances, owners, dirty, stamps
+      vertices * (2 * sizeof(VertexState) + 3)};               // the states, dirty flags
   std::uint64_t total = 0;
   for (const std::uint64_t bytes : buffers) total += bytes;
   const auto mib = [](std::uint64_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; };
@@ -113,8 +122,11 @@ void check_voronoi_memory(const DeviceDescription& device, std::uint64_t vertice
   }
 }
 
-constexpr std::size_t kFirstBatchRounds = 16;
-constexpr std::size_t kLargestBatchRounds = 64;
+// Rounds queued between two looks at the flags: a diagram takes 10 to 30
+// on the meshes measured, and a round after the last costs a scan of the
+// flags only.
+constexpr std::size_t kBatchRounds = 16;
+constexpr std::size_t kWorkGroupSize = 256;
 
 }  // namespace
 
@@ -133,6 +145,11 @@ DeviceSurfaceVoronoi::DeviceSurfaceVoronoi(const SurfaceMesh& mesh, const Device
   queue_ = cl::CommandQueue(context_, device.device);
   const cl::Program program = cached_program(device.device, {"surface_voronoi.cl"}, {}, FloatMath::exact);
   kernel_ = cl::Kernel(program, "surface_voronoi_round");
+  // Left to the runtime, PoCL takes work-groups of one item: a round costs
+  // its scheduling of every vertex (6 ms a round at 48k vertices).
+  work_group_size_ = std::min<std::size_t>(
+      {kWorkGroupSize, device.max_work_group_size,
+       kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device.device)});
   const std::size_t vertices = std::max<std::size_t>(mesh.vertex_count(), 1);
   ring_offsets_ = device_copy(context_, mesh.ring_offsets());
   ring_neighbors_ = device_copy(context_, mesh.ring_neighbors());
@@ -141,11 +158,12 @@ DeviceSurfaceVoronoi::DeviceSurfaceVoronoi(const SurfaceMesh& mesh, const Device
   pulls_ = device_copy(context_, pull.updates);
   dependent_offsets_ = device_copy(context_, pull.dependent_offsets);
   dependents_ = device_copy(context_, pull.dependents);
-  for (cl::Buffer& buffer : distances_) buffer = cl::Buffer(context_, CL_MEM_READ_WRITE, vertices * sizeof(cl_float));
-  for (cl::Buffer& buffer : owners_) buffer = cl::Buffer(context_, CL_MEM_READ_WRITE, vertices * sizeof(cl_uint));
+  dependent_offsets_host_ = pull.dependent_offsets;
+  dependents_host_ = pull.dependents;
+  dirty_start_.resize(mesh.vertex_count());
+  for (cl::Buffer& buffer : states_) buffer = cl::Buffer(context_, CL_MEM_READ_WRITE, vertices * sizeof(VertexState));
   for (cl::Buffer& buffer : dirty_) buffer = cl::Buffer(context_, CL_MEM_READ_WRITE, vertices * sizeof(cl_uchar));
-  changed_at_ = cl::Buffer(context_, CL_MEM_READ_WRITE, vertices * sizeof(cl_uint));
-  round_changed_ = cl::Buffer(context_, CL_MEM_READ_WRITE, kLargestBatchRounds * sizeof(cl_uint));
+  round_changed_ = cl::Buffer(context_, CL_MEM_READ_WRITE, kBatchRounds * sizeof(cl_uint));
   kernel_.setArg(0, cl_uint(mesh.vertex_count()));
   kernel_.setArg(2, ring_offsets_);
   kernel_.setArg(3, ring_neighbors_);
@@ -154,8 +172,7 @@ DeviceSurfaceVoronoi::DeviceSurfaceVoronoi(const SurfaceMesh& mesh, const Device
   kernel_.setArg(6, pulls_);
   kernel_.setArg(7, dependent_offsets_);
   kernel_.setArg(8, dependents_);
-  kernel_.setArg(16, changed_at_);
-  kernel_.setArg(17, round_changed_);
+  kernel_.setArg(14, round_changed_);
 }
 
 SurfaceVoronoi DeviceSurfaceVoronoi::diagram(std::span<const SurfaceLocation> points) {
@@ -164,42 +181,54 @@ SurfaceVoronoi DeviceSurfaceVoronoi::diagram(std::span<const SurfaceLocation> po
   SurfaceVoronoi voronoi = seeded_surface_voronoi(mesh_, points, seeds);
   const std::size_t vertices = mesh_.vertex_count();
   if (seeds.empty() || vertices == 0) return voronoi;
-  queue_.enqueueWriteBuffer(distances_[0], CL_FALSE, 0, vertices * sizeof(cl_float), voronoi.distance.data());
-  queue_.enqueueWriteBuffer(owners_[0], CL_FALSE, 0, vertices * sizeof(cl_uint), voronoi.owner.data());
-  // Round 0 computes every vertex; its marks go to dirty_[1], clear before it.
-  queue_.enqueueFillBuffer(dirty_[0], cl_uchar(1), 0, vertices);
+  // Both buffers start as the seeds; round 0 computes the vertices that
+  // read a seed, from the seeds (stamped 1: changed before round 0).
+  std::vector<VertexState> states(vertices);
+  for (std::size_t v = 0; v < vertices; ++v) states[v] = {voronoi.distance[v], voronoi.owner[v], 0, 0};
+  std::fill(dirty_start_.begin(), dirty_start_.end(), cl_uchar(0));
+  for (const VertexId c : seeds) {
+    states[c].stamp = 1;
+    for (std::uint32_t k = dependent_offsets_host_[c]; k < dependent_offsets_host_[c + 1]; ++k) {
+      dirty_start_[dependents_host_[k]] = 1;
+    }
+  }
+  for (const cl::Buffer& buffer : states_) {
+    queue_.enqueueWriteBuffer(buffer, CL_FALSE, 0, vertices * sizeof(VertexState), states.data());
+  }
+  queue_.enqueueWriteBuffer(dirty_[0], CL_FALSE, 0, vertices, dirty_start_.data());
   queue_.enqueueFillBuffer(dirty_[1], cl_uchar(0), 0, vertices);
-  queue_.enqueueFillBuffer(changed_at_, cl_uint(0xFFFFFFFFu), 0, vertices * sizeof(cl_uint));
   // Lexicographic (distance, owner) falls at every change, so the rounds
   // end; this bound only guards against a broken device.
   const std::size_t most_rounds = 4 * vertices + 64;
-  std::size_t round = 0, batch = kFirstBatchRounds;
-  std::vector<cl_uint> changed(kLargestBatchRounds);
+  std::size_t round = 0;
+  const std::size_t batch = kBatchRounds;
+  std::vector<cl_uint> changed(kBatchRounds);
+  const std::size_t global = (vertices + work_group_size_ - 1) / work_group_size_ * work_group_size_;
   for (bool converged = false; !converged;) {
     if (round > most_rounds) throw std::runtime_error("the device's Voronoi diagram did not converge");
     queue_.enqueueFillBuffer(round_changed_, cl_uint(0), 0, batch * sizeof(cl_uint));
     for (std::size_t k = 0; k < batch; ++k, ++round) {
       kernel_.setArg(1, cl_uint(round));
-      kernel_.setArg(9, distances_[round % 2]);
-      kernel_.setArg(10, owners_[round % 2]);
-      kernel_.setArg(11, distances_[(round + 1) % 2]);
-      kernel_.setArg(12, owners_[(round + 1) % 2]);
-      kernel_.setArg(13, dirty_[round % 3]);
-      kernel_.setArg(14, dirty_[(round + 1) % 3]);
-      kernel_.setArg(15, dirty_[(round + 2) % 3]);
-      kernel_.setArg(18, cl_uint(k));
-      queue_.enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(vertices), cl::NullRange);
+      kernel_.setArg(9, states_[round % 2]);
+      kernel_.setArg(10, states_[(round + 1) % 2]);
+      kernel_.setArg(11, dirty_[round % 3]);
+      kernel_.setArg(12, dirty_[(round + 1) % 3]);
+      kernel_.setArg(13, dirty_[(round + 2) % 3]);
+      kernel_.setArg(15, cl_uint(k));
+      queue_.enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(work_group_size_));
     }
     queue_.enqueueReadBuffer(round_changed_, CL_TRUE, 0, batch * sizeof(cl_uint), changed.data());
     ++statistics_.batches;
     const auto rounds_changed = std::size_t(std::count(changed.begin(), changed.begin() + std::ptrdiff_t(batch), 1u));
     statistics_.rounds += rounds_changed;
     converged = rounds_changed < batch;
-    batch = std::min(2 * batch, kLargestBatchRounds);
   }
   // The last round changed nothing: the buffers it wrote hold every vertex.
-  queue_.enqueueReadBuffer(distances_[round % 2], CL_FALSE, 0, vertices * sizeof(cl_float), voronoi.distance.data());
-  queue_.enqueueReadBuffer(owners_[round % 2], CL_TRUE, 0, vertices * sizeof(cl_uint), voronoi.owner.data());
+  queue_.enqueueReadBuffer(states_[round % 2], CL_TRUE, 0, vertices * sizeof(VertexState), states.data());
+  for (std::size_t v = 0; v < vertices; ++v) {
+    voronoi.distance[v] = states[v].distance;
+    voronoi.owner[v] = states[v].owner;
+  }
   ++statistics_.diagrams;
   statistics_.seconds += seconds_since(started);
   return voronoi;

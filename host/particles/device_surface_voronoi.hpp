@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 #include <span>
 
 #include "mesh/surface_location.hpp"
@@ -56,7 +57,10 @@ class DeviceSurfaceVoronoi {
   cl::CommandQueue queue_;
   cl::Kernel kernel_;
   cl::Buffer ring_offsets_, ring_neighbors_, edge_lengths_, pull_offsets_, pulls_, dependent_offsets_, dependents_;
-  cl::Buffer distances_[2], owners_[2], dirty_[3], changed_at_, round_changed_;
+  cl::Buffer states_[2], dirty_[3], round_changed_;
+  std::vector<std::uint32_t> dependent_offsets_host_;  // what each seed marks for round 0
+  std::vector<VertexId> dependents_host_;
+  std::vector<cl_uchar> dirty_start_;
   Statistics statistics_;
 };
 

@@ -131,7 +131,15 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
                       {"longest_move", sweep.longest / d_hex},
                       {"ms", sweep.ms}});
   }
-  return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"sweeps", sweeps}};
+  const EveningDiagrams& diagrams = evening.diagrams;
+  nlohmann::json where = {{"on", diagrams.device.empty() ? "host" : "device"},
+                          {"count", diagrams.count},
+                          {"seconds", diagrams.seconds}};
+  if (!diagrams.device.empty()) {
+    where["device"] = diagrams.device;
+    where["rounds"] = diagrams.rounds;
+  }
+  return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"diagrams", where}, {"sweeps", sweeps}};
 }
 
 // The figures both methods' reports share, from its iterations or sweeps.
