@@ -48,15 +48,19 @@ PullStencils pull_stencils(const SurfaceMesh& mesh) {
   const std::size_t vertices = mesh.vertex_count();
   std::vector<std::pair<VertexId, PullUpdate>> records;  // (target, update)
   records.reserve(2 * stencils.triangles.size() + stencils.virtual_updates.size());
+  // Each update is listed twice, once under each corner it reads (C from
+  // (X, Y) under X, and from (Y, X) under Y: the same source placed in two
+  // frames). Pulled, the two would be computed together: the one under the
+  // smaller corner is kept.
   for (VertexId x = 0; x < vertices; ++x) {
     for (std::uint32_t k = stencils.triangle_offsets[x]; k < stencils.triangle_offsets[x + 1]; ++k) {
       const TriangleAtVertex& t = stencils.triangles[k];
-      records.push_back({t.b, {x, t.a, t.b_from_a}});
-      records.push_back({t.a, {x, t.b, t.a_from_b}});
+      if (x < t.a) records.push_back({t.b, {x, t.a, t.b_from_a}});
+      if (x < t.b) records.push_back({t.a, {x, t.b, t.a_from_b}});
     }
     for (std::uint32_t k = stencils.virtual_offsets[x]; k < stencils.virtual_offsets[x + 1]; ++k) {
       const VirtualUpdate& u = stencils.virtual_updates[k];
-      records.push_back({u.target, {x, u.other, u.frame}});
+      if (x < u.other) records.push_back({u.target, {x, u.other, u.frame}});
     }
   }
   std::stable_sort(records.begin(), records.end(),
@@ -109,7 +113,7 @@ void check_voronoi_memory(const DeviceDescription& device, std::uint64_t vertice
   const std::uint64_t buffers[] = {
       (vertices + 1) * sizeof(cl_uint) * 3,                    // the three offset arrays
       ring * (sizeof(cl_uint) + sizeof(cl_float)),             // one-rings, edge lengths
-      pulls,                                                   // the largest, about 250 B a vertex
+      pulls,                                                   // the largest, about 140 B a vertex
       dependent_entries * sizeof(cl_uint),
       vertices * (2 * sizeof(VertexState) + 3)};               // the states, dirty flags
   std::uint64_t total = 0;
@@ -131,9 +135,9 @@ constexpr std::size_t kWorkGroupSize = 256;
 }  // namespace
 
 void check_device_voronoi_fits(const DeviceDescription& device, std::uint64_t vertices) {
-  // A closed mesh's: six neighbours a vertex, each in two of its triangles'
-  // candidates, and about one virtual update a vertex.
-  check_voronoi_memory(device, vertices, 6 * vertices, 13 * vertices, 7 * vertices);
+  // A closed mesh's: six neighbours a vertex, a candidate from each of its
+  // six triangles, and about one virtual update a vertex.
+  check_voronoi_memory(device, vertices, 6 * vertices, 7 * vertices, 7 * vertices);
 }
 
 DeviceSurfaceVoronoi::DeviceSurfaceVoronoi(const SurfaceMesh& mesh, const DeviceDescription& device)
