@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -203,6 +204,41 @@ TEST(DeviceVoronoi, IsTheHostsDiagramOnACgalMesh) {
   if (!std::filesystem::exists(camel)) GTEST_SKIP() << camel << " is not here (set $MESHPARTICLES_CGAL_MESHES)";
   std::vector<std::string> warnings;
   expect_device_matches_host(read_mesh(camel.string(), warnings), "camel");
+}
+
+// The diagram alone, timed: host (fast marching, one thread) against the
+// device, the figures of docs/PERFORMANCE.md ("The evening's diagram on the
+// device"), and held to the host as above. $MESHPARTICLES_VORONOI_MESH (default
+// the committed atrium) and $MESHPARTICLES_VORONOI_N (default 1,024) choose the case.
+TEST(DeviceVoronoi, TimedAgainstTheHost) {
+  std::vector<std::string> warnings;
+  const char* given = std::getenv("MESHPARTICLES_VORONOI_MESH");
+  const SurfaceMesh mesh = given ? read_mesh(given, warnings) : committed("atrium.off");
+  const char* count = std::getenv("MESHPARTICLES_VORONOI_N");
+  const std::size_t n = count ? std::stoul(count) : 1024;
+  const std::vector<SurfaceLocation> points = random_surface_points(mesh, n, 5);
+  const auto marching = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
+  SolverScratch scratch;
+  constexpr int kRepeats = 5;
+  const auto ms_since = [](std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  };
+  SurfaceVoronoi host = surface_voronoi(mesh, *marching, points, scratch);
+  auto started = std::chrono::steady_clock::now();
+  for (int k = 0; k < kRepeats; ++k) host = surface_voronoi(mesh, *marching, points, scratch);
+  const double host_ms = ms_since(started) / kRepeats;
+  started = std::chrono::steady_clock::now();
+  DeviceSurfaceVoronoi device(mesh, select_device(""));
+  const double setup_ms = ms_since(started);
+  const SurfaceVoronoi first = device.diagram(points);
+  started = std::chrono::steady_clock::now();
+  for (int k = 0; k < kRepeats; ++k) EXPECT_EQ(device.diagram(points).owner, first.owner);
+  const double device_ms = ms_since(started) / kRepeats;
+  expect_within(compare_voronoi(mesh, *marching, points, first, host), kFastMarching, mesh.vertex_count(),
+                "fast marching");
+  std::cout << "[ info ] " << mesh.vertex_count() << " vertices, n = " << n << ": host " << host_ms
+            << " ms a diagram, device " << device_ms << " ms (" << device.statistics().rounds / (kRepeats + 1)
+            << " rounds; set-up once per mesh " << setup_ms << " ms) on " << device.device_name() << "\n";
 }
 
 TEST(DeviceVoronoi, ASecondSolverGivesTheSameBits) {
