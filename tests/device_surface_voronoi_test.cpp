@@ -108,6 +108,11 @@ VoronoiAgreement compare_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& 
     agreement.off_by_a_percent += std::size_t(relative > 0.01);
     if (device.owner[v] == host.owner[v]) continue;
     ++agreement.owners_changed;
+    if (device.owner[v] >= points.size() || host.owner[v] >= points.size()) {
+      ADD_FAILURE() << "vertex " << v << " at a finite distance belongs to no point: " << device.owner[v] << ", host "
+                    << host.owner[v];
+      continue;
+    }
     const double radius = 2 * std::max(d, h) + 4 * floor;
     const double from_device_owner = distance_from_point(mesh, solver, points[device.owner[v]], v, radius);
     const double from_host_owner = distance_from_point(mesh, solver, points[host.owner[v]], v, radius);
