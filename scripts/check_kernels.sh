@@ -50,6 +50,13 @@ COMPILE=(
   -Werror -Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wundef
   -I "$KERNELS" -S
 )
+# Files the host builds with FloatMath::exact (host/opencl/program_builder):
+# without unsafe math, division and square root correctly rounded. Compiled
+# so here (without the precompiled header, whose options differ), and their
+# PTX may hold no fused multiply-add and no approximate operation.
+EXACT_FILES="surface_voronoi.cl"
+EXACT_LANGUAGE=(-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt -target nvptx64-nvidia-nvcl)
+
 # Two modes. core: every size class, with no optional extension (libclc's
 # header needs the one it keeps), as any conformant OpenCL 1.2 device
 # builds them: an extension used without an #ifdef fails. unoptimized: once
@@ -103,6 +110,7 @@ plan() {
   compiles tiled_update.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES TILE_SIZE=$TILE_SIZES
   compiles tiled_update.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES CANDIDATE_SLOTS=$CANDIDATE_SLOTS POTENTIAL_GAUSS=$BOTH
   compiles fim_balls.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES SLOT_BITS=$SLOT_BITS
+  compiles surface_voronoi.cl
 }
 
 WORK="$(mktemp -d)"
@@ -162,8 +170,18 @@ compile_one() {
   log="$ptx.log"
   local command=("$CLANG" "${LANGUAGE[@]}" "${mode_flags[@]}" -include-pch "$WORK/$mode.pch" "${COMPILE[@]}" "$@"
                  -o "$ptx" "$source")
+  local exact=0
+  [[ " $EXACT_FILES " == *" $file "* ]] && exact=1
+  if [ "$exact" = 1 ]; then
+    command=("$CLANG" "${EXACT_LANGUAGE[@]}" "${mode_flags[@]}" -include /usr/include/clc/clc.h "${COMPILE[@]}" "$@"
+             -o "$ptx" "$source")
+  fi
   if ! "${command[@]}" >"$log" 2>&1; then
     { echo "check_kernels: FAILED $what"; cat "$log"; echo "command: ${command[*]}"; } >&2
+    exit 255
+  fi
+  if [ "$exact" = 1 ] && grep -Eq '^\s*(fma|mad)\.|\.approx' "$ptx"; then
+    echo "check_kernels: FAILED $what: built with exact math, its PTX fuses or approximates: $(grep -Em3 '^\s*(fma|mad)\.|\.approx' "$ptx" | tr -s ' \t' ' ')" >&2
     exit 255
   fi
   local undefined
@@ -175,11 +193,11 @@ compile_one() {
   rm -f "$ptx" "$log"
 }
 export -f compile_one undefined_functions
-export CLANG KERNELS WORK
+export CLANG KERNELS WORK EXACT_FILES
 
 count=$(wc -l <"$WORK/jobs")
 # Arrays do not cross into xargs' shells: pass them through declare -p.
-arrays=$(declare -p LANGUAGE COMPILE MODE_core MODE_unoptimized)
+arrays=$(declare -p LANGUAGE EXACT_LANGUAGE COMPILE MODE_core MODE_unoptimized)
 if ! xargs -P "$JOBS" -L 1 bash -c "$arrays; compile_one \"\$@\"" _ <"$WORK/jobs"; then
   echo "check_kernels: FAILED (above)" >&2
   exit 1

@@ -11,7 +11,7 @@ namespace meshparticles {
 
 namespace {
 
-constexpr int kRounds = 10;
+constexpr int kFitRounds = 10;
 constexpr double kKeptSpread = 3;     // vertices within this many robust deviations stay in the fit
 constexpr double kMostlyOn = 0.01;    // the median distance off the quadric, over the vertices' rms radius
 constexpr Eigen::Index kMaxPoints = 4000;
@@ -38,7 +38,7 @@ std::optional<EllipsoidBody> ellipsoid_body(const PointSet& vertices) {
   Eigen::Matrix3d quadric;
   Eigen::Vector3d linear;
   double constant = 0, typical = 0;
-  for (int round = 0; round < kRounds; ++round) {
+  for (int round = 0; round < kFitRounds; ++round) {
     // The unit coefficients nearest a null vector of the kept rows.
     const Eigen::Matrix<double, 10, 10> normal = rows.transpose() * kept.asDiagonal() * rows;
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 10, 10>> solver(normal);

@@ -5,13 +5,18 @@
 
 namespace meshparticles {
 
-std::string build_options(const KernelDefines& defines) {
+std::string build_options(const KernelDefines& defines, FloatMath math) {
   // Unsafe math lets the compiler reorder float sums, so the energy loops
   // vectorize (2-3x on PoCL); infinities keep their meaning (no
   // -cl-finite-math-only), which the blocked candidates and the distances
   // across components need. The order of a sum changes its last bits only;
   // the tests hold every kernel to the serial reference.
-  std::string options = "-cl-std=CL1.2 -cl-unsafe-math-optimizations";
+  // Exact: nothing fused (FP_CONTRACT OFF in the kernel holds only without
+  // unsafe math) and division and square root correctly rounded (OpenCL
+  // 1.2 allows 2.5 and 3 ulp otherwise; cached_program adds the option only
+  // where the device supports it).
+  std::string options =
+      math == FloatMath::fast ? "-cl-std=CL1.2 -cl-unsafe-math-optimizations" : "-cl-std=CL1.2";
   for (const auto& [name, value] : defines) options += " -D " + name + "=" + std::to_string(value);
   return options;
 }

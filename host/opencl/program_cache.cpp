@@ -39,10 +39,14 @@ cl::Context device_context(const cl::Device& device) {
 }
 
 cl::Program cached_program(const cl::Device& device, const std::vector<std::string>& kernel_files,
-                           const KernelDefines& defines) {
+                           const KernelDefines& defines, FloatMath math) {
   std::string source;
   for (const auto& file : kernel_files) source += kernel_source(file);
-  const std::string options = build_options(defines);
+  std::string options = build_options(defines, math);
+  if (math == FloatMath::exact &&
+      (device.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>() & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) != 0) {
+    options += " -cl-fp32-correctly-rounded-divide-sqrt";
+  }
   Cache& c = cache();
   const std::lock_guard lock(c.mutex);  // one build at a time: the compilers parallelize internally
   const auto key = std::make_tuple(device(), source, options);

@@ -6,6 +6,7 @@
 #include <limits>
 #include <thread>
 
+#include "common/elapsed.hpp"
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
@@ -321,8 +322,8 @@ std::vector<std::vector<std::uint32_t>> independent_sets(const NeighbourLists& l
 class Evening {
  public:
   Evening(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
-          const EveningLimits& limits, unsigned threads)
-      : mesh_(mesh), solver_(solver), walk_(mesh), limits_(limits), threads_(std::max(1u, threads)),
+          const EveningLimits& limits, unsigned threads, DeviceSurfaceVoronoi* device)
+      : mesh_(mesh), solver_(solver), device_(device), walk_(mesh), limits_(limits), threads_(std::max(1u, threads)),
         points_(std::move(points)), corners_(mesh, points_), visit_(points_.size(), 1),
         moved_in_set_(points_.size(), 0), stamp_(mesh.vertex_count(), 0) {
     for (unsigned k = 0; k < threads_; ++k) gaps_.emplace_back(mesh, solver);
@@ -374,7 +375,11 @@ class Evening {
   }
 
   EveningOutcome outcome(std::vector<EveningSweep> sweeps) {
-    return {std::move(points_), std::move(sweeps), cells_.cover()};
+    if (device_) {
+      diagrams_.device = device_->device_name();
+      diagrams_.rounds = device_->statistics().rounds;
+    }
+    return {std::move(points_), std::move(sweeps), cells_.cover(), diagrams_};
   }
 
  private:
@@ -405,7 +410,10 @@ class Evening {
 
   // The diagram of the particles where they are, and their neighbours in it.
   void find_neighbours() {
-    cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
+    const auto started = std::chrono::steady_clock::now();
+    cells_ = device_ ? device_->diagram(points_) : surface_voronoi(mesh_, solver_, points_, scratch_);
+    diagrams_.seconds += seconds_since(started);
+    ++diagrams_.count;
     lists_ = neighbour_lists(mesh_, cells_, points_, threads_);
     nearest_ = cells_.distance;
     owner_ = cells_.owner;
@@ -526,6 +534,8 @@ class Evening {
 
   const SurfaceMesh& mesh_;
   const GeodesicSolver& solver_;
+  DeviceSurfaceVoronoi* device_;  // the diagrams on the device, when given
+  EveningDiagrams diagrams_;
   const SurfaceWalk walk_;
   const EveningLimits limits_;
   const unsigned threads_;
@@ -562,14 +572,14 @@ class Evening {
 }  // namespace
 
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
-                        const EveningLimits& limits, unsigned threads, bool quiet) {
+                        const EveningLimits& limits, unsigned threads, bool quiet, DeviceSurfaceVoronoi* device) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   // Each thread marches with scratch arrays over the whole mesh: no more
   // threads than a quarter of the usable memory holds (--threads 1024 on
   // a working mesh of 4M vertices would ask 70 GB).
   const std::uint64_t scratch_bytes = kScratchBytesPerVertex * std::max<std::uint64_t>(mesh.vertex_count(), 1);
   threads = unsigned(std::clamp<std::uint64_t>(usable_host_memory_bytes() / 4 / scratch_bytes, 1, threads));
-  Evening evening(mesh, solver, std::move(points), limits, threads);
+  Evening evening(mesh, solver, std::move(points), limits, threads, device);
   std::vector<EveningSweep> sweeps;
   ProgressLine progress("even", limits.max_sweeps, quiet);
   for (std::size_t sweep = 1; sweep <= limits.max_sweeps; ++sweep) {

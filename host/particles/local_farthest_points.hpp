@@ -16,11 +16,13 @@
 // cap is gone, at no finer mesh.
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "geodesics/geodesic_solver.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/surface_walk.hpp"
+#include "particles/device_surface_voronoi.hpp"
 
 namespace meshparticles {
 
@@ -32,10 +34,19 @@ struct EveningSweep {
   double ms = 0;
 };
 
+// Where the sweeps' Voronoi diagrams were computed, and what they took.
+struct EveningDiagrams {
+  std::string device;    // empty: the host's surface_voronoi; else the device's name
+  std::size_t count = 0;
+  std::size_t rounds = 0;  // on a device: the rounds that changed something, all diagrams
+  double seconds = 0;      // all the diagrams, seeding to result
+};
+
 struct EveningOutcome {
   std::vector<SurfaceLocation> points;  // in the caller's order
   std::vector<EveningSweep> sweeps;
   double cover = 0;                     // the final points' geodesic covering radius (mesh units)
+  EveningDiagrams diagrams;
 };
 
 struct EveningLimits {
@@ -54,7 +65,10 @@ struct EveningLimits {
 // Each sweep's particles go in independent sets, each set's moves judged
 // on `threads` threads (0: every core). Deterministic: the same inputs give
 // the same bits, for any number of threads. Unless `quiet`, a progress line.
+// With `device` (built for `mesh`), each sweep's Voronoi diagram is the
+// device's (device_surface_voronoi), not the host's surface_voronoi.
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> start,
-                        const EveningLimits& limits, unsigned threads, bool quiet);
+                        const EveningLimits& limits, unsigned threads, bool quiet,
+                        DeviceSurfaceVoronoi* device = nullptr);
 
 }  // namespace meshparticles

@@ -29,12 +29,12 @@ std::vector<SurfacePath> SurfaceVoronoi::neighbour_paths(const SurfaceMesh& mesh
   return paths;
 }
 
-SurfaceVoronoi surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
-                               std::span<const SurfaceLocation> points, SolverScratch& scratch) {
+SurfaceVoronoi seeded_surface_voronoi(const SurfaceMesh& mesh, std::span<const SurfaceLocation> points,
+                                      std::vector<VertexId>& seeds) {
   SurfaceVoronoi voronoi;
   voronoi.distance.assign(mesh.vertex_count(), std::numeric_limits<float>::infinity());
   voronoi.owner.assign(mesh.vertex_count(), SurfaceVoronoi::kNoPoint);
-  std::vector<VertexId> seeds;
+  seeds.clear();
   for (std::uint32_t i = 0; i < points.size(); ++i) {
     for (const VertexId c : mesh.triangles()[points[i].triangle]) {
       const float d = float(distance(points[i].at, mesh.positions()[c]));
@@ -45,6 +45,13 @@ SurfaceVoronoi surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& so
       }
     }
   }
+  return voronoi;
+}
+
+SurfaceVoronoi surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                               std::span<const SurfaceLocation> points, SolverScratch& scratch) {
+  std::vector<VertexId> seeds;
+  SurfaceVoronoi voronoi = seeded_surface_voronoi(mesh, points, seeds);
   std::vector<std::uint32_t> seed_owners;
   for (const VertexId c : seeds) seed_owners.push_back(voronoi.owner[c]);
   std::vector<VertexId> lowered;

@@ -45,6 +45,14 @@ struct SurfaceVoronoi {
   std::vector<SurfacePath> neighbour_paths(const SurfaceMesh& mesh) const;
 };
 
+// The diagram's start, shared by the host (surface_voronoi) and the device
+// (device_surface_voronoi): each point's triangle corners at their straight
+// distance from it, a corner shared by several points' triangles going to
+// the nearest (ties: the first point); every other vertex +inf, no point.
+// `seeds`: the corners set, each once, in the order first set.
+SurfaceVoronoi seeded_surface_voronoi(const SurfaceMesh& mesh, std::span<const SurfaceLocation> points,
+                                      std::vector<VertexId>& seeds);
+
 // The diagram of `points` on `mesh`, measured by `solver` (built for `mesh`):
 // each point starts its triangle's corners at their straight distance from
 // it (a vertex shared by several points' triangles goes to the nearest).

@@ -11,6 +11,7 @@
 #include "mesh/midpoint_refinement.hpp"
 #include "mesh/point_insertion.hpp"
 #include "mesh/surface_walk.hpp"
+#include "particles/device_surface_voronoi.hpp"
 #include "pipeline/paper_method.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "quality/particle_sets.hpp"
@@ -44,6 +45,11 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
               << " vertices; the working mesh stops at "
               << refined_vertex_count(mesh, spread.working_mesh.levels) << " (the cap for time and memory: "
               << spread.working_mesh.max_vertices << ")\n";
+  }
+  // --device: the evening's diagrams there, refused now if the working mesh's would not fit.
+  if (!request.backend.device.empty()) {
+    spread.evening_device = select_device(request.backend.device);
+    check_device_voronoi_fits(*spread.evening_device, refined_vertex_count(mesh, spread.working_mesh.levels));
   }
   // Planned on the input: the working mesh has its area, so the same radius.
   const DistancesRequest measured = spread_distances(request.distances);
@@ -118,8 +124,14 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
   const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadMinGain * d_hex, kSpreadStallGain * d_hex,
                              cover_limit};
   std::optional<EveningOutcome>& evening = result.spread->evening;
+  std::optional<DeviceSurfaceVoronoi> device;
+  if (const auto& on = result.plan.spread->evening_device) {
+    device.emplace(surface, *on);
+    result.device = on->name;
+  }
   evening = naming_memory_failures(request.mesh_label, "evening the spacing", [&] {
-    return even_out(surface, solver, std::move(from), limits, request.distances.geodesics.threads, request.quiet);
+    return even_out(surface, solver, std::move(from), limits, request.distances.geodesics.threads, request.quiet,
+                    device ? &*device : nullptr);
   });
   InsertedPoints inserted = insert_points(*working, mesh, evening->points);
   result.outcome.positions = std::move(inserted.vertices);

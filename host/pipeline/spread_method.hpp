@@ -13,6 +13,7 @@
 
 #include "mesh/midpoint_refinement.hpp"
 #include "mesh/surface_mesh.hpp"
+#include "opencl/device_discovery.hpp"
 #include "particles/farthest_point_optimization.hpp"
 #include "particles/local_farthest_points.hpp"
 #include "particles/spacing_relaxation.hpp"
@@ -58,6 +59,9 @@ inline constexpr double kStraightCoverMargin = 1.03;
 struct SpreadPlan {
   double vertices_per_particle = 0;  // asked of the working mesh
   WorkingMeshPlan working_mesh;
+  // --device given: the evening's Voronoi diagrams on it
+  // (particles/device_surface_voronoi); else on the host.
+  std::optional<DeviceDescription> evening_device;
 };
 
 // What a spread run yields beside every method's result (RunResult::spread).

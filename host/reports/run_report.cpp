@@ -16,6 +16,9 @@ void add_spread_parameters(const RunPlan& plan, const SpreadPlan& spread, nlohma
   params["sweeps"] = plan.request.max_iterations;
   params["vertices_per_particle"] = spread.vertices_per_particle;
   params["relax_rounds"] = plan.request.relax_rounds.value_or(kSpreadRelaxRounds);
+  // Where the evening's diagrams go if it runs (evening.diagrams: where they went).
+  params["evening_diagrams"] = spread.evening_device ? "device" : "host";
+  if (spread.evening_device) params["evening_device"] = spread.evening_device->name;
 }
 
 // paper's parameters: its iterations and the backend as decided, with its sizes.
@@ -131,7 +134,15 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
                       {"longest_move", sweep.longest / d_hex},
                       {"ms", sweep.ms}});
   }
-  return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"sweeps", sweeps}};
+  const EveningDiagrams& diagrams = evening.diagrams;
+  nlohmann::json where = {{"on", diagrams.device.empty() ? "host" : "device"},
+                          {"count", diagrams.count},
+                          {"seconds", diagrams.seconds}};
+  if (!diagrams.device.empty()) {
+    where["device"] = diagrams.device;
+    where["rounds"] = diagrams.rounds;
+  }
+  return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"diagrams", where}, {"sweeps", sweeps}};
 }
 
 // The figures both methods' reports share, from its iterations or sweeps.

@@ -1,0 +1,67 @@
+#pragma once
+// The geodesic Voronoi diagram of points on a surface (surface_voronoi.hpp)
+// on an OpenCL device: kernels/surface_voronoi.cl, rounds of the fast
+// iterative method's updates, one work-item per vertex, from the same seeds
+// as the host's (seeded_surface_voronoi). The host's diagram is its oracle:
+// fast marching there, a label-correcting sweep here, the same stencils and
+// update (geodesics/triangle_stencils, kernels/point_source_update.h), so the
+// two agree to the methods' accuracy, not bit for bit (docs/GEODESICS.md,
+// "What runs where"). On one device the result is the same bits whatever the
+// scheduling: each round reads the last one's buffers only.
+//
+// The mesh's buffers stay on the device for the object's life: the evening
+// step asks for a diagram every sweep on the same mesh.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+#include <span>
+
+#include "mesh/surface_location.hpp"
+#include "mesh/surface_mesh.hpp"
+#include "opencl/device_discovery.hpp"
+#include "particles/surface_voronoi.hpp"
+
+namespace meshparticles {
+
+// Throws UserError when the device's diagram of a closed mesh of `vertices`
+// vertices would not fit `device`: what a plan checks before the mesh is
+// built (the constructor checks the mesh's own sizes).
+void check_device_voronoi_fits(const DeviceDescription& device, std::uint64_t vertices);
+
+class DeviceSurfaceVoronoi {
+ public:
+  struct Statistics {
+    std::size_t diagrams = 0;
+    std::size_t rounds = 0;    // rounds that changed something, over all diagrams
+    std::size_t batches = 0;   // host waits: one per batch of rounds
+    double seconds = 0;        // everything: seeding, uploads, rounds, reads
+  };
+
+  // Throws UserError, before any buffer is made, when the mesh's buffers
+  // would not fit `device`.
+  DeviceSurfaceVoronoi(const SurfaceMesh& mesh, const DeviceDescription& device);
+
+  // The diagram of `points` (points of the mesh's triangles), as
+  // surface_voronoi gives it.
+  SurfaceVoronoi diagram(std::span<const SurfaceLocation> points);
+
+  const std::string& device_name() const { return device_name_; }
+  const Statistics& statistics() const { return statistics_; }
+
+ private:
+  const SurfaceMesh& mesh_;
+  std::string device_name_;
+  std::size_t work_group_size_ = 0;
+  cl::Context context_;
+  cl::CommandQueue queue_;
+  cl::Kernel kernel_;
+  cl::Buffer ring_offsets_, ring_neighbors_, edge_lengths_, pull_offsets_, pulls_, dependent_offsets_, dependents_;
+  cl::Buffer states_[2], dirty_[3], round_changed_;
+  std::vector<std::uint32_t> dependent_offsets_host_;  // what each seed marks for round 0
+  std::vector<VertexId> dependents_host_;
+  std::vector<cl_uchar> dirty_start_;
+  Statistics statistics_;
+};
+
+}  // namespace meshparticles
