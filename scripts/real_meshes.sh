@@ -41,20 +41,7 @@ EXPECTED_REFUSALS=(b9.ply)  # a point cloud: its header declares 0 faces
 SUBSET=(mesh_with_colors.off prim.off cube_poly.off blobby-shuffled.off polygon_mesh.off pig.stl sphere.stl
         colored_tetra.ply sphere.ply b9.ply)
 
-ARCHIVE=/usr/share/doc/libcgal-dev/data.tar.gz
-if [ ! -f "$ARCHIVE" ]; then
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  echo "real_meshes: installing libcgal-demo" >&2
-  $SUDO apt-get update -qq >/dev/null
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends libcgal-demo >/dev/null
-fi
-CACHE="${XDG_CACHE_HOME:-$HOME/.cache}/meshparticles/cgal-data"
-if [ ! -d "$CACHE/data/meshes" ]; then
-  mkdir -p "$CACHE"
-  tar -xzf "$ARCHIVE" -C "$CACHE" data/meshes
-fi
-MESHES="$CACHE/data/meshes"
+MESHES="$("$ROOT/scripts/cgal_meshes.sh")"
 WORK="$(mktemp -d)"
 trap 'rm -rf "$WORK"' EXIT
 

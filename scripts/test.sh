@@ -37,6 +37,9 @@ CMAKE_OPTIONS="-DMESHPARTICLES_STRICT=ON -DMESHPARTICLES_PYTHON=ON -DCMAKE_CXX_C
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 step_done "install and build"
 cd "$ROOT/build"
+# CGAL's meshes, for the tests that read real meshes (installed and unpacked if missing).
+MESHPARTICLES_CGAL_MESHES="${MESHPARTICLES_CGAL_MESHES:-$("$ROOT/scripts/cgal_meshes.sh")}"
+export MESHPARTICLES_CGAL_MESHES
 # Tests run on PoCL whatever else the machine has, unless the caller chose.
 export MESHPARTICLES_DEVICE="${MESHPARTICLES_DEVICE:-Portable Computing Language}"
 if (($#)); then
