@@ -13,9 +13,9 @@
 // step asks for a diagram every sweep on the same mesh.
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
-#include <span>
 
 #include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
