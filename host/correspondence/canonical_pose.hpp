@@ -46,9 +46,10 @@ struct CanonicalPoseOptions {
   std::size_t landmarks = 200;
   // Take out the bend the form keeps (its across coordinates' quadratic
   // trend along the long axis): a bend that stretches the outer side is not
-  // isometric. With the raw relief, on bent-either, 1 of the 7 shapes bent
-  // the other way paired right without it and 2 with it; with the relief's
-  // slow trend taken out too, 6 of 7 (and the 4 bent the template's way).
+  // isometric. With the raw relief, on bent-either, none of the 8 shapes
+  // bent the other way paired right without it and 1 with it; with the
+  // relief's slow trend taken out too, 7 of 8 (and the 3 bent the
+  // template's way, as without).
   bool straighten = true;
   // Starts of the canonical fit: the shape's principal axes onto the
   // template's in the 24 proper ways, each also turned about the long axis
