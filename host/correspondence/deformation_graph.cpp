@@ -336,6 +336,17 @@ std::vector<FitPair> closest_pairs(const SurfaceMesh& template_mesh, const Point
   return pairs;
 }
 
+// Each template vertex (with a node) to its guide's shape vertex.
+std::vector<FitPair> guided_pairs(const std::vector<Eigen::Index>& guide, const PointSet& shape,
+                                  const PointSet& shape_normals, const DeformationGraph& graph) {
+  std::vector<FitPair> pairs;
+  for (std::size_t v = 0; v < guide.size(); ++v) {
+    if (graph.influence_offsets[v] == graph.influence_offsets[v + 1]) continue;
+    pairs.push_back({std::uint32_t(v), shape.row(guide[v]).transpose(), shape_normals.row(guide[v]).transpose()});
+  }
+  return pairs;
+}
+
 // The shape's vertex normals, turned round where most of them face against
 // the template's at the nearest points (its triangles wound the other way
 // round): else every pair would be left out.
@@ -453,7 +464,7 @@ GraphFit deform_by_graph(const SurfaceMesh& template_mesh, const PointSet& templ
 
 GraphFit deform_by_graph(const DeformationGraph& graph, const SurfaceMesh& template_mesh,
                          const PointSet& template_points, const SurfaceMesh& shape_mesh, const PointSet& shape_points,
-                         const DeformationGraphOptions& options) {
+                         const DeformationGraphOptions& options, const std::vector<Eigen::Index>* guide) {
   // In node spacings about the template's centroid: the weights mean the
   // same at any scale.
   const Eigen::RowVector3d centre = template_points.colwise().mean();
@@ -467,7 +478,9 @@ GraphFit deform_by_graph(const DeformationGraph& graph, const SurfaceMesh& templ
   for (double smooth = options.smooth_start; smooth >= options.smooth_floor; smooth /= 2) {
     for (int iteration = 0; iteration < options.iterations_per_stage; ++iteration) {
       const std::vector<FitPair> pairs =
-          closest_pairs(template_mesh, moved, shape, shape_normals, shape_tree, graph, min_cosine);
+          guide && smooth > options.guided_above
+              ? guided_pairs(*guide, shape, shape_normals, graph)
+              : closest_pairs(template_mesh, moved, shape, shape_normals, shape_tree, graph, min_cosine);
       const bool stepped = solve.step(pairs, smooth, options.rigid_ratio * smooth);
       PointSet next = solve.moved_points();
       const double largest_move = (next - moved).rowwise().norm().maxCoeff();

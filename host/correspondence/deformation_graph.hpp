@@ -64,6 +64,16 @@ struct DeformationGraphOptions {
   // `settled` node spacings.
   int iterations_per_stage = 6;
   double settled = 1e-4;
+  // Where a guide is given (deform_by_graph's `guide`: a shape vertex for
+  // each template vertex), the stages whose E_reg weight is above this pull
+  // each template vertex towards its guide's vertex instead of the nearest
+  // points: the template carried through a motion a closest-point fit does
+  // not find (a bend reversed), before the closest points take over. On
+  // bent-either with every open pose chosen canonically (n = 256), guiding
+  // the stages above 8 left three shapes 57 to 73 degrees off (spread
+  // 2.44 / 3.00 spacings); above 1, none (1.11 / 1.42, one shape whose
+  // canonical choice was wrong 180 degrees off).
+  double guided_above = 1;
 };
 
 // A node for each 100 vertices (32 to 64), at most 4 fits a stage: a fit
@@ -109,8 +119,10 @@ GraphFit deform_by_graph(const SurfaceMesh& template_mesh, const PointSet& templ
 
 // The same with the template's graph given (template_graph of these
 // template points, at these options).
+// `guide`, where given: a shape vertex for each template vertex
+// (DeformationGraphOptions::guided_above).
 GraphFit deform_by_graph(const DeformationGraph& graph, const SurfaceMesh& template_mesh,
                          const PointSet& template_points, const SurfaceMesh& shape_mesh, const PointSet& shape_points,
-                         const DeformationGraphOptions& options = {});
+                         const DeformationGraphOptions& options = {}, const std::vector<Eigen::Index>* guide = nullptr);
 
 }  // namespace meshparticles

@@ -15,6 +15,7 @@
 #include "common/text_format.hpp"
 #include "common/user_error.hpp"
 #include "correspondence/body_turn.hpp"
+#include "correspondence/canonical_pose.hpp"
 #include "correspondence/deformation_graph.hpp"
 #include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/geodesic_repair.hpp"
@@ -75,7 +76,7 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
 ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMesh& mesh, const SurfaceMesh& template_mesh,
                              const PointSet& template_points, const MeshAlignment& alignment,
                              const std::vector<SurfaceLocation>& template_particles, const DeformationGraph* graph,
-                             ShapeParticles& carried) {
+                             const std::vector<Eigen::Index>* guide, ShapeParticles& carried) {
   ShapeCorrespondence shape;
   shape.mesh = file;
   shape.vertices = mesh.vertex_count();
@@ -85,7 +86,7 @@ ShapeCorrespondence transfer(const std::filesystem::path& file, const SurfaceMes
   const Eigen::Matrix3d& stretch = shape.alignment.stretch;
   const PointSet common = (to_common.apply(vertex_points(mesh)) * stretch.transpose()).rowwise() +
                           shape.alignment.shift.transpose();
-  const PointSet deformed = graph ? deform_by_graph(*graph, template_mesh, template_points, mesh, common).moved
+  const PointSet deformed = graph ? deform_by_graph(*graph, template_mesh, template_points, mesh, common, {}, guide).moved
                                  : deform_template(template_mesh, template_points, common);
   const Eigen::Matrix3d unstretch = stretch.inverse();
   const NearestSurfacePoint nearest(mesh);
@@ -271,15 +272,22 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
 
 // Every owned shape's first pose: its fit onto the template where that
 // leaves one pose open, else the one of those in which the template's
-// relief lands on the shape's (relief_pose). A shape `turned_by_body` keeps
-// its fit's pose (choose_body_turns turns it later). Each owner decides its
-// own shapes: the same choice on any number of threads or processes.
+// relief lands on the shape's (relief_pose); where none lays it
+// (kWeakRelief), the pose its canonical form chooses (canonical_pose),
+// whose pairs then guide the shape's deformation (`guides`). A shape
+// `turned_by_body` keeps its fit's pose (choose_body_turns turns it later).
+// Each owner decides its own shapes: the same choice on any number of
+// threads or processes.
 std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const std::vector<std::optional<SurfaceMesh>>& meshes,
                                        ShapeShare& share, const Similarity& template_frame,
-                                       const PointSet& template_points, const std::vector<char>& turned_by_body) {
+                                       const PointSet& template_points, const std::vector<char>& turned_by_body,
+                                       std::vector<std::vector<Eigen::Index>>& guides) {
   const std::vector<std::size_t> owned = share.owned();
   const PointsTree template_tree(template_points);
   const ReliefTemplate relief_template(*meshes.front(), template_points);
+  // The template's canonical form, made for the first shape that needs it.
+  std::once_flag canonical_side;
+  std::optional<CanonicalTemplate> canonical_template;
   std::vector<MeshAlignment> alignments(meshes.size());
   SharedProgress fitting("align", owned.size(), request.quiet);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
@@ -295,11 +303,32 @@ std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const s
           choose_pose_by_relief(relief_template, *meshes[k], poses);
       alignments[k] = poses[choice.chosen];
       alignments[k].relief = choice.relief;
+      if (choice.relief.agreement < kWeakRelief) {
+        // No open pose lays the relief after the coarse fit: the canonical
+        // forms choose, and their pairs carry the template (FAUST's arms overhead).
+        std::call_once(canonical_side, [&] { canonical_template.emplace(*meshes.front(), template_points); });
+        if (std::optional<CanonicalPose> pose = choose_pose_canonically(*canonical_template, *meshes[k])) {
+          alignments[k] = pose->alignment;
+          guides[k] = std::move(pose->pairs);
+        }
+      }
     }
     fitting.advance();
   });
   fitting.finish();
   return alignments;
+}
+
+// `pose` (into the frame where the template lies at `from`) into the frame
+// where it lies at `to`.
+Similarity follow(const Similarity& from, const Similarity& to, const Similarity& pose) {
+  const Eigen::Matrix3d turn = to.rotation * from.rotation.transpose();
+  const double grow = to.scale / from.scale;
+  Similarity moved;
+  moved.scale = grow * pose.scale;
+  moved.rotation = turn * pose.rotation;
+  moved.translation = grow * (turn * (pose.translation - from.translation)) + to.translation;
+  return moved;
 }
 
 // Every owned shape's pose in the common frame (loading its mesh). A first
@@ -313,7 +342,8 @@ std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const s
 // (choose_body_turns). `template_points` follow the template where it moves.
 std::vector<MeshAlignment> align_population(const PopulationRequest& request,
                                             std::vector<std::optional<SurfaceMesh>>& meshes, ShapeShare& share,
-                                            const Similarity& template_frame, PointSet& template_points) {
+                                            const Similarity& template_frame, PointSet& template_points,
+                                            std::vector<std::vector<Eigen::Index>>& guides) {
   const std::size_t count = meshes.size();
   const std::vector<std::size_t> owned = share.owned();
   const SurfaceMesh& template_mesh = *meshes.front();
@@ -324,7 +354,7 @@ std::vector<MeshAlignment> align_population(const PopulationRequest& request,
     turned_by_body[k] = k != 0 && body_template && ellipsoid_body(vertex_points(*meshes[k])).has_value();
   });
   std::vector<MeshAlignment> alignments =
-      first_poses(request, meshes, share, template_frame, template_points, turned_by_body);
+      first_poses(request, meshes, share, template_frame, template_points, turned_by_body, guides);
   std::vector<std::vector<double>> aligned_message(count);
   for_each_index(owned, share.threads(), [&](std::size_t k) {
     const PointSet placed = alignments[k].to_common.apply(alignment_points(*meshes[k]));
@@ -371,6 +401,12 @@ std::vector<MeshAlignment> align_population(const PopulationRequest& request,
     if (template_again) template_points = template_again->to_common.apply(vertex_points(template_mesh));
     for_each_index(owned, share.threads(), [&](std::size_t k) {
       if (turned_by_body[k]) return;
+      if (!guides[k].empty()) {
+        // Its pose is the template's, carried by the canonical pairs: it
+        // moves where the template moves.
+        if (template_again) alignments[k].to_common = follow(template_frame, template_again->to_common, alignments[k].to_common);
+        return;
+      }
       const std::optional<MeshAlignment> again = k == 0 ? template_again : realign(k, *meshes[k], alignments[k]);
       if (again) alignments[k] = *again;
     });
@@ -411,8 +447,9 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   PointSet template_points = template_frame.apply(vertex_points(template_mesh));
 
   const std::vector<std::size_t> owned = share.owned();
+  std::vector<std::vector<Eigen::Index>> guides(count);  // a shape's canonical pairs, where they chose its pose
   const std::vector<MeshAlignment> alignments =
-      align_population(request, meshes, share, template_frame, template_points);
+      align_population(request, meshes, share, template_frame, template_points, guides);
   // The template's side of the transfer, made for the first shape not
   // resumed from the checkpoint (none, where every shape is).
   std::once_flag template_side;
@@ -447,7 +484,8 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
     } else {
       std::call_once(template_side, make_template_side);
       population.shapes[k] = transfer(request.meshes[k], *meshes[k], template_mesh, template_points, alignments[k],
-                                      template_particles, graph ? &*graph : nullptr, particles[k]);
+                                      template_particles, graph ? &*graph : nullptr,
+                                      guides[k].empty() ? nullptr : &guides[k], particles[k]);
       if (k != 0) population.shapes[k].repaired = repair_by_geodesics(template_distances, mesh, particles[k].at).moved;
       if (checkpoint) {
         checkpoint->write(shape_entry("transfer", k), {{"mesh", request.meshes[k].string()},

@@ -1,0 +1,256 @@
+#include "correspondence/canonical_pose.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include <Eigen/Eigenvalues>
+
+#include "correspondence/surface_relief.hpp"
+#include "correspondence/vertex_fields.hpp"
+#include "geodesics/solver_factory.hpp"
+#include "particles/initial_placement.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+// Two canonical fits whose rotations differ by less than this end in one pose.
+constexpr double kSamePoseDegrees = 30;
+
+// Six times the volume a closed mesh at `points` encloses, signed by its
+// triangles' winding (outward normals: positive).
+double signed_volume(const std::vector<Triangle>& triangles, const PointSet& points) {
+  double sum = 0;
+  for (const Triangle& t : triangles) {
+    const Eigen::Vector3d a = points.row(t[0]), b = points.row(t[1]), c = points.row(t[2]);
+    sum += a.dot(b.cross(c));
+  }
+  return sum;
+}
+
+std::vector<Vec3> canonical_positions(const PointSet& points) {
+  std::vector<Vec3> positions(std::size_t(points.rows()));
+  for (Eigen::Index i = 0; i < points.rows(); ++i) positions[std::size_t(i)] = {points(i, 0), points(i, 1), points(i, 2)};
+  return positions;
+}
+
+// The rows of `points` at every `stride`-th index.
+PointSet strided_rows(const PointSet& points, std::size_t most) {
+  const Eigen::Index stride = std::max<Eigen::Index>(1, (points.rows() + Eigen::Index(most) - 1) / Eigen::Index(most));
+  PointSet chosen((points.rows() + stride - 1) / stride, 3);
+  for (Eigen::Index i = 0, k = 0; i < points.rows(); i += stride, ++k) chosen.row(k) = points.row(i);
+  return chosen;
+}
+
+// A rigid fit of `moving` onto the tree's points (iterative closest points,
+// each step the Kabsch motion onto the nearest points), from `rotation`.
+struct RigidFit {
+  Eigen::Matrix3d rotation;
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  double rms = 0;
+};
+
+RigidFit canonical_fit(const PointSet& moving, const PointSet& target, const PointsTree& tree,
+                       const Eigen::Matrix3d& rotation, std::size_t iterations) {
+  RigidFit fit{rotation};
+  PointSet matched(moving.rows(), 3);
+  const Eigen::RowVector3d from = moving.colwise().mean();
+  const PointSet centred = moving.rowwise() - from;
+  for (std::size_t iteration = 0;; ++iteration) {
+    const PointSet current = (moving * fit.rotation.transpose()).rowwise() + fit.translation.transpose();
+    double squared = 0;
+    for (Eigen::Index i = 0; i < current.rows(); ++i) {
+      matched.row(i) = target.row(tree.nearest(current.row(i)).front());
+      squared += (matched.row(i) - current.row(i)).squaredNorm();
+    }
+    fit.rms = std::sqrt(squared / double(std::max<Eigen::Index>(1, current.rows())));
+    if (iteration == iterations) break;
+    const Eigen::RowVector3d to = matched.colwise().mean();
+    fit.rotation = best_rotation(centred, matched.rowwise() - to);
+    fit.translation = to.transpose() - fit.rotation * from.transpose();
+  }
+  return fit;
+}
+
+// The relief at a mesh's vertices (surface_relief), signed so that a bump
+// stands out whichever way its triangles are wound, less its own trend
+// over kReliefBand of the square root of the area: what a bend adds to it
+// (the outer side's curvature) varies slowly, a bump does not. On
+// bent-either, at the true pairs, the relief of a shape bent the other way
+// correlates 0.28 to 0.61 with the template's and its half turn's 0.46 to
+// 0.57; less its trend, 0.51 to 0.70 against 0.01 to 0.16.
+constexpr double kReliefBand = 0.1;
+
+Eigen::VectorXd outward_relief(const SurfaceMesh& mesh, const PointSet& points) {
+  Eigen::VectorXd relief = surface_relief(mesh, points);
+  if (signed_volume(mesh.triangles(), points) < 0) relief = -relief;
+  PointSet trend = PointSet::Zero(relief.size(), 3);
+  trend.col(0) = relief;
+  const int rounds = std::clamp(int(std::lround(2 * kReliefBand * kReliefBand * double(relief.size()) / 1.15)), 1, 1600);
+  smooth_over(mesh, trend, rounds);
+  return relief - trend.col(0);
+}
+
+}  // namespace
+
+std::optional<PointSet> canonical_form(const SurfaceMesh& mesh, const CanonicalPoseOptions& options) {
+  const std::size_t vertices = mesh.vertex_count();
+  const std::size_t count = std::min(options.landmarks, vertices);
+  if (count < 4) return std::nullopt;
+  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
+  PlacementRequest placement;
+  placement.init = Init::farthest;
+  placement.particle_count = count;
+  placement.start_vertex = 0;
+  const std::vector<VertexId> landmarks = place_particles(mesh, *solver, placement);
+  // Squared geodesic distances at unit area: row l from landmark l to every vertex.
+  const double unit_squared = 1.0 / mesh.area();
+  const Eigen::Index marks = Eigen::Index(count);
+  Eigen::MatrixXd squared(marks, Eigen::Index(vertices));
+  SolverScratch scratch;
+  scratch.fit(vertices);
+  std::vector<double> field(vertices);
+  for (std::size_t l = 0; l < count; ++l) {
+    solver->solve(landmarks[l], field, scratch);
+    for (std::size_t v = 0; v < vertices; ++v) {
+      if (!std::isfinite(field[v])) return std::nullopt;  // another component
+      squared(Eigen::Index(l), Eigen::Index(v)) = field[v] * field[v] * unit_squared;
+    }
+  }
+  // Classical scaling of the landmarks: B = -1/2 J D J, its three largest
+  // eigenpairs (the distances between landmarks made symmetric: a march
+  // measures each pair twice, slightly apart).
+  Eigen::MatrixXd between(marks, marks);
+  for (Eigen::Index a = 0; a < marks; ++a) {
+    for (Eigen::Index b = 0; b < marks; ++b) between(a, b) = squared(a, Eigen::Index(landmarks[std::size_t(b)]));
+  }
+  between = 0.5 * (between + between.transpose()).eval();
+  const Eigen::VectorXd mean_squared = between.rowwise().mean();
+  const Eigen::MatrixXd centring =
+      (Eigen::MatrixXd::Identity(marks, marks).array() - 1.0 / double(count)).matrix();
+  const Eigen::MatrixXd gram = -0.5 * centring * between * centring;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+  // Every vertex from its squared distances to the landmarks:
+  // y_k = -1/2 v_k^T (d - mean) / sqrt(lambda_k).
+  Eigen::Matrix<double, 3, Eigen::Dynamic> project(3, marks);
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Index column = marks - 1 - k;
+    const double lambda = eigen.eigenvalues()(column);
+    if (!(lambda > 0)) return std::nullopt;
+    project.row(k) = -0.5 * eigen.eigenvectors().col(column).transpose() / std::sqrt(lambda);
+  }
+  PointSet form = (project * (squared.colwise() - mean_squared)).transpose();
+  // The mirror image the scaling may return is not the shape's: its
+  // triangles must enclose the form the way they enclose the mesh.
+  const PointSet own = vertex_points(mesh);
+  if ((signed_volume(mesh.triangles(), form) < 0) != (signed_volume(mesh.triangles(), own) < 0)) {
+    form.col(2) = -form.col(2);
+  }
+  const Similarity frame = canonical_frame(SurfaceMesh(canonical_positions(form), mesh.triangles()));
+  form = frame.apply(form);
+  if (options.straighten) {
+    // What bend the form keeps (a bend that stretched the surface's outer
+    // side): its across coordinates' quadratic trend along the long axis,
+    // taken out.
+    Eigen::MatrixXd basis(form.rows(), 3);
+    basis.col(0).setOnes();
+    basis.col(1) = form.col(0);
+    basis.col(2) = form.col(0).array().square();
+    const Eigen::MatrixXd trend = basis.colPivHouseholderQr().solve(form.rightCols(2));
+    form.col(1) -= basis.col(2) * trend(2, 0);
+    form.col(2) -= basis.col(2) * trend(2, 1);
+    form = canonical_frame(SurfaceMesh(canonical_positions(form), mesh.triangles())).apply(form);
+  }
+  return form;
+}
+
+CanonicalTemplate::CanonicalTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points,
+                                     const CanonicalPoseOptions& pose_options)
+    : mesh(template_mesh),
+      points(template_points),
+      form(canonical_form(template_mesh, pose_options)),
+      relief(outward_relief(template_mesh, template_points)),
+      options(pose_options) {}
+
+std::optional<CanonicalPose> choose_pose_canonically(const CanonicalTemplate& reference, const SurfaceMesh& mesh) {
+  const CanonicalPoseOptions& options = reference.options;
+  if (!reference.form) return std::nullopt;
+  const std::optional<PointSet> form = canonical_form(mesh, options);
+  if (!form) return std::nullopt;
+  const PointSet& template_form = *reference.form;
+  const PointsTree template_tree(template_form);
+  const PointSet moving = strided_rows(*form, options.fit_points);
+
+  // Every start: a cube rotation, after a roll about the long axis.
+  std::vector<RigidFit> fits;
+  const int rolls = std::max(1, int(std::lround(90 / options.roll_degrees)));
+  for (int roll = 0; roll < rolls; ++roll) {
+    const Eigen::Matrix3d rolled =
+        Eigen::AngleAxisd(roll * options.roll_degrees * std::numbers::pi / 180, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    for (const Eigen::Matrix3d& turn : cube_rotations()) {
+      fits.push_back(canonical_fit(moving, template_form, template_tree, turn * rolled, options.fit_iterations));
+    }
+  }
+  // The distinct ends within open_ratio of the best, least rms first.
+  std::vector<std::size_t> order(fits.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fits[a].rms < fits[b].rms; });
+  std::vector<std::size_t> open;
+  for (const std::size_t k : order) {
+    if (fits[k].rms > options.open_ratio * fits[order.front()].rms) break;
+    const bool another = std::all_of(open.begin(), open.end(), [&](std::size_t p) {
+      return turn_angle(fits[p].rotation, fits[k].rotation) >= kSamePoseDegrees;
+    });
+    if (another) open.push_back(k);
+  }
+  // Each told by where the template's relief lands on the shape's.
+  const PointSet own = vertex_points(mesh);
+  const Eigen::VectorXd relief = outward_relief(mesh, own);
+  std::vector<double> agreements;
+  std::vector<std::vector<Eigen::Index>> pairings;
+  for (const std::size_t k : open) {
+    const PointSet placed = (*form * fits[k].rotation.transpose()).rowwise() + fits[k].translation.transpose();
+    const PointsTree tree(placed);
+    std::vector<Eigen::Index>& pairs = pairings.emplace_back(std::size_t(template_form.rows()));
+    for (Eigen::Index v = 0; v < template_form.rows(); ++v) pairs[std::size_t(v)] = tree.nearest(template_form.row(v)).front();
+    agreements.push_back(relief_agreement(reference.relief, relief, pairs));
+  }
+  std::size_t chosen = 0;
+  for (std::size_t c = 1; c < open.size(); ++c) {
+    if (agreements[c] > agreements[chosen]) chosen = c;
+  }
+  CanonicalPose pose;
+  pose.pairs = std::move(pairings[chosen]);
+  MeshAlignment::Relief& told = pose.alignment.relief;
+  told.measured = true;
+  told.agreement = agreements[chosen];
+  for (std::size_t c = 0; c < open.size(); ++c) {
+    if (c == chosen || !(agreements[c] > told.runner_up)) continue;
+    told.runner_up = agreements[c];
+    told.runner_up_degrees = turn_angle(fits[open[c]].rotation, fits[open[chosen]].rotation);
+  }
+
+  // The pose in the shape's own space: the rigid motion, at unit area, that
+  // lays each template vertex's partner over it.
+  const double scale = 1 / std::sqrt(mesh.area());
+  PointSet partners(reference.points.rows(), 3);
+  for (Eigen::Index v = 0; v < partners.rows(); ++v) partners.row(v) = scale * own.row(pose.pairs[std::size_t(v)]);
+  const Eigen::RowVector3d from = partners.colwise().mean(), to = reference.points.colwise().mean();
+  Similarity& to_common = pose.alignment.to_common;
+  to_common.scale = scale;
+  to_common.rotation = best_rotation(partners.rowwise() - from, reference.points.rowwise() - to);
+  to_common.translation = to.transpose() - to_common.rotation * from.transpose();
+  const PointSet placed = to_common.apply(alignment_points(mesh));
+  const PointsTree points_tree(reference.points);
+  double squared = 0;
+  for (Eigen::Index i = 0; i < placed.rows(); ++i) {
+    squared += (reference.points.row(points_tree.nearest(placed.row(i)).front()) - placed.row(i)).squaredNorm();
+  }
+  pose.alignment.rms = std::sqrt(squared / double(std::max<Eigen::Index>(1, placed.rows())));
+  pose.alignment.from_principal_axes = true;
+  return pose;
+}
+
+}  // namespace meshparticles
