@@ -6,6 +6,7 @@
 #include "common/elapsed.hpp"
 #include "common/user_error.hpp"
 #include "opencl/program_cache.hpp"
+#include "opencl/read_only_buffer.hpp"
 
 namespace meshparticles {
 
@@ -26,14 +27,6 @@ unsigned slot_bits_for(const DeviceDescription& device) {
     if ((std::uint64_t{1} << bits) * kBytesPerSlot + 64 <= device.local_memory_bytes) return bits;
   }
   return kSmallestSlotBits;
-}
-
-template <typename T>
-cl::Buffer read_only(const cl::Context& context, const std::vector<T>& values) {
-  // A buffer may not be empty: a mesh without virtual updates gets one unread entry.
-  if (values.empty()) return cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(T));
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, values.size() * sizeof(T),
-                    const_cast<T*>(values.data()));
 }
 
 }  // namespace
@@ -78,13 +71,13 @@ DeviceBallSolver::DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeM
       {{"SLOT_BITS", slot_bits_}, {"WORK_GROUP_SIZE", static_cast<long long>(work_group_size_)}});
   kernel_ = cl::Kernel(program, "fim_balls");
   const TriangleStencils& stencils = host_.stencils();
-  ring_offsets_ = read_only(context_, mesh.ring_offsets());
-  ring_neighbors_ = read_only(context_, mesh.ring_neighbors());
-  edge_lengths_ = read_only(context_, host_.edge_lengths());
-  triangle_offsets_ = read_only(context_, stencils.triangle_offsets);
-  triangles_ = read_only(context_, stencils.triangles);
-  virtual_offsets_ = read_only(context_, stencils.virtual_offsets);
-  virtual_updates_ = read_only(context_, stencils.virtual_updates);
+  ring_offsets_ = read_only_buffer(context_, mesh.ring_offsets());
+  ring_neighbors_ = read_only_buffer(context_, mesh.ring_neighbors());
+  edge_lengths_ = read_only_buffer(context_, host_.edge_lengths());
+  triangle_offsets_ = read_only_buffer(context_, stencils.triangle_offsets);
+  triangles_ = read_only_buffer(context_, stencils.triangles);
+  virtual_offsets_ = read_only_buffer(context_, stencils.virtual_offsets);
+  virtual_updates_ = read_only_buffer(context_, stencils.virtual_updates);
   sources_ = cl::Buffer(context_, CL_MEM_READ_ONLY, balls_per_launch_ * sizeof(cl_uint));
   ball_vertices_ = cl::Buffer(context_, CL_MEM_WRITE_ONLY, balls_per_launch_ * slots() * sizeof(cl_uint));
   ball_distances_ = cl::Buffer(context_, CL_MEM_WRITE_ONLY, balls_per_launch_ * slots() * sizeof(cl_float));

@@ -10,6 +10,7 @@
 #include "geodesics/geodesic_solver.hpp"
 #include "geodesics/triangle_stencils.hpp"
 #include "opencl/program_cache.hpp"
+#include "opencl/read_only_buffer.hpp"
 
 namespace meshparticles {
 
@@ -98,14 +99,6 @@ PullStencils pull_stencils(const SurfaceMesh& mesh) {
   return pull;
 }
 
-template <typename T>
-cl::Buffer device_copy(const cl::Context& context, const std::vector<T>& values) {
-  // A buffer may not be empty: a mesh without stencils gets one unread entry.
-  if (values.empty()) return cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(T));
-  return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, values.size() * sizeof(T),
-                    const_cast<T*>(values.data()));
-}
-
 // Throws UserError when the diagram's buffers would not fit `device`.
 void check_voronoi_memory(const DeviceDescription& device, std::uint64_t vertices, std::uint64_t ring,
                           std::uint64_t pull_entries, std::uint64_t dependent_entries) {
@@ -155,13 +148,13 @@ DeviceSurfaceVoronoi::DeviceSurfaceVoronoi(const SurfaceMesh& mesh, const Device
       {kWorkGroupSize, device.max_work_group_size,
        kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(device.device)});
   const std::size_t vertices = std::max<std::size_t>(mesh.vertex_count(), 1);
-  ring_offsets_ = device_copy(context_, mesh.ring_offsets());
-  ring_neighbors_ = device_copy(context_, mesh.ring_neighbors());
-  edge_lengths_ = device_copy(context_, ring_edge_lengths(mesh));
-  pull_offsets_ = device_copy(context_, pull.offsets);
-  pulls_ = device_copy(context_, pull.updates);
-  dependent_offsets_ = device_copy(context_, pull.dependent_offsets);
-  dependents_ = device_copy(context_, pull.dependents);
+  ring_offsets_ = read_only_buffer(context_, mesh.ring_offsets());
+  ring_neighbors_ = read_only_buffer(context_, mesh.ring_neighbors());
+  edge_lengths_ = read_only_buffer(context_, ring_edge_lengths(mesh));
+  pull_offsets_ = read_only_buffer(context_, pull.offsets);
+  pulls_ = read_only_buffer(context_, pull.updates);
+  dependent_offsets_ = read_only_buffer(context_, pull.dependent_offsets);
+  dependents_ = read_only_buffer(context_, pull.dependents);
   dependent_offsets_host_ = pull.dependent_offsets;
   dependents_host_ = pull.dependents;
   dirty_start_.resize(mesh.vertex_count());
