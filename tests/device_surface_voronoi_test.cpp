@@ -34,6 +34,7 @@
 #include "pipeline/point_set_measurement.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "quality/distribution_quality.hpp"
+#include "evening_start.hpp"
 #include "test_files.hpp"
 
 namespace meshparticles::testing {
@@ -281,19 +282,10 @@ namespace {
 // spread's evening (particles/local_farthest_points) from the sweeps'
 // vertices of a farthest start, its diagrams on the host or on `device`.
 EveningOutcome evening_from_sweeps(const SurfaceMesh& mesh, std::size_t particles, DeviceSurfaceVoronoi* device) {
-  const auto solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
-  const double d_hex = hexagonal_spacing(mesh.area(), particles);
-  PlacementRequest placement;
-  placement.init = Init::farthest;
-  placement.particle_count = particles;
-  const std::vector<VertexId> start = place_particles(mesh, *solver, placement, true);
-  const SpreadOutcome swept = optimize_farthest_points(mesh, *solver, start, 100, 1e-3 * d_hex, 1e-4 * d_hex, true);
-  double cover = 0;
-  for (const float d : distance_to_nearest_particle(*solver, mesh, start)) cover = std::max(cover, double(d));
-  const SurfaceWalk walk(mesh);
-  std::vector<SurfaceLocation> from;
-  for (const VertexId v : swept.positions) from.push_back(walk.at_vertex(v));
-  return even_out(mesh, *solver, from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, 1.1 * cover}, 2, true, device);
+  const EveningStart s = evening_start(mesh, particles);
+  const double d_hex = s.d_hex;
+  return even_out(mesh, *s.solver, s.from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, 1.1 * s.start_cover}, 2, true,
+                  device);
 }
 
 DistributionQuality evened_quality(const SurfaceMesh& mesh, const EveningOutcome& outcome) {

@@ -25,6 +25,7 @@
 #include "pipeline/point_set_measurement.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "quality/distribution_quality.hpp"
+#include "evening_start.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -111,28 +112,18 @@ struct Evened {
 // `threads`: the evening's (0: every core).
 Evened even_the_fold(std::size_t particles, double cover_share = 1.1, unsigned threads = 0) {
   const SurfaceMesh mesh = folded_strip();
-  const auto solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
-  const double d_hex = hexagonal_spacing(mesh.area(), particles);
-  PlacementRequest placement;
-  placement.init = Init::farthest;
-  placement.particle_count = particles;
-  const std::vector<VertexId> start = place_particles(mesh, *solver, placement, true);
-  const SpreadOutcome swept = optimize_farthest_points(mesh, *solver, start, 100, 1e-3 * d_hex, 1e-4 * d_hex, true);
+  const EveningStart s = evening_start(mesh, particles);
   Evened result;
-  for (const VertexId v : swept.positions) result.swept.push_back(mesh.positions()[v]);
-  double cover = 0;
-  for (const float d : distance_to_nearest_particle(*solver, mesh, start)) cover = std::max(cover, double(d));
-  result.start_cover = cover;
-  result.limit = cover_share * cover;
+  for (const VertexId v : s.swept.positions) result.swept.push_back(mesh.positions()[v]);
+  result.start_cover = s.start_cover;
+  result.limit = cover_share * s.start_cover;
   if (cover_share == 0) {
-    for (const float d : distance_to_nearest_particle(*solver, mesh, swept.positions)) {
+    for (const float d : distance_to_nearest_particle(*s.solver, mesh, s.swept.positions)) {
       result.limit = std::max(result.limit, double(d));
     }
   }
-  const SurfaceWalk walk(mesh);
-  std::vector<SurfaceLocation> from;
-  for (const VertexId v : swept.positions) from.push_back(walk.at_vertex(v));
-  result.outcome = even_out(mesh, *solver, from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, result.limit}, threads, true);
+  const double d_hex = s.d_hex;
+  result.outcome = even_out(mesh, *s.solver, s.from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, result.limit}, threads, true);
   for (const SurfaceLocation& p : result.outcome.points) result.evened.push_back(p.at);
   return result;
 }
