@@ -30,20 +30,6 @@ double signed_volume(const std::vector<Triangle>& triangles, const PointSet& poi
   return sum;
 }
 
-std::vector<Vec3> canonical_positions(const PointSet& points) {
-  std::vector<Vec3> positions(std::size_t(points.rows()));
-  for (Eigen::Index i = 0; i < points.rows(); ++i) positions[std::size_t(i)] = {points(i, 0), points(i, 1), points(i, 2)};
-  return positions;
-}
-
-// The rows of `points` at every `stride`-th index.
-PointSet strided_rows(const PointSet& points, std::size_t most) {
-  const Eigen::Index stride = std::max<Eigen::Index>(1, (points.rows() + Eigen::Index(most) - 1) / Eigen::Index(most));
-  PointSet chosen((points.rows() + stride - 1) / stride, 3);
-  for (Eigen::Index i = 0, k = 0; i < points.rows(); i += stride, ++k) chosen.row(k) = points.row(i);
-  return chosen;
-}
-
 // A rigid fit of `moving` onto the tree's points (iterative closest points,
 // each step the Kabsch motion onto the nearest points), from `rotation`.
 struct RigidFit {
@@ -148,7 +134,7 @@ std::optional<PointSet> canonical_form(const SurfaceMesh& mesh, const CanonicalP
   if ((signed_volume(mesh.triangles(), form) < 0) != (signed_volume(mesh.triangles(), own) < 0)) {
     form.col(2) = -form.col(2);
   }
-  const Similarity frame = canonical_frame(SurfaceMesh(canonical_positions(form), mesh.triangles()));
+  const Similarity frame = canonical_frame(SurfaceMesh(positions_of(form), mesh.triangles()));
   form = frame.apply(form);
   if (options.straighten) {
     // What bend the form keeps (a bend that stretched the surface's outer
@@ -161,7 +147,7 @@ std::optional<PointSet> canonical_form(const SurfaceMesh& mesh, const CanonicalP
     const Eigen::MatrixXd trend = basis.colPivHouseholderQr().solve(form.rightCols(2));
     form.col(1) -= basis.col(2) * trend(2, 0);
     form.col(2) -= basis.col(2) * trend(2, 1);
-    form = canonical_frame(SurfaceMesh(canonical_positions(form), mesh.triangles())).apply(form);
+    form = canonical_frame(SurfaceMesh(positions_of(form), mesh.triangles())).apply(form);
   }
   return form;
 }

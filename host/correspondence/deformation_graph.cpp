@@ -47,12 +47,6 @@ constexpr std::size_t kMostNodesPerVertex = 8;
 using Affine = Eigen::Matrix<double, 3, 4>;  // [A_j | t_j]: column-major, its 12 unknowns in order
 using Block = Eigen::Matrix<double, 12, 12>;
 
-std::vector<Vec3> positions_of(const PointSet& points) {
-  std::vector<Vec3> positions(std::size_t(points.rows()));
-  for (Eigen::Index i = 0; i < points.rows(); ++i) positions[std::size_t(i)] = {points(i, 0), points(i, 1), points(i, 2)};
-  return positions;
-}
-
 std::size_t node_count(std::size_t vertices, const DeformationGraphOptions& options) {
   const std::size_t wanted = std::clamp(vertices / options.vertices_per_node, options.min_nodes, options.max_nodes);
   return std::min(wanted, vertices);

@@ -26,17 +26,8 @@ constexpr std::size_t kTrialIterations = 8;
 // Trials that end this far from the chosen pose are another pose.
 constexpr double kOtherPoseDegrees = 30;
 
-// Every `stride`-th row of `points`, from the first.
-PointSet every_kth_row(const PointSet& points, Eigen::Index stride) {
-  PointSet chosen((points.rows() + stride - 1) / stride, 3);
-  for (Eigen::Index i = 0, k = 0; i < points.rows(); i += stride, ++k) chosen.row(k) = points.row(i);
-  return chosen;
-}
-
 // The vertices the fit uses: all, or every k-th of a large mesh.
-PointSet fit_points(const PointSet& points) {
-  return every_kth_row(points, std::max<Eigen::Index>(1, (points.rows() + kMaxFitPoints - 1) / kMaxFitPoints));
-}
+PointSet fit_points(const PointSet& points) { return strided_rows(points, std::size_t(kMaxFitPoints)); }
 
 // A closest-point fit's map (x -> linear x + translation), the rms distance
 // to the nearest points before its last step, and its iterations.
@@ -148,6 +139,13 @@ double one_way_squared(const PointSet& a, const PointSet& b, const PointsTree& b
 
 double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree) {
   return std::sqrt(0.5 * (one_way_squared(a, b, b_tree) + one_way_squared(b, a, a_tree)));
+}
+
+PointSet strided_rows(const PointSet& points, std::size_t most) {
+  const Eigen::Index stride = std::max<Eigen::Index>(1, (points.rows() + Eigen::Index(most) - 1) / Eigen::Index(most));
+  PointSet chosen((points.rows() + stride - 1) / stride, 3);
+  for (Eigen::Index i = 0, k = 0; i < points.rows(); i += stride, ++k) chosen.row(k) = points.row(i);
+  return chosen;
 }
 
 PointSet alignment_points(const SurfaceMesh& mesh) { return fit_points(vertex_points(mesh)); }

@@ -83,6 +83,10 @@ inline constexpr double kOpenPoseRatio = 1.15;
 // The vertices an alignment fits: all, or every k-th of a large mesh.
 PointSet alignment_points(const SurfaceMesh& mesh);
 
+// At most `most` rows of `points`, evenly strided from the first (all where
+// there are no more).
+PointSet strided_rows(const PointSet& points, std::size_t most);
+
 using PointsTree = MatrixRowTree<PointSet>;
 
 // The symmetric rms distance between two shapes' points (each to the

@@ -16,6 +16,12 @@ PointSet vertex_normals(const std::vector<Triangle>& triangles, const PointSet& 
   return normals;
 }
 
+std::vector<Vec3> positions_of(const PointSet& points) {
+  std::vector<Vec3> positions(std::size_t(points.rows()));
+  for (Eigen::Index i = 0; i < points.rows(); ++i) positions[std::size_t(i)] = {points(i, 0), points(i, 1), points(i, 2)};
+  return positions;
+}
+
 void smooth_over(const SurfaceMesh& mesh, PointSet& field, int rounds) {
   PointSet next(field.rows(), 3);
   for (int round = 0; round < rounds; ++round) {

@@ -13,6 +13,10 @@ namespace meshparticles {
 // vertex's triangles have no area: such a vertex agrees with no normal).
 PointSet vertex_normals(const std::vector<Triangle>& triangles, const PointSet& points);
 
+// The rows of `points` as a mesh's positions: a moved or embedded copy of
+// a mesh is SurfaceMesh(positions_of(points), mesh.triangles()).
+std::vector<Vec3> positions_of(const PointSet& points);
+
 // Each row replaced by the mean of itself and its one-ring's, `rounds`
 // times: like diffusion, it reaches about sqrt(rounds / 2) edges.
 void smooth_over(const SurfaceMesh& mesh, PointSet& field, int rounds);
