@@ -23,7 +23,8 @@ the largest distance of a particle from its shape's surface (a particle
 off the surface maps to a wrong parameter), and per shape (in --json's
 per_shape) how far its particles lie from particle i's mean place on
 average, and by what angle its particles are turned from those places as a
-whole (a shape posed wrongly is turned by tens of degrees). Uses Debian's
+whole (a shape posed wrongly is turned by tens of degrees) and from the
+first shape's (the template's, for correspond). Uses Debian's
 python3-numpy.
 """
 import argparse
@@ -115,7 +116,8 @@ def spread(population, files):
         "mean": float(per_particle.mean()),
         "p90": float(np.percentile(per_particle, 90)),
         "largest_off_surface": off_surface,
-        "per_shape": [{"file": str(file), "mean": float(angle[s].mean() / spacing), "turn_degrees": turn_degrees(u[s], mean)}
+        "per_shape": [{"file": str(file), "mean": float(angle[s].mean() / spacing), "turn_degrees": turn_degrees(u[s], mean),
+                       "turn_from_first_degrees": turn_degrees(u[s], u[0])}
                       for s, file in enumerate(files)],
     }
 

@@ -54,4 +54,23 @@ no_shape_turned radii 1 0.35
 # 180 degrees by its fit alone, median spread 0.96). The population chooses
 # among the poses the fits leave open.
 no_shape_turned bent 3 0.3
+
+# Bent either way (seed 5, 12 shapes): every shape bent the template's way
+# keeps the pose its bumps chose, not turned from the template (a rigid fit
+# onto a medoid bent the other way turned one half round, judged by the
+# silhouette). Those bent the other way are not held to it (docs/CORRESPONDENCE.md).
+"$bin" generate --population 12 --family bent-either --vertices 2000 --seed 5 --out-dir "$work/either" 2>/dev/null
+"$bin" correspond "$work/either" -n 64 --samples 20 -q --out "$work/either_correspond" >/dev/null
+/usr/bin/python3 "$scripts/correspondence_error.py" "$work/either/population.json" \
+  "$work/either_correspond"/shapes/*.particles --json "$work/either_score.json" >/dev/null
+/usr/bin/python3 - "$work/either/population.json" "$work/either_score.json" <<'CHECK' || fail "bent either way: a shape bent as the template lies turned from it"
+import json, sys
+shapes = json.load(open(sys.argv[1]))["shapes"]
+scored = json.load(open(sys.argv[2]))["per_shape"]
+turned = [(shape["mesh"], score["turn_from_first_degrees"]) for shape, score in zip(shapes, scored)
+          if shape["bend_side"] == shapes[0]["bend_side"] and score["turn_from_first_degrees"] > 20]
+for mesh, degrees in turned:
+    print(f"{mesh}: bent as the template, turned {degrees:.0f} degrees from it")
+sys.exit(bool(turned))
+CHECK
 echo "ok"

@@ -19,17 +19,6 @@ namespace {
 // Two canonical fits whose rotations differ by less than this end in one pose.
 constexpr double kSamePoseDegrees = 30;
 
-// Six times the volume a closed mesh at `points` encloses, signed by its
-// triangles' winding (outward normals: positive).
-double signed_volume(const std::vector<Triangle>& triangles, const PointSet& points) {
-  double sum = 0;
-  for (const Triangle& t : triangles) {
-    const Eigen::Vector3d a = points.row(t[0]), b = points.row(t[1]), c = points.row(t[2]);
-    sum += a.dot(b.cross(c));
-  }
-  return sum;
-}
-
 // A rigid fit of `moving` onto the tree's points (iterative closest points,
 // each step the Kabsch motion onto the nearest points), from `rotation`.
 struct RigidFit {
@@ -58,25 +47,6 @@ RigidFit canonical_fit(const PointSet& moving, const PointSet& target, const Poi
     fit.translation = to.transpose() - fit.rotation * from.transpose();
   }
   return fit;
-}
-
-// The relief at a mesh's vertices (surface_relief), signed so that a bump
-// stands out whichever way its triangles are wound, less its own trend
-// over kReliefBand of the square root of the area: what a bend adds to it
-// (the outer side's curvature) varies slowly, a bump does not. On
-// bent-either, at the true pairs, the relief of a shape bent the other way
-// correlates 0.28 to 0.61 with the template's and its half turn's 0.46 to
-// 0.57; less its trend, 0.51 to 0.70 against 0.01 to 0.16.
-constexpr double kReliefBand = 0.1;
-
-Eigen::VectorXd outward_relief(const SurfaceMesh& mesh, const PointSet& points) {
-  Eigen::VectorXd relief = surface_relief(mesh, points);
-  if (signed_volume(mesh.triangles(), points) < 0) relief = -relief;
-  PointSet trend = PointSet::Zero(relief.size(), 3);
-  trend.col(0) = relief;
-  const int rounds = std::clamp(int(std::lround(2 * kReliefBand * kReliefBand * double(relief.size()) / 1.15)), 1, 1600);
-  smooth_over(mesh, trend, rounds);
-  return relief - trend.col(0);
 }
 
 }  // namespace
@@ -157,7 +127,7 @@ CanonicalTemplate::CanonicalTemplate(const SurfaceMesh& template_mesh, const Poi
     : mesh(template_mesh),
       points(template_points),
       form(canonical_form(template_mesh, pose_options)),
-      relief(outward_relief(template_mesh, template_points)),
+      relief(detrended_relief(template_mesh, template_points)),
       options(pose_options) {}
 
 std::optional<CanonicalPose> choose_pose_canonically(const CanonicalTemplate& reference, const SurfaceMesh& mesh) {
@@ -193,7 +163,7 @@ std::optional<CanonicalPose> choose_pose_canonically(const CanonicalTemplate& re
   }
   // Each told by where the template's relief lands on the shape's.
   const PointSet own = vertex_points(mesh);
-  const Eigen::VectorXd relief = outward_relief(mesh, own);
+  const Eigen::VectorXd relief = detrended_relief(mesh, own);
   std::vector<double> agreements;
   std::vector<std::vector<Eigen::Index>> pairings;
   for (const std::size_t k : open) {

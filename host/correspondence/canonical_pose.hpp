@@ -20,7 +20,7 @@
 // carries the template through a bend reversed. correspond takes it where
 // no pose the rigid fit leaves open lays the relief after a coarse
 // deformable fit (relief_pose's agreement under kWeakRelief: FAUST's arms
-// overhead).
+// overhead, bent-either's bodies bent the other way from the template).
 //
 // Measured limits (n = 256): the bent families' bend is not isometric
 // (the outer side stretched by the body's radius over the arc's, up to

@@ -401,9 +401,12 @@ std::vector<MeshAlignment> align_population(const PopulationRequest& request,
     if (template_again) template_points = template_again->to_common.apply(vertex_points(template_mesh));
     for_each_index(owned, share.threads(), [&](std::size_t k) {
       if (turned_by_body[k]) return;
-      if (!guides[k].empty()) {
-        // Its pose is the template's, carried by the canonical pairs: it
-        // moves where the template moves.
+      if (!guides[k].empty() || alignments[k].relief.measured) {
+        // Its pose is the template's, chosen by the relief or carried by the
+        // canonical pairs: it moves where the template moves. A rigid fit
+        // onto the medoid, judged by the silhouette, would overrule what
+        // the relief chose (bent-either: a shape bent the template's way
+        // turned half round onto a medoid bent the other).
         if (template_again) alignments[k].to_common = follow(template_frame, template_again->to_common, alignments[k].to_common);
         return;
       }

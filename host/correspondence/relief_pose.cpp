@@ -18,13 +18,13 @@ PointSet in_shape_frame(const MeshAlignment& pose, const PointSet& common) {
 ReliefTemplate::ReliefTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points)
     : mesh(template_mesh),
       points(template_points),
-      relief(surface_relief(template_mesh, template_points)),
+      relief(detrended_relief(template_mesh, template_points)),
       graph(template_graph(template_mesh, template_points, coarse_deformation_graph_options())) {}
 
 ReliefChoice choose_pose_by_relief(const ReliefTemplate& reference, const SurfaceMesh& mesh,
                                    const std::vector<MeshAlignment>& poses) {
   const PointSet own = vertex_points(mesh);
-  const Eigen::VectorXd relief = surface_relief(mesh, own);
+  const Eigen::VectorXd relief = detrended_relief(mesh, own);
   std::vector<double> agreements;
   std::vector<PointSet> ends;  // the template's vertices after each pose's fit, on the shape
   for (const MeshAlignment& pose : poses) {

@@ -44,4 +44,14 @@ double relief_agreement(const Eigen::VectorXd& a, const Eigen::VectorXd& b, cons
   return aa > 0 && bb > 0 ? ab / std::sqrt(aa * bb) : 0;
 }
 
+Eigen::VectorXd detrended_relief(const SurfaceMesh& mesh, const PointSet& points) {
+  Eigen::VectorXd relief = surface_relief(mesh, points);
+  if (signed_volume(mesh.triangles(), points) < 0) relief = -relief;
+  PointSet trend = PointSet::Zero(relief.size(), 3);
+  trend.col(0) = relief;
+  const int rounds = std::clamp(int(std::lround(2 * kReliefBand * kReliefBand * double(relief.size()) / 1.15)), 1, 1600);
+  smooth_over(mesh, trend, rounds);
+  return relief - trend.col(0);
+}
+
 }  // namespace meshparticles

@@ -34,4 +34,13 @@ void smooth_over(const SurfaceMesh& mesh, PointSet& field, int rounds) {
   }
 }
 
+double signed_volume(const std::vector<Triangle>& triangles, const PointSet& points) {
+  double sum = 0;
+  for (const Triangle& t : triangles) {
+    const Eigen::Vector3d a = points.row(t[0]), b = points.row(t[1]), c = points.row(t[2]);
+    sum += a.dot(b.cross(c));
+  }
+  return sum;
+}
+
 }  // namespace meshparticles

@@ -17,6 +17,10 @@ PointSet vertex_normals(const std::vector<Triangle>& triangles, const PointSet& 
 // a mesh is SurfaceMesh(positions_of(points), mesh.triangles()).
 std::vector<Vec3> positions_of(const PointSet& points);
 
+// Six times the volume a closed mesh at `points` encloses, signed by its
+// triangles' winding (outward normals: positive).
+double signed_volume(const std::vector<Triangle>& triangles, const PointSet& points);
+
 // Each row replaced by the mean of itself and its one-ring's, `rounds`
 // times: like diffusion, it reaches about sqrt(rounds / 2) edges.
 void smooth_over(const SurfaceMesh& mesh, PointSet& field, int rounds);
