@@ -205,7 +205,7 @@ TEST(DeviceVoronoi, IsTheHostsDiagramOnACgalMesh) {
 }
 
 // The diagram alone, timed: host (fast marching, one thread) against the
-// device, the figures of docs/PERFORMANCE.md ("The evening's diagram on the
+// device, the figures of docs/PERFORMANCE.md ("spread's diagrams and measurement on the
 // device"), and held to the host as above. $MESHPARTICLES_VORONOI_MESH (default
 // the committed atrium) and $MESHPARTICLES_VORONOI_N (default 1,024) choose the case.
 TEST(DeviceVoronoi, TimedAgainstTheHost) {
