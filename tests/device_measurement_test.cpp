@@ -34,10 +34,10 @@ struct MeasurementTolerance {  // |device - host| / |host| of each at most
 // until nothing drops (docs/GEODESICS.md), and where fast marching's order is
 // not causal (obtuse triangles: a scan's irregular ones, high_valence's fan)
 // the two differ at a vertex by up to a few tenths of a percent. A pair's
-// distance moves by that; rho (the nearest pair) and the energy (a sum of
-// Gaussians of the pairs within the balls, steep at 1.5 d_hex) about as much,
-// nn_cv (a spread of spacings about 5% of their mean) ten times as much
-// relatively. Measured, worst of the committed meshes and bull at 64 and
+// distance moves by that; rho (the nearest pair) and the energy (the
+// potential summed over the pairs within the balls) about as much, nn_cv (a
+// spread of spacings about 5% of their mean) ten times as much relatively.
+// Measured, worst of the committed meshes and bull at 64 and
 // 1,024: rho 0.0046 (high_valence), nn_cv 0.016 (bull, 1,024), energy 0.0069
 // (bull, 64); on the regular committed meshes 1e-4 or less. Bounds about
 // twice the worst.
@@ -49,8 +49,8 @@ const MeasurementTolerance kFastMarching{0.01, 0.03, 0.015};
 // times the worst: a kernel's slip shows here first, far inside kFastMarching.
 const MeasurementTolerance kSameMethod{1e-6, 2e-4, 5e-5};
 
-void expect_within(const DistributionQuality& d, const DistributionQuality& h,
-                       const MeasurementTolerance& tolerance, const std::string& oracle) {
+void expect_within(const DistributionQuality& d, const DistributionQuality& h, const MeasurementTolerance& tolerance,
+                   const std::string& oracle) {
   SCOPED_TRACE("against the host's " + oracle);
   EXPECT_EQ(d.alone, h.alone);
   EXPECT_EQ(d.stacked, h.stacked);
