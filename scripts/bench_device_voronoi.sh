@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# spread with the evening's Voronoi diagrams on the host and on a device
-# (--device), case by case: the whole run's wall time and the diagrams' own
-# seconds (report.json evening.diagrams), docs/PERFORMANCE.md ("The evening's
-# diagram on the device").
+# spread with the evening's Voronoi diagrams and the measurement's balls on
+# the host and on a device (--device), case by case: the whole run's wall
+# time, the diagrams' own seconds (report.json evening.diagrams) and the
+# measurement's (seconds.geodesics + seconds.quality, its balls included),
+# docs/PERFORMANCE.md ("spread's diagrams and measurement on the device").
 #
 #   scripts/bench_device_voronoi.sh [--device NAME] [--repeat K] OUT_DIR
 #
@@ -28,7 +29,7 @@ done
 mkdir -p "$out"
 [ -f "$out/sphere_198812.off" ] || "$BIN" generate sphere --vertices 200000 --out-dir "$out" >/dev/null
 [ -f "$CGAL/bull.off" ] || { echo "no $CGAL/bull.off (set MESHPARTICLES_CGAL_MESHES)" >&2; exit 1; }
-printf '| mesh | n | path | wall s (best of %s) | diagrams | diagram s | evening moves | rho |\n|---|---|---|---|---|---|---|---|\n' "$repeat"
+printf '| mesh | n | path | wall s (best of %s) | diagrams | diagram s | evening moves | geodesics + quality s | balls on device | rho |\n|---|---|---|---|---|---|---|---|---|---|\n' "$repeat"
 for mesh in "$CGAL/bull.off" "$out/sphere_198812.off"; do
   for n in 1024 4096; do
     for path in host device; do
@@ -41,9 +42,12 @@ for mesh in "$CGAL/bull.off" "$out/sphere_198812.off"; do
         start=$(date +%s.%N)
         "$BIN" run "$mesh" -n "$n" -q --out "$run" "${extra[@]}" >/dev/null
         wall=$(echo "$(date +%s.%N) - $start" | bc)
-        if [ -z "$best" ] || [ "$(echo "$wall < $best" | bc)" = 1 ]; then best=$wall; fi
+        if [ -z "$best" ] || [ "$(echo "$wall < $best" | bc)" = 1 ]; then
+          best=$wall
+          cp "$run/report.json" "$run.best.json"  # the fastest repetition's seconds
+        fi
       done
-      python3 - "$run/report.json" "$(basename "$mesh" .off)" "$n" "$path" "$best" <<'PY'
+      python3 - "$run.best.json" "$(basename "$mesh" .off)" "$n" "$path" "$best" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
 e = r.get("evening")
@@ -51,7 +55,9 @@ d = e["diagrams"] if e else None
 print(f"| {sys.argv[2]} | {sys.argv[3]} | {sys.argv[4]} | {float(sys.argv[5]):.2f} | "
       f"{d['count'] if d else 'no evening'} | {d['seconds']:.2f} | {e['moves']} | " if d else
       f"| {sys.argv[2]} | {sys.argv[3]} | {sys.argv[4]} | {float(sys.argv[5]):.2f} | no evening | - | - | ", end="")
-print(f"{r['quality'].get('rho', float('nan')):.3f} |")
+s = r["seconds"]
+print(f"{s['geodesics']:.2f} + {s['quality']:.2f} | {r['distances'].get('balls_on_device', 0)} | "
+      f"{r['quality'].get('rho', float('nan')):.3f} |")
 PY
     done
   done

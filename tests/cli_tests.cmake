@@ -103,9 +103,12 @@ expect_exit(run_unknown_weights 2 "--weights: double not in" run ${TETRA} -n 2 -
 expect_run(run_field_half "converged" ${RUN_OUT}_field_half "params.n=2 params.backend=field params.weights=half params.rebuild_every=3" run ${TETRA} -n 2 --backend field --weights half --rebuild-every 3 --no-cache --out ${RUN_OUT}_field_half)
 # spread (the default) runs on the host; the paper's options imply paper, and
 # name themselves when spread is asked for by name.
-expect_run(run_spread_default "spread: [0-9]+ done in .*(converged|cycle)" ${RUN_OUT}_spread "params.n=16 params.method=spread params.method_from=default params.evening_diagrams=host" run ${TORUS} -n 16 --out ${RUN_OUT}_spread)
-# --device puts spread's evening diagrams on that device (0:0: the first, whichever runtime is here).
-expect_run(run_spread_device "spread: [0-9]+ done in .*(converged|cycle)" ${RUN_OUT}_spread_device "params.n=16 params.method=spread params.evening_diagrams=device" run ${TORUS} -n 16 --device 0:0 --out ${RUN_OUT}_spread_device)
+expect_run(run_spread_default "spread: [0-9]+ done in .*(converged|cycle)" ${RUN_OUT}_spread "params.n=16 params.method=spread params.method_from=default params.evening_diagrams=host params.measurement_balls=host params.geodesic=fmm distances.balls_on_device=0" run ${TORUS} -n 16 --out ${RUN_OUT}_spread)
+# --device puts spread's evening diagrams and its measurement's balls (by fim) on that device (0:0: the first, whichever runtime is here).
+expect_run(run_spread_device "spread: [0-9]+ done in .*(converged|cycle)" ${RUN_OUT}_spread_device "params.n=16 params.method=spread params.evening_diagrams=device params.measurement_balls=device params.geodesic=fim distances.balls_on_device>0" run ${TORUS} -n 16 --device 0:0 --out ${RUN_OUT}_spread_device)
+# ... but not where --geodesic fmm asks for the host's method, nor on the dense table (solved on the host).
+expect_run(run_spread_device_fmm "spread: [0-9]+ done in .*(converged|cycle)" ${RUN_OUT}_spread_device_fmm "params.evening_diagrams=device params.measurement_balls=host params.geodesic=fmm distances.balls_on_device=0" run ${TORUS} -n 16 --device 0:0 --geodesic fmm --out ${RUN_OUT}_spread_device_fmm)
+expect_run(run_spread_device_dense "spread: [0-9]+ done in .*(converged|cycle)" ${RUN_OUT}_spread_device_dense "params.evening_diagrams=device params.measurement_balls=host params.geodesic=fmm distances.store=dense" run ${TORUS} -n 16 --device 0:0 --distances dense --no-cache --out ${RUN_OUT}_spread_device_dense)
 expect_exit(run_spread_refuses_backend 2 "--backend applies to --method paper" run ${TETRA} -n 2 --method spread --backend tiled --out ${RUN_OUT}_run_spread_refuses_backend)
 expect_exit(run_spread_refuses_v0 2 "--init v0 applies to --method paper" run ${TETRA} -n 2 --method spread --init v0 --out ${RUN_OUT}_run_spread_refuses_v0)
 expect_exit(run_vertices_per_particle_on_paper 2 "--vertices-per-particle applies to --method spread" run ${TETRA} -n 2 --method paper --vertices-per-particle 50 --out ${RUN_OUT}_run_vertices_per_particle_on_paper)

@@ -155,5 +155,23 @@ TEST(DeviceBalls, ADeviceWithoutTheMemoryIsRefusedFirst) {
   }
 }
 
+// The plan's check from the vertex count alone (spread's measurement with
+// --device): the same refusal, before the mesh is built; a real device
+// takes a 200k-vertex mesh's.
+TEST(DeviceBalls, ThePlansCheckRefusesADeviceWithoutTheMemory) {
+  DeviceDescription small = select_device("");
+  EXPECT_NO_THROW(check_device_balls_fit(small, 200000));
+  small.global_memory_bytes = std::uint64_t{1} << 20;
+  try {
+    check_device_balls_fit(small, committed("sphere.off").vertex_count());
+    FAIL() << "a 1 MiB device was accepted";
+  } catch (const UserError& refusal) {
+    const std::string message = refusal.what();
+    EXPECT_NE(message.find("it has 1 MiB"), std::string::npos) << message;
+    EXPECT_NE(message.find(small.name), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace meshparticles::testing

@@ -199,38 +199,13 @@ INSTANTIATE_TEST_SUITE_P(CommittedMeshes, DeviceVoronoiCommitted,
                                            "two_pieces.off", "tetrahedron.off"),
                          stem);
 
-// CGAL's meshes (Debian's libcgal-demo): a real scan's irregular triangles,
-// not a generator's. scripts/test.sh unpacks them (scripts/cgal_meshes.sh)
-// and names the folder in $MESHPARTICLES_CGAL_MESHES; without it, where
-// that script puts them. A mesh not there fails the test, saying how to get
-// it: a test that skipped would pass CI without ever running.
-std::optional<SurfaceMesh> cgal_mesh(const std::string& name) {
-  std::filesystem::path folder;
-  if (const char* given = std::getenv("MESHPARTICLES_CGAL_MESHES")) {
-    folder = given;
-  } else {
-    const char* cache = std::getenv("XDG_CACHE_HOME");
-    const char* home = std::getenv("HOME");
-    folder = (cache && *cache ? std::filesystem::path(cache) : std::filesystem::path(home ? home : "") / ".cache") /
-             "meshparticles" / "cgal-data" / "data" / "meshes";
-  }
-  const std::filesystem::path path = folder / name;
-  if (!std::filesystem::exists(path)) {
-    ADD_FAILURE() << path << " is not here: scripts/cgal_meshes.sh installs and unpacks CGAL's meshes "
-                  << "(or set $MESHPARTICLES_CGAL_MESHES)";
-    return std::nullopt;
-  }
-  std::vector<std::string> warnings;
-  return read_mesh(path.string(), warnings);
-}
-
 TEST(DeviceVoronoi, IsTheHostsDiagramOnACgalMesh) {
   const std::optional<SurfaceMesh> camel = cgal_mesh("camel.off");
   if (camel) expect_device_matches_host(*camel, "camel");
 }
 
 // The diagram alone, timed: host (fast marching, one thread) against the
-// device, the figures of docs/PERFORMANCE.md ("The evening's diagram on the
+// device, the figures of docs/PERFORMANCE.md ("spread's diagrams and measurement on the
 // device"), and held to the host as above. $MESHPARTICLES_VORONOI_MESH (default
 // the committed atrium) and $MESHPARTICLES_VORONOI_N (default 1,024) choose the case.
 TEST(DeviceVoronoi, TimedAgainstTheHost) {

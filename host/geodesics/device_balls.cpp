@@ -29,48 +29,60 @@ unsigned slot_bits_for(const DeviceDescription& device) {
   return kSmallestSlotBits;
 }
 
+std::size_t balls_per_launch_for(const DeviceDescription& device) {
+  const std::uint64_t per_ball = (std::uint64_t{1} << slot_bits_for(device)) * (sizeof(cl_uint) + sizeof(cl_float));
+  const std::uint64_t allowed = std::min<std::uint64_t>(kLaunchOutputBytes, device.max_allocation_bytes / 2);
+  return std::size_t(std::max<std::uint64_t>(1, allowed / per_ball));
+}
+
+// Throws UserError when the buffers of a mesh of these sizes would not fit `device`.
+void check_ball_memory(const DeviceDescription& device, std::uint64_t vertices, std::uint64_t ring,
+                       std::uint64_t triangles_at_vertices, std::uint64_t virtual_updates) {
+  const std::uint64_t balls_per_launch = balls_per_launch_for(device);
+  const std::uint64_t output = balls_per_launch * device_ball_slots(device) * sizeof(cl_uint);
+  const std::uint64_t largest = triangles_at_vertices * sizeof(TriangleAtVertex);  // about 200 B a vertex
+  const std::uint64_t buffers[] = {
+      (vertices + 1) * sizeof(cl_uint) * 3,                    // the three offset arrays
+      ring * (sizeof(cl_uint) + sizeof(cl_float)),             // one-rings, edge lengths
+      largest,                                                 // the triangles at each vertex
+      virtual_updates * sizeof(VirtualUpdate),
+      2 * output,                                              // ball vertices and distances
+      balls_per_launch * 3 * sizeof(cl_uint)};                 // sources, sizes, starts
+  std::uint64_t total = 0;
+  for (const std::uint64_t bytes : buffers) total += bytes;
+  const auto mib = [](std::uint64_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; };
+  if (total > device.global_memory_bytes || largest > device.max_allocation_bytes) {
+    throw UserError("the fast iterative method's balls on " + device.name + " need " + mib(total) +
+                    " of device memory, " + mib(largest) + " in one buffer; it has " +
+                    mib(device.global_memory_bytes) + ", at most " + mib(device.max_allocation_bytes) +
+                    " in one buffer: use --geodesic fmm");
+  }
+}
+
 }  // namespace
 
 std::size_t device_ball_slots(const DeviceDescription& device) { return std::size_t{1} << slot_bits_for(device); }
 
-void DeviceBallSolver::check_memory(const SurfaceMesh& mesh) const {
-  const TriangleStencils& stencils = host_.stencils();
-  const std::uint64_t vertices = mesh.vertex_count() + 1, ring = mesh.ring_neighbors().size();
-  const std::uint64_t output = std::uint64_t(balls_per_launch_) * slots() * sizeof(cl_uint);
-  const std::uint64_t buffers[] = {
-      vertices * sizeof(cl_uint) * 3,                                      // the three offset arrays
-      ring * (sizeof(cl_uint) + sizeof(cl_float)),                         // one-rings, edge lengths
-      stencils.triangles.size() * sizeof(TriangleAtVertex),                // the largest, about 200 B a vertex
-      stencils.virtual_updates.size() * sizeof(VirtualUpdate),
-      2 * output,                                                          // ball vertices and distances
-      std::uint64_t(balls_per_launch_) * 3 * sizeof(cl_uint)};            // sources, sizes, starts
-  std::uint64_t total = 0;
-  for (const std::uint64_t bytes : buffers) total += bytes;
-  const std::uint64_t largest = stencils.triangles.size() * sizeof(TriangleAtVertex);
-  const auto mib = [](std::uint64_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; };
-  if (total > device_.global_memory_bytes || largest > device_.max_allocation_bytes) {
-    throw UserError("the fast iterative method's balls on " + device_.name + " need " + mib(total) +
-                    " of device memory, " + mib(largest) + " in one buffer; it has " +
-                    mib(device_.global_memory_bytes) + ", at most " + mib(device_.max_allocation_bytes) +
-                    " in one buffer: use --geodesic fmm");
-  }
+void check_device_balls_fit(const DeviceDescription& device, std::uint64_t vertices) {
+  // A closed mesh's: six neighbours and six triangle corners a vertex, and
+  // about one virtual update a vertex.
+  check_ball_memory(device, vertices, 6 * vertices, 6 * vertices, vertices);
 }
 
 DeviceBallSolver::DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeMethod& host,
                                    const DeviceDescription& device)
     : host_(host), device_(device), slot_bits_(slot_bits_for(device)) {
   work_group_size_ = std::min<std::size_t>(device.type == "GPU" ? 256 : 64, device.max_work_group_size);
-  const std::uint64_t per_ball = (std::uint64_t{1} << slot_bits_) * (sizeof(cl_uint) + sizeof(cl_float));
-  const std::uint64_t allowed = std::min<std::uint64_t>(kLaunchOutputBytes, device.max_allocation_bytes / 2);
-  balls_per_launch_ = std::size_t(std::max<std::uint64_t>(1, allowed / per_ball));
-  check_memory(mesh);
+  balls_per_launch_ = balls_per_launch_for(device);
+  const TriangleStencils& stencils = host_.stencils();
+  check_ball_memory(device, mesh.vertex_count(), mesh.ring_neighbors().size(), stencils.triangles.size(),
+                    stencils.virtual_updates.size());
   context_ = device_context(device.device);
   queue_ = cl::CommandQueue(context_, device.device, CL_QUEUE_PROFILING_ENABLE);
   const cl::Program program = cached_program(
       device.device, {"fim_balls.cl"},
       {{"SLOT_BITS", slot_bits_}, {"WORK_GROUP_SIZE", static_cast<long long>(work_group_size_)}});
   kernel_ = cl::Kernel(program, "fim_balls");
-  const TriangleStencils& stencils = host_.stencils();
   ring_offsets_ = read_only_buffer(context_, mesh.ring_offsets());
   ring_neighbors_ = read_only_buffer(context_, mesh.ring_neighbors());
   edge_lengths_ = read_only_buffer(context_, host_.edge_lengths());

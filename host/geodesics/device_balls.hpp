@@ -18,6 +18,12 @@ namespace meshparticles {
 // holds: its table, as big as the device's local memory allows.
 std::size_t device_ball_slots(const DeviceDescription& device);
 
+// Throws UserError (one line, naming the device) when the buffers of the
+// balls on a mesh of `vertices` would not fit `device`: a plan's check from
+// the count alone, before the mesh is built. The solver checks its mesh's
+// own sizes again when it is made.
+void check_device_balls_fit(const DeviceDescription& device, std::uint64_t vertices);
+
 class DeviceBallSolver {
  public:
   struct Statistics {
@@ -43,8 +49,6 @@ class DeviceBallSolver {
 
  private:
   struct Launch;
-  // Throws UserError when the buffers would not fit the device, before any is made.
-  void check_memory(const SurfaceMesh& mesh) const;
   // Queues the kernel for launch.count sources from launch.first.
   void enqueue(std::span<const VertexId> sources, Launch& launch);
   // Waits for the launch and reads its balls.

@@ -84,12 +84,7 @@ DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& re
   return plan;
 }
 
-namespace {
-
-// Where --geodesic fim solves balls: the run's device, or none (the host's
-// cores, by the same method) when no OpenCL runtime is usable and none was
-// asked for.
-std::optional<DeviceDescription> ball_device(const GeodesicsRequest& geodesics) {
+std::optional<DeviceDescription> fim_ball_device(const GeodesicsRequest& geodesics) {
   try {
     return select_device(geodesics.device);
   } catch (const UserError& problem) {
@@ -101,8 +96,6 @@ std::optional<DeviceDescription> ball_device(const GeodesicsRequest& geodesics) 
   }
 }
 
-}  // namespace
-
 ObtainedDistances obtain_distances(const SurfaceMesh& mesh, const GeodesicsRequest& geodesics,
                                    const DistancesPlan& plan) {
   if (plan.kind == StoreKind::dense) return obtain_distances(mesh, geodesics);
@@ -110,7 +103,7 @@ ObtainedDistances obtain_distances(const SurfaceMesh& mesh, const GeodesicsReque
   obtained.kind = StoreKind::local;
   LocalDistances::Settings settings{plan.radius, geodesics.method, plan.ball_budget_bytes, geodesics.threads,
                                    geodesics.quiet, std::nullopt};
-  if (geodesics.method == GeodesicMethod::fast_iterative) settings.device = ball_device(geodesics);
+  if (geodesics.method == GeodesicMethod::fast_iterative) settings.device = fim_ball_device(geodesics);
   obtained.store = std::make_unique<LocalDistances>(mesh, settings);
   return obtained;
 }

@@ -67,6 +67,14 @@ std::uint64_t estimated_ball_bytes(const SurfaceMesh& mesh, double radius, std::
 DistancesPlan plan_distances(const SurfaceMesh& mesh, const DistancesRequest& request, std::size_t particles,
                              bool backend_needs_dense);
 
+// Where --geodesic fim solves local balls: the device --device names (or
+// $MESHPARTICLES_DEVICE, else the first GPU, else the first device), or
+// none (the host's cores, by the same method, with a warning unless quiet)
+// when no OpenCL runtime is usable and none was named. Throws UserError when
+// the device named is not here. obtain_distances asks it; spread's plan
+// asks it first, to say and check where its measurement goes.
+std::optional<DeviceDescription> fim_ball_device(const GeodesicsRequest& geodesics);
+
 struct ObtainedDistances {
   std::unique_ptr<DistanceStore> store;
   StoreKind kind = StoreKind::dense;

@@ -7,6 +7,7 @@
 #include "common/memory_limits.hpp"
 #include "common/text_format.hpp"
 #include "common/user_error.hpp"
+#include "geodesics/device_balls.hpp"
 #include "geodesics/solver_factory.hpp"
 #include "mesh/midpoint_refinement.hpp"
 #include "mesh/point_insertion.hpp"
@@ -46,15 +47,27 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
               << refined_vertex_count(mesh, spread.working_mesh.levels) << " (the cap for time and memory: "
               << spread.working_mesh.max_vertices << ")\n";
   }
-  // --device: the evening's diagrams there, refused now if the working mesh's would not fit.
-  if (!request.backend.device.empty()) {
-    spread.evening_device = select_device(request.backend.device);
-    check_device_voronoi_fits(*spread.evening_device, refined_vertex_count(mesh, spread.working_mesh.levels));
-  }
   // Planned on the input: the working mesh has its area, so the same radius.
   const DistancesRequest measured = spread_distances(request.distances);
   plan.cutoff = measured.cutoff_or_default();
   plan.distances = plan_distances(mesh, measured, request.particles, false);
+  // --device: the evening's diagrams there, and the measurement's local balls
+  // by the fast iterative method (the one with a device path) unless
+  // --geodesic says otherwise; refused now if the working mesh's buffers
+  // would not fit. A dense table is solved on the host whatever the method.
+  const std::uint64_t working_vertices = refined_vertex_count(mesh, spread.working_mesh.levels);
+  const bool local = plan.distances.kind == StoreKind::local;
+  if (!request.backend.device.empty()) {
+    spread.evening_device = select_device(request.backend.device);
+    check_device_voronoi_fits(*spread.evening_device, working_vertices);
+    if (local && !request.geodesic_given) plan.geodesics.method = GeodesicMethod::fast_iterative;
+  }
+  if (local && plan.geodesics.method == GeodesicMethod::fast_iterative) {
+    GeodesicsRequest asked = plan.geodesics;
+    asked.quiet = true;  // obtain_distances warns when it finds none
+    spread.measurement_device = fim_ball_device(asked);
+    if (spread.measurement_device) check_device_balls_fit(*spread.measurement_device, working_vertices);
+  }
 }
 
 namespace {

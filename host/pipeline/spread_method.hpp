@@ -62,6 +62,11 @@ struct SpreadPlan {
   // --device given: the evening's Voronoi diagrams on it
   // (particles/device_surface_voronoi); else on the host.
   std::optional<DeviceDescription> evening_device;
+  // Where the measurement's local balls are solved: with the fast iterative
+  // method (--device's default, or --geodesic fim) the device
+  // fim_ball_device finds (geodesics/device_balls); else, with none, or on
+  // the dense table (--distances dense), the host.
+  std::optional<DeviceDescription> measurement_device;
 };
 
 // What a spread run yields beside every method's result (RunResult::spread).

@@ -19,6 +19,9 @@ void add_spread_parameters(const RunPlan& plan, const SpreadPlan& spread, nlohma
   // Where the evening's diagrams go if it runs (evening.diagrams: where they went).
   params["evening_diagrams"] = spread.evening_device ? "device" : "host";
   if (spread.evening_device) params["evening_device"] = spread.evening_device->name;
+  // Where the measurement's balls go (distances.balls_on_device: how many went).
+  params["measurement_balls"] = spread.measurement_device ? "device" : "host";
+  if (spread.measurement_device) params["measurement_device"] = spread.measurement_device->name;
 }
 
 // paper's parameters: its iterations and the backend as decided, with its sizes.
@@ -77,7 +80,7 @@ nlohmann::json distances_json(const RunResult& result) {
   distances["cutoff"] = result.plan.cutoff;
   distances["radius"] = result.plan.distances.radius;
   distances["balls_computed"] = balls.balls_computed;
-  distances["balls_on_device"] = balls.balls_on_device;  // --geodesic fim on a device
+  distances["balls_on_device"] = balls.balls_on_device;  // fim on a device: --geodesic fim, spread's --device
   distances["mean_ball_size"] =
       balls.balls_computed ? double(balls.entries_computed) / double(balls.balls_computed) : 0.0;
   distances["ball_seconds"] = balls.seconds;
