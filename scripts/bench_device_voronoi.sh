@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # spread with the evening's Voronoi diagrams and the measurement's balls on
-# the host and on a device (--device), case by case: the whole run's wall
+# the host and on a device: `--device` (the diagrams, and on a GPU the
+# balls) and `--device --geodesic fim` (the balls there on any device),
+# case by case: the whole run's wall
 # time, the diagrams' own seconds (report.json evening.diagrams) and the
 # measurement's (seconds.geodesics + seconds.quality, its balls included),
 # docs/PERFORMANCE.md ("spread's diagrams and measurement on the device").
@@ -32,12 +34,13 @@ mkdir -p "$out"
 printf '| mesh | n | path | wall s (best of %s) | diagrams | diagram s | evening moves | geodesics + quality s | balls on device | rho |\n|---|---|---|---|---|---|---|---|---|---|\n' "$repeat"
 for mesh in "$CGAL/bull.off" "$out/sphere_198812.off"; do
   for n in 1024 4096; do
-    for path in host device; do
+    for path in host device device-fim; do
       best=""
       for ((k = 0; k < repeat; ++k)); do
         run="$out/$(basename "$mesh" .off)_${n}_$path"
         extra=()
         [ "$path" = device ] && extra=(--device "$device")
+        [ "$path" = device-fim ] && extra=(--device "$device" --geodesic fim)
         rm -rf "$run"
         start=$(date +%s.%N)
         "$BIN" run "$mesh" -n "$n" -q --out "$run" "${extra[@]}" >/dev/null

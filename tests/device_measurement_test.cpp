@@ -86,11 +86,16 @@ void expect_device_measures_as_host(const SurfaceMesh& mesh, const std::string& 
   request.mesh_label = name;
   request.particles = n;
   request.relax_rounds = 0;
-  request.geodesic_given = false;  // as `run` without --geodesic: --device chooses fim for the measurement
+  request.geodesic_given = false;  // as `run` without --geodesic
   request.quiet = true;
   const RunResult host = run_pipeline(mesh, request);
   const DeviceDescription device = select_device("");
   request.backend.device = device.index();
+  if (device.type != "GPU") {
+    // `run --device D --geodesic fim`: a GPU takes the balls by default, a CPU device when asked.
+    request.geodesic_given = true;
+    request.distances.geodesics.method = GeodesicMethod::fast_iterative;
+  }
   const RunResult on_device = run_pipeline(mesh, request);
   EXPECT_FALSE(host.plan.spread->measurement_device);
   EXPECT_EQ(host.plan.geodesics.method, GeodesicMethod::fast_marching);

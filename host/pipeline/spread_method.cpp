@@ -51,16 +51,22 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   const DistancesRequest measured = spread_distances(request.distances);
   plan.cutoff = measured.cutoff_or_default();
   plan.distances = plan_distances(mesh, measured, request.particles, false);
-  // --device: the evening's diagrams there, and the measurement's local balls
-  // by the fast iterative method (the one with a device path) unless
-  // --geodesic says otherwise; refused now if the working mesh's buffers
-  // would not fit. A dense table is solved on the host whatever the method.
+  // --device: the evening's diagrams there; on a GPU the measurement's local
+  // balls too, by the fast iterative method (the one with a device path)
+  // unless --geodesic says otherwise. On a CPU device fim's balls took 7 to
+  // 10x fast marching's on the host's cores (bull at 1,024 and 4,096, PoCL:
+  // the whole run 1.7 to 1.8x the host path's), so there only --geodesic fim
+  // sends them, as the paper method's default gives the balls only to a GPU.
+  // Refused now if the working mesh's buffers would not fit. A dense table
+  // is solved on the host whatever the method.
   const std::uint64_t working_vertices = refined_vertex_count(mesh, spread.working_mesh.levels);
   const bool local = plan.distances.kind == StoreKind::local;
   if (!request.backend.device.empty()) {
     spread.evening_device = select_device(request.backend.device);
     check_device_voronoi_fits(*spread.evening_device, working_vertices);
-    if (local && !request.geodesic_given) plan.geodesics.method = GeodesicMethod::fast_iterative;
+    if (local && !request.geodesic_given && spread.evening_device->type == "GPU") {
+      plan.geodesics.method = GeodesicMethod::fast_iterative;
+    }
   }
   if (local && plan.geodesics.method == GeodesicMethod::fast_iterative) {
     GeodesicsRequest asked = plan.geodesics;
