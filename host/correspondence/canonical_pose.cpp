@@ -181,6 +181,7 @@ std::optional<CanonicalPose> choose_pose_canonically(const CanonicalTemplate& re
   pose.pairs = std::move(pairings[chosen]);
   MeshAlignment::Relief& told = pose.alignment.relief;
   told.measured = true;
+  told.canonical = true;
   told.agreement = agreements[chosen];
   for (std::size_t c = 0; c < open.size(); ++c) {
     if (c == chosen || !(agreements[c] > told.runner_up)) continue;

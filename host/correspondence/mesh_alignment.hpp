@@ -69,6 +69,9 @@ struct MeshAlignment {
     double agreement = 0;
     double runner_up = -std::numeric_limits<double>::infinity();
     double runner_up_degrees = 0;
+    // Told in canonical form (canonical_pose), not after the coarse fit
+    // (relief_pose): where no pose the fit left open laid the relief.
+    bool canonical = false;
   } relief;
 };
 

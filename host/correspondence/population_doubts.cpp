@@ -19,14 +19,16 @@ std::string pose_doubt(const ShapeCorrespondence& shape) {
   const std::string turned = ": its particles may lie turned by that much";
   const MeshAlignment::Relief& relief = shape.alignment.relief;
   if (relief.measured) {
+    const std::string where = relief.canonical ? " in canonical form" : "";
     if (relief.agreement < kWeakRelief) {
       return name + "the template's features agree with its own by " + format_number("%.2f", relief.agreement) +
-             " at best (fit_relief, under " + format_number("%.2f", kWeakRelief) +
+             " at best" + where + " (fit_relief, under " + format_number("%.2f", kWeakRelief) +
              "): no pose tried lays them over each other, so its particles may lie turned or its limbs not followed";
     }
     if (relief.runner_up > relief.agreement - kCloseRelief) {
       return name + "a pose " + format_number("%.0f", relief.runner_up_degrees) +
-             " degrees from the one chosen lays the template's features over its own almost as well (fit_relief: " +
+             " degrees from the one chosen lays the template's features over its own" + where +
+             " almost as well (fit_relief: " +
              format_number("%.2f", relief.runner_up) + " against " + format_number("%.2f", relief.agreement) + ")" +
              turned;
     }

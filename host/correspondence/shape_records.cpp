@@ -91,7 +91,8 @@ nlohmann::json runner_up_json(const MeshAlignment::RunnerUp& runner_up) {
 nlohmann::json relief_json(const MeshAlignment::Relief& relief) {
   if (!relief.measured) return nullptr;
   const bool runner_up = std::isfinite(relief.runner_up);
-  return {{"agreement", relief.agreement},
+  return {{"by", relief.canonical ? "canonical form" : "coarse fit"},
+          {"agreement", relief.agreement},
           {"runner_up", runner_up ? nlohmann::json(relief.runner_up) : nlohmann::json(nullptr)},
           {"runner_up_degrees", runner_up ? nlohmann::json(relief.runner_up_degrees) : nlohmann::json(nullptr)}};
 }
@@ -123,6 +124,9 @@ MeshAlignment alignment_from_json(const nlohmann::json& json) {
   const nlohmann::json& relief = json.at("relief");
   if (!relief.is_null()) {
     alignment.relief.measured = true;
+    const std::string by = relief.at("by").get<std::string>();
+    if (by != "canonical form" && by != "coarse fit") throw std::invalid_argument("a pose told by " + relief.at("by").dump());
+    alignment.relief.canonical = by == "canonical form";
     alignment.relief.agreement = relief.at("agreement").get<double>();
     if (!relief.at("runner_up").is_null()) {
       alignment.relief.runner_up = relief.at("runner_up").get<double>();

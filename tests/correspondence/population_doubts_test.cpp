@@ -55,13 +55,24 @@ TEST(PopulationDoubts, TheReliefsMarginDecidesWhereItChose) {
   shapes[1].alignment.relief = {true, 0.80, 0.61, 180};  // clear
   shapes[2].alignment.relief = {true, 0.20, 0.05, 175};  // clear, but nothing laid well
   shapes[3].alignment.relief = {true, 0.80};             // one end state: nothing else to fear
-  const std::vector<std::string> doubts = population_doubts(shapes);
+  std::vector<std::string> doubts = population_doubts(shapes);
   ASSERT_EQ(doubts.size(), 2u);
   // The template (no relief: one pose open) keeps the fit's rule.
   EXPECT_EQ(doubts[0].rfind("a.off: a pose 180 degrees from the one chosen fits the template within 3.0% (fit_runner_up)", 0), 0u)
       << doubts[0];
   EXPECT_EQ(doubts[1].rfind("c.off: the template's features agree with its own by 0.20 at best (fit_relief, under 0.30)", 0), 0u)
       << doubts[1];
+  // Told in canonical form (where no pose laid the relief after the coarse fit): said so.
+  shapes[2].alignment.relief.canonical = true;
+  shapes[1].alignment.relief = {true, 0.40, 0.35, 180, true};
+  doubts = population_doubts(shapes);
+  ASSERT_EQ(doubts.size(), 3u);
+  EXPECT_EQ(doubts[1].rfind("b.off: a pose 180 degrees from the one chosen lays the template's features over its own in "
+                            "canonical form almost as well (fit_relief: 0.35 against 0.40)", 0), 0u)
+      << doubts[1];
+  EXPECT_EQ(doubts[2].rfind("c.off: the template's features agree with its own by 0.20 at best in canonical form "
+                            "(fit_relief, under 0.30)", 0), 0u)
+      << doubts[2];
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ ShapeCorrespondence awkward_shape() {
   shape.alignment.iterations = 17;
   shape.alignment.from_principal_axes = true;
   shape.alignment.runner_up = {1.0 + kAwkward[0], 179.5, kAwkward[1]};
-  shape.alignment.relief = {true, 0.7 + 1e-16, kAwkward[2], 179.25};
+  shape.alignment.relief = {true, 0.7 + 1e-16, kAwkward[2], 179.25, true};
   shape.topology = {1, 2, -2, 1};
   shape.particles.resize(3, 3);
   for (Eigen::Index i = 0; i < 3; ++i) {
@@ -86,6 +86,7 @@ TEST(ShapeRecords, AShapeReadsBackToTheBit) {
   EXPECT_EQ(a.relief.agreement, shape.alignment.relief.agreement);
   EXPECT_EQ(a.relief.runner_up, shape.alignment.relief.runner_up);
   EXPECT_EQ(a.relief.runner_up_degrees, 179.25);
+  EXPECT_TRUE(a.relief.canonical);
   EXPECT_EQ(back.topology, shape.topology);
   EXPECT_EQ(back.quality.nn_min, shape.quality.nn_min);
   EXPECT_EQ(back.quality.nn_cv, shape.quality.nn_cv);
@@ -178,6 +179,9 @@ TEST(ShapeRecords, ValuesNoRunCouldHaveWrittenAreRefused) {
   nlohmann::json missing = shape;
   missing.erase("topology");
   EXPECT_THROW(check_shape_json(missing, mesh, 20, 3), nlohmann::json::exception);
+  nlohmann::json told_by_nothing = shape;
+  told_by_nothing["alignment"]["relief"]["by"] = "a guess";
+  EXPECT_THROW(shape_from_json(told_by_nothing), std::invalid_argument);
 }
 
 }  // namespace
