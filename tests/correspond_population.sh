@@ -59,18 +59,29 @@ no_shape_turned bent 3 0.3
 # keeps the pose its bumps chose, not turned from the template (a rigid fit
 # onto a medoid bent the other way turned one half round, judged by the
 # silhouette). Those bent the other way are not held to it (docs/CORRESPONDENCE.md).
-"$bin" generate --population 12 --family bent-either --vertices 2000 --seed 5 --out-dir "$work/either" 2>/dev/null
-"$bin" correspond "$work/either" -n 64 --samples 20 -q --out "$work/either_correspond" >/dev/null
-/usr/bin/python3 "$scripts/correspondence_error.py" "$work/either/population.json" \
-  "$work/either_correspond"/shapes/*.particles --json "$work/either_score.json" >/dev/null
-/usr/bin/python3 - "$work/either/population.json" "$work/either_score.json" <<'CHECK' || fail "bent either way: a shape bent as the template lies turned from it"
+# SHAPES VERTICES SEED SIDES: a bent-either population corresponded at
+# n = 64; no shape bent SIDES ("same": as the template, "any") may lie
+# turned more than 20 degrees from the template.
+none_turned_from_template() {
+  local shapes=$1 vertices=$2 seed=$3 sides=$4 dir=$work/either_$1_$3
+  "$bin" generate --population "$shapes" --family bent-either --vertices "$vertices" --seed "$seed" --out-dir "$dir" 2>/dev/null
+  "$bin" correspond "$dir" -n 64 --samples 20 -q --out "${dir}_correspond" >/dev/null
+  /usr/bin/python3 "$scripts/correspondence_error.py" "$dir/population.json" \
+    "${dir}_correspond"/shapes/*.particles --json "${dir}_score.json" >/dev/null
+  /usr/bin/python3 - "$dir/population.json" "${dir}_score.json" "$sides" <<'CHECK' || fail "bent either way, seed $seed: a shape lies turned from the template"
 import json, sys
 shapes = json.load(open(sys.argv[1]))["shapes"]
 scored = json.load(open(sys.argv[2]))["per_shape"]
 turned = [(shape["mesh"], score["turn_from_first_degrees"]) for shape, score in zip(shapes, scored)
-          if shape["bend_side"] == shapes[0]["bend_side"] and score["turn_from_first_degrees"] > 20]
+          if (sys.argv[3] == "any" or shape["bend_side"] == shapes[0]["bend_side"]) and score["turn_from_first_degrees"] > 20]
 for mesh, degrees in turned:
-    print(f"{mesh}: bent as the template, turned {degrees:.0f} degrees from it")
+    print(f"{mesh}: turned {degrees:.0f} degrees from the template")
 sys.exit(bool(turned))
 CHECK
+}
+none_turned_from_template 12 2000 5 same
+# Seed 5 at 2,500 vertices: two shapes bent the other way, which the coarse
+# fit laid in the half turn at 0.33 (under kSureRelief), are posed by their
+# canonical forms, which lay the relief better (0.59, 0.46).
+none_turned_from_template 6 2500 5 any
 echo "ok"

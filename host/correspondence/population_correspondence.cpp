@@ -303,11 +303,15 @@ std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const s
           choose_pose_by_relief(relief_template, *meshes[k], poses);
       alignments[k] = poses[choice.chosen];
       alignments[k].relief = choice.relief;
-      if (choice.relief.agreement < kWeakRelief) {
-        // No open pose lays the relief after the coarse fit: the canonical
-        // forms choose, and their pairs carry the template (FAUST's arms overhead).
+      if (choice.relief.agreement < kSureRelief) {
+        // No open pose lays the relief surely after the coarse fit: the
+        // canonical form is asked too. Under kWeakRelief it chooses (FAUST's
+        // arms overhead); else where it lays the relief better (a body bent
+        // the other way, which the coarse fit cannot unbend). Its pairs then
+        // carry the template.
         std::call_once(canonical_side, [&] { canonical_template.emplace(*meshes.front(), template_points); });
-        if (std::optional<CanonicalPose> pose = choose_pose_canonically(*canonical_template, *meshes[k])) {
+        std::optional<CanonicalPose> pose = choose_pose_canonically(*canonical_template, *meshes[k]);
+        if (pose && (choice.relief.agreement < kWeakRelief || pose->alignment.relief.agreement > choice.relief.agreement)) {
           alignments[k] = pose->alignment;
           guides[k] = std::move(pose->pairs);
         }
