@@ -134,9 +134,7 @@ TEST_P(DeviceSpreadMeasurement, IsTheHostsToTheSolversAccuracy) {
 }
 
 INSTANTIATE_TEST_SUITE_P(CommittedMeshes, DeviceSpreadMeasurement,
-                         ::testing::Values("sphere.off", "atrium.off", "torus.off", "patch.off", "high_valence.off",
-                                           "two_pieces.off", "tetrahedron.off"),
-                         stem);
+                         ::testing::ValuesIn(kCommittedMeshes), stem);
 
 TEST(DeviceSpreadMeasurement, IsTheHostsOnACgalMesh) {
   const std::optional<SurfaceMesh> bull = cgal_mesh("bull.off");

@@ -195,9 +195,7 @@ TEST_P(DeviceVoronoiCommitted, IsTheHostsDiagramToTheSolversAccuracy) {
 }
 
 INSTANTIATE_TEST_SUITE_P(CommittedMeshes, DeviceVoronoiCommitted,
-                         ::testing::Values("sphere.off", "atrium.off", "torus.off", "patch.off", "high_valence.off",
-                                           "two_pieces.off", "tetrahedron.off"),
-                         stem);
+                         ::testing::ValuesIn(kCommittedMeshes), stem);
 
 TEST(DeviceVoronoi, IsTheHostsDiagramOnACgalMesh) {
   const std::optional<SurfaceMesh> camel = cgal_mesh("camel.off");

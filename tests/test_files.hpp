@@ -32,6 +32,10 @@ inline SurfaceMesh committed(const std::string& name) {
 // A file of tests/data by its name.
 inline std::string test_data_file(const std::string& name) { return std::string(TEST_DATA_DIR) + "/" + name; }
 
+// Every mesh of meshes/, for tests over them all (::testing::ValuesIn).
+inline constexpr const char* kCommittedMeshes[] = {"sphere.off",       "atrium.off",     "torus.off",      "patch.off",
+                                                   "high_valence.off", "two_pieces.off", "tetrahedron.off"};
+
 // A test over committed meshes named by each mesh's stem ("atrium").
 inline std::string stem(const ::testing::TestParamInfo<const char*>& mesh) {
   return std::string(mesh.param).substr(0, std::string(mesh.param).find('.'));
