@@ -53,9 +53,9 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   plan.distances = plan_distances(mesh, measured, request.particles, false);
   // --device: the evening's diagrams there; on a GPU the measurement's local
   // balls too, by the fast iterative method (the one with a device path)
-  // unless --geodesic says otherwise. On a CPU device fim's balls took 7 to
-  // 10x fast marching's on the host's cores (bull at 1,024 and 4,096, PoCL:
-  // the whole run 1.7 to 1.8x the host path's), so there only --geodesic fim
+  // unless --geodesic says otherwise. On a CPU device fim's balls took 4 to
+  // 10x fast marching's on the host's cores (PoCL, bull and a 200k sphere:
+  // whole runs 1.25 to 1.8x the host path's), so there only --geodesic fim
   // sends them, as the paper method's default gives the balls only to a GPU.
   // Refused now if the working mesh's buffers would not fit. A dense table
   // is solved on the host whatever the method.
