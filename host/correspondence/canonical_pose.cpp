@@ -199,13 +199,8 @@ std::optional<CanonicalPose> choose_pose_canonically(const CanonicalTemplate& re
   to_common.scale = scale;
   to_common.rotation = best_rotation(partners.rowwise() - from, reference.points.rowwise() - to);
   to_common.translation = to.transpose() - to_common.rotation * from.transpose();
-  const PointSet placed = to_common.apply(alignment_points(mesh));
-  const PointsTree points_tree(reference.points);
-  double squared = 0;
-  for (Eigen::Index i = 0; i < placed.rows(); ++i) {
-    squared += (reference.points.row(points_tree.nearest(placed.row(i)).front()) - placed.row(i)).squaredNorm();
-  }
-  pose.alignment.rms = std::sqrt(squared / double(std::max<Eigen::Index>(1, placed.rows())));
+  pose.alignment.rms = std::sqrt(
+      mean_squared_to_nearest(to_common.apply(alignment_points(mesh)), reference.points, PointsTree(reference.points)));
   pose.alignment.from_principal_axes = true;
   return pose;
 }

@@ -126,19 +126,14 @@ const std::vector<Eigen::Matrix3d>& cube_rotations() {
   return turns;
 }
 
-namespace {
-
-// The mean squared distance from `a`'s points to `b`'s nearest.
-double one_way_squared(const PointSet& a, const PointSet& b, const PointsTree& b_tree) {
+double mean_squared_to_nearest(const PointSet& a, const PointSet& b, const PointsTree& b_tree) {
   double squared = 0;
   for (Eigen::Index i = 0; i < a.rows(); ++i) squared += (b.row(b_tree.nearest(a.row(i)).front()) - a.row(i)).squaredNorm();
   return squared / double(std::max<Eigen::Index>(1, a.rows()));
 }
 
-}  // namespace
-
 double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree) {
-  return std::sqrt(0.5 * (one_way_squared(a, b, b_tree) + one_way_squared(b, a, a_tree)));
+  return std::sqrt(0.5 * (mean_squared_to_nearest(a, b, b_tree) + mean_squared_to_nearest(b, a, a_tree)));
 }
 
 PointSet strided_rows(const PointSet& points, std::size_t most) {

@@ -92,6 +92,9 @@ PointSet strided_rows(const PointSet& points, std::size_t most);
 
 using PointsTree = MatrixRowTree<PointSet>;
 
+// The mean squared distance from `a`'s points to `b`'s nearest.
+double mean_squared_to_nearest(const PointSet& a, const PointSet& b, const PointsTree& b_tree);
+
 // The symmetric rms distance between two shapes' points (each to the
 // other's nearest, the two means of squares averaged).
 double shape_distance(const PointSet& a, const PointsTree& a_tree, const PointSet& b, const PointsTree& b_tree);
