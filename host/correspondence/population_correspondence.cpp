@@ -272,9 +272,10 @@ void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
 
 // Every owned shape's first pose: its fit onto the template where that
 // leaves one pose open, else the one of those in which the template's
-// relief lands on the shape's (relief_pose); where none lays it
-// (kWeakRelief), the pose its canonical form chooses (canonical_pose),
-// whose pairs then guide the shape's deformation (`guides`). A shape
+// relief lands on the shape's (relief_pose); where none lays it surely
+// (kSureRelief), the pose its canonical form chooses (canonical_pose) if
+// none lays it (kWeakRelief) or the canonical form lays it better, whose
+// pairs then guide the shape's deformation (`guides`). A shape
 // `turned_by_body` keeps its fit's pose (choose_body_turns turns it later).
 // Each owner decides its own shapes: the same choice on any number of
 // threads or processes.
@@ -337,8 +338,10 @@ Similarity follow(const Similarity& from, const Similarity& to, const Similarity
 
 // Every owned shape's pose in the common frame (loading its mesh). A first
 // pose (first_poses); then the shape nearest the others (the medoid) is a
-// second reference, and each shape, the template too, takes its pose onto
-// the medoid where that lies clearly nearer the whole population: a
+// second reference, and each shape whose fit left one pose open, the
+// template too, takes its pose onto the medoid where that lies clearly
+// nearer the whole population (one the relief or the canonical form chose
+// keeps it and follows the template): a
 // template whose radii or pose differ from most shapes' then pulls them
 // less. Every process gathers every shape's aligned points (its rotation
 // first) and chooses the same medoid. Shapes with an ellipsoid body, where
@@ -405,7 +408,7 @@ std::vector<MeshAlignment> align_population(const PopulationRequest& request,
     if (template_again) template_points = template_again->to_common.apply(vertex_points(template_mesh));
     for_each_index(owned, share.threads(), [&](std::size_t k) {
       if (turned_by_body[k]) return;
-      if (!guides[k].empty() || alignments[k].relief.measured) {
+      if (alignments[k].relief.measured) {
         // Its pose is the template's, chosen by the relief or carried by the
         // canonical pairs: it moves where the template moves. A rigid fit
         // onto the medoid, judged by the silhouette, would overrule what
