@@ -109,8 +109,8 @@ std::vector<RunOptionSpec> declared_options() {
                    format_number("%g", kDefaultCutoff) + ")"),
       word("device", &V::device, {},
            "OpenCL device: P:D or part of its name (default: $MESHPARTICLES_DEVICE, else the first GPU, else the "
-           "first device); with spread, given, its evening's Voronoi diagrams and its measurement's balls (by fim) run "
-           "there (default: on the host)"),
+           "first device); with spread, given, its evening's Voronoi diagrams run there, and on a GPU its measurement's "
+           "balls (by fim) (default: on the host)"),
       whole("wg", &V::wg, kWorkGroupRange, "Work-group size of the kernel"),
       whole("tile", &V::tile, kTileRange, "Tile size (particles staged in local memory; tiled only)"),
       word("weights", &V::weights, {"float", "half"},
