@@ -59,7 +59,7 @@ COMPARE="$ROOT/scripts/compare_samplers.py"
 export PYTHONDONTWRITEBYTECODE=1  # importing compare_samplers below leaves nothing in scripts/
 
 usage() {
-  echo "usage: $0 [--quick] [--repeat K] [--only REGEX] [--budget MINUTES] [--cgal K] [--force] OUT_DIR" >&2
+  echo "usage: $0 [--quick | --scale MODELS] [--threads T] [--repeat K] [--only REGEX] [--budget MINUTES] [--cgal K] [--force] OUT_DIR" >&2
   exit 2
 }
 quick=0 scale='' threads='' repeat=1 only=. budget='' cgal=4 force=0 out=''
@@ -157,7 +157,7 @@ add_cases() {  # MESH_LABEL MESH SOURCE N...
 if [ -n "$scale" ]; then
   [ -f "$scale/data/igea.ply" ] || die "$scale/data/igea.ply: not there (git clone https://github.com/alecjacobson/common-3d-test-models)"
   bunny=$(compare_samplers "c.corpus_directory() / 'bunny00.off'")
-  [ -f "$bunny" ] || die "$bunny: not there (CGAL's meshes: scripts/real_meshes.sh unpacks them)"
+  [ -f "$bunny" ] || die "$bunny: not there (CGAL's meshes: scripts/cgal_meshes.sh unpacks them)"
   add_cases scan-35k "$bunny" "CGAL bunny00.off (a 35k-vertex scan)" 4096
   add_cases scan-134k "$scale/data/igea.ply" "igea.ply (a 134k-vertex scan), common-3d-test-models" 20000
   add_cases sphere-1m "$(generated sphere 1000000)" "generate sphere --vertices 1000000" 100000
