@@ -1,6 +1,7 @@
 #include "correspondence/population_doubts.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "common/text_format.hpp"
 #include "correspondence/mesh_alignment.hpp"
@@ -12,7 +13,7 @@ namespace meshparticles {
 namespace {
 
 // Where the template's relief chose the pose (relief_pose): another pose
-// that lays it almost as well, or none that lays it well. Where a body's
+// that lays it almost as well, none that lays it well, or none surely. Where a body's
 // profile chose (body_turn): another turn within kOpenPoseRatio.
 std::string pose_doubt(const ShapeCorrespondence& shape) {
   const std::string name = shape.mesh.string() + ": ";
@@ -31,6 +32,17 @@ std::string pose_doubt(const ShapeCorrespondence& shape) {
              " almost as well (fit_relief: " +
              format_number("%.2f", relief.runner_up) + " against " + format_number("%.2f", relief.agreement) + ")" +
              turned;
+    }
+    if (relief.agreement < kSureRelief) {
+      // Neither the coarse fit nor the canonical form laid the features
+      // surely: such choices on bent-either end turned one time in three.
+      const std::string next = std::isfinite(relief.runner_up)
+                                   ? "; a pose " + format_number("%.0f", relief.runner_up_degrees) + " degrees away " +
+                                         format_number("%.2f", relief.runner_up)
+                                   : "";
+      return name + "no pose lays the template's features over its own surely" + where + " (fit_relief: " +
+             format_number("%.2f", relief.agreement) + " at best, under " + format_number("%.2f", kSureRelief) + next +
+             "): its particles may lie turned";
     }
     return "";
   }
