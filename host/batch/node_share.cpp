@@ -22,7 +22,7 @@ void share_node(RunRequest& run, int local_rank, int local_size) {
     if (!run.backend.name.empty()) throw;
     return;
   }
-  std::erase_if(gpus, [](const DeviceDescription& device) { return device.type != "GPU"; });
+  std::erase_if(gpus, [](const DeviceDescription& device) { return !device.is_gpu(); });
   if (!gpus.empty()) run.backend.device = gpus[std::size_t(local_rank) % gpus.size()].index();
 }
 

@@ -72,7 +72,7 @@ void check_device_balls_fit(const DeviceDescription& device, std::uint64_t verti
 DeviceBallSolver::DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeMethod& host,
                                    const DeviceDescription& device)
     : host_(host), device_(device), slot_bits_(slot_bits_for(device)) {
-  work_group_size_ = std::min<std::size_t>(device.type == "GPU" ? 256 : 64, device.max_work_group_size);
+  work_group_size_ = std::min<std::size_t>(device.is_gpu() ? 256 : 64, device.max_work_group_size);
   balls_per_launch_ = balls_per_launch_for(device);
   const TriangleStencils& stencils = host_.stencils();
   check_ball_memory(device, mesh.vertex_count(), mesh.ring_neighbors().size(), stencils.triangles.size(),

@@ -90,7 +90,7 @@ std::string DeviceRequest::described() const { return origin + "='" + text + "'"
 std::optional<DeviceDescription> match_device(const std::vector<DeviceDescription>& devices,
                                               const DeviceRequest& request) {
   if (request.text.empty()) {
-    const auto gpu = std::find_if(devices.begin(), devices.end(), [](const auto& d) { return d.type == "GPU"; });
+    const auto gpu = std::find_if(devices.begin(), devices.end(), [](const auto& d) { return d.is_gpu(); });
     return gpu != devices.end() ? *gpu : devices.front();
   }
   for (const auto& d : devices) {

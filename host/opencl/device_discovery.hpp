@@ -24,6 +24,8 @@ struct DeviceDescription {
   cl::Device device;
 
   std::string index() const { return std::to_string(platform_index) + ":" + std::to_string(device_index); }
+  // Where the device paths pay by default (a CPU device shares the host's cores).
+  bool is_gpu() const { return type == "GPU"; }
 };
 
 // The exit code of a run that needs OpenCL where no runtime is usable.

@@ -26,7 +26,7 @@ DefaultBackend default_on_local_balls(const DeviceDescription* device, const Loc
     }
     return twin("below the " + std::to_string(kGpuPaysFromVerticesLocal) + " vertices from which a GPU pays");
   }
-  if (!device || device->type != "GPU") return twin("no GPU selected");
+  if (!device || !device->is_gpu()) return twin("no GPU selected");
   // A ball and its margin must fit a work-group's table, or the host solves
   // it by fim, ten times slower than the twin's fast marching.
   const std::size_t slots = device_ball_slots(*device);
@@ -53,7 +53,7 @@ DefaultBackend default_paper_backend(StoreKind store, std::size_t particles, con
   if (!device) return choose(serial_field_backend(), "on the dense table, no usable OpenCL device");
   // On a CPU device the one-launch iterations beat the twin at every n
   // (PoCL, whole runs).
-  if (device->type != "GPU") return choose(field_backend(), "on the dense table, device " + device->name);
+  if (!device->is_gpu()) return choose(field_backend(), "on the dense table, device " + device->name);
   if (particles >= kGpuPaysFromParticlesDense) {
     return choose(field_backend(), "on the dense table, the GPU " + device->name + " pays from " +
                                        std::to_string(kGpuPaysFromParticlesDense) + " particles");

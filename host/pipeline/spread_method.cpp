@@ -64,7 +64,7 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   if (!request.backend.device.empty()) {
     spread.evening_device = select_device(request.backend.device);
     check_device_voronoi_fits(*spread.evening_device, working_vertices);
-    if (local && !request.geodesic_given && spread.evening_device->type == "GPU") {
+    if (local && !request.geodesic_given && spread.evening_device->is_gpu()) {
       plan.geodesics.method = GeodesicMethod::fast_iterative;
     }
   }
