@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <limits>
 #include <thread>
@@ -256,6 +257,7 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
   const unsigned threads = missing.size() < kParallelBatch ? 1 : this->threads();
   std::atomic<std::size_t> next{0}, done{0};
   std::exception_ptr failure;
+  std::condition_variable handed_out;  // every ball taken: the caller stops waiting and joins
   const auto work = [&] {
     try {
       SolverScratch scratch;
@@ -270,6 +272,8 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
       if (!failure) failure = std::current_exception();
       next = missing.size();
     }
+    const std::lock_guard lock(mutex_);  // so that the caller is waiting, or sees `next` before it waits
+    handed_out.notify_all();
   };
   if (threads == 1) {
     work();
@@ -277,9 +281,14 @@ void LocalDistances::prefetch(std::span<const VertexId> vertices) const {
     WorkerThreads workers(threads, [&](unsigned) { work(); });
     if (workers.started() == 0) work();  // no thread could start: this one does it all
     try {
-      while (done < missing.size() && next < missing.size()) {
+      // Woken when a worker runs out of balls (a sleep of its own here kept
+      // the caller up to 0.1 s after the last: most of a measurement of a
+      // few hundred particles), else every 0.1 s for the progress line.
+      const auto all_taken = [&] { return done >= missing.size() || next >= missing.size(); };
+      while (!all_taken()) {
         progress.update(done);
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        std::unique_lock lock(mutex_);
+        handed_out.wait_for(lock, std::chrono::milliseconds(100), all_taken);
       }
     } catch (...) {  // interrupted: the workers stop at their next ball, the balls made are kept
       next = missing.size();
