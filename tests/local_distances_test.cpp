@@ -154,8 +154,9 @@ TEST(LocalDistances, RequestedBallsAreSolvedOnceAndAreTheBallsSolvedOnDemand) {
 // A prefetch on threads returns when its balls are done, not at the
 // caller's next look 0.1 s on (it slept that long between looks: most of
 // the measurement of a run of a few hundred particles). Balls of one
-// vertex each, a few milliseconds in all: the quickest of three prefetches
-// is well under 0.1 s, whatever the load.
+// vertex each, a few milliseconds in all (7 to 10 ms on 2 cores): the
+// quickest of three prefetches returns before the old sleep would have
+// ended. No speed is asserted, only that the caller was not made to wait it.
 TEST(LocalDistances, APrefetchOnThreadsReturnsWhenItsBallsAreDone) {
   const SurfaceMesh mesh = committed("atrium.off");
   std::vector<VertexId> all(mesh.vertex_count());
@@ -167,7 +168,7 @@ TEST(LocalDistances, APrefetchOnThreadsReturnsWhenItsBallsAreDone) {
     EXPECT_EQ(store.statistics().balls_computed, all.size());
     quickest = std::min(quickest, store.statistics().seconds);
   }
-  EXPECT_LT(quickest, 0.06) << "seconds, the quickest of three prefetches of " << all.size() << " balls";
+  EXPECT_LT(quickest, 0.1) << "seconds, the quickest of three prefetches of " << all.size() << " balls";
 }
 
 // Whether new candidates' balls come from helpers or are solved when read,
