@@ -382,6 +382,7 @@ DeformationGraphOptions coarse_deformation_graph_options() {
   options.min_nodes = 32;
   options.max_nodes = 64;
   options.iterations_per_stage = 4;
+  options.smooth_floor = 0.125;
   return options;
 }
 

@@ -55,9 +55,14 @@ struct DeformationGraphOptions {
   // particle i's spread at 0.107 / 0.219 spacings (median / 90th
   // percentile, seed 6), these 0.093 / 0.168; a point-to-point weight of 1
   // 0.157 / 0.217. E_rot resists a stretch as much as a shear: the lower
-  // it ends, the more each node may stretch with the shape.
+  // it ends, the more each node may stretch with the shape. FAUST's people
+  // (n = 256, the transfer alone) at a last stage of 0.125: 0.364 / 0.493,
+  // the two people shaped least like the template slid about a spacing up
+  // the body; 1/32: 0.319 / 0.446; 1/128: 0.307 / 0.420; 1/256: 0.276 /
+  // 0.394. More nodes (12 vertices a node), 12 fits a stage or a final
+  // stage at point-to-point weight 1 each gained under 0.02.
   double smooth_start = 64;
-  double smooth_floor = 0.125;
+  double smooth_floor = 1.0 / 256;
   double rigid_ratio = 1;
   // Closest points recomputed (one Gauss-Newton step each) at most this
   // often a stage; a stage ends sooner once no vertex moves by more than
@@ -76,11 +81,12 @@ struct DeformationGraphOptions {
   double guided_above = 1;
 };
 
-// A node for each 100 vertices (32 to 64), at most 4 fits a stage: a fit
-// whose residual compares the poses a rigid fit leaves open, after the
-// large motion is out (about a third of the full fit's time on a capsule of
-// 1,730 vertices). With fewer than 32 nodes (or a higher smooth floor) the
-// capsule's 80-degree joint was not followed.
+// A node for each 100 vertices (32 to 64), at most 4 fits a stage, its
+// stiffness ending at 0.125: a fit whose residual compares the poses a
+// rigid fit leaves open, after the large motion is out (about a third of
+// the full fit's time on a capsule of 1,730 vertices). With fewer than 32
+// nodes (or a higher smooth floor) the capsule's 80-degree joint was not
+// followed.
 DeformationGraphOptions coarse_deformation_graph_options();
 
 // The graph on a mesh (the template as it lies in the common frame).
