@@ -13,8 +13,9 @@ namespace meshparticles {
 namespace {
 
 // Where the template's relief chose the pose (relief_pose): another pose
-// that lays it almost as well, none that lays it well, or none surely. Where a body's
-// profile chose (body_turn): another turn within kOpenPoseRatio.
+// that lays it almost as well, none that lays it well, or none surely.
+// Where a body's profile chose (body_turn): another turn within
+// kOpenPoseRatio.
 std::string pose_doubt(const ShapeCorrespondence& shape) {
   const std::string name = shape.mesh.string() + ": ";
   const std::string turned = ": its particles may lie turned by that much";
@@ -35,7 +36,8 @@ std::string pose_doubt(const ShapeCorrespondence& shape) {
     }
     if (relief.agreement < kSureRelief) {
       // Neither the coarse fit nor the canonical form laid the features
-      // surely: such choices on bent-either end turned one time in three.
+      // surely: such choices on bent-either's small populations ended turned
+      // 8 times in 25 at 2,500 vertices, 17 in 25 at 1,200.
       const std::string next = std::isfinite(relief.runner_up)
                                    ? "; a pose " + format_number("%.0f", relief.runner_up_degrees) + " degrees away " +
                                          format_number("%.2f", relief.runner_up)
