@@ -88,19 +88,7 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   const RunRequest& request = result.plan.request;
   result.spread->working = working;
   const SurfaceMesh& measured = working->mesh;
-  // The cover (to_nearest, unless the caller has it) marched on the balls'
-  // solver where both march alike: a solver's set-up is a pass over the
-  // mesh, a tenth of the measurement.
   result.distance_to_nearest = std::move(to_nearest);
-  const auto cover = [&](const GeodesicSolver* solver) {
-    const auto cover_started = std::chrono::steady_clock::now();
-    naming_memory_failures(label, "measuring the result", [&] {
-      result.distance_to_nearest =
-          solver ? distance_to_nearest_particle(*solver, measured, result.outcome.positions)
-                 : distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions);
-    });
-    result.seconds.quality += seconds_since(cover_started);
-  };
   const auto measure_through = [&](const DistancesPlan& store) {
     const auto geodesics_started = std::chrono::steady_clock::now();
     const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
@@ -109,17 +97,23 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
     result.distances.kind = distances.kind;
     result.distances.table_source = distances.source;
     result.seconds.geodesics += seconds_since(geodesics_started);
-    if (result.distance_to_nearest.empty()) {
-      const LocalDistances* balls = distances.store->local_balls();
-      cover(balls && result.plan.geodesics.method == result.plan.march_method ? &balls->solver() : nullptr);
-    }
+    const LocalDistances* balls = distances.store->local_balls();
     const auto quality_started = std::chrono::steady_clock::now();
     naming_memory_failures(label, "measuring the result", [&] {
+      if (result.distance_to_nearest.empty()) {
+        // The cover (unless the caller has it) marched on the balls' solver
+        // where both march alike: a solver's set-up is a pass over the
+        // mesh, a tenth of the measurement.
+        result.distance_to_nearest =
+            balls && result.plan.geodesics.method == result.plan.march_method
+                ? distance_to_nearest_particle(balls->solver(), measured, result.outcome.positions)
+                : distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions);
+      }
       result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
                                        result.distance_to_nearest, request.quiet);
     });
     result.seconds.quality += seconds_since(quality_started);
-    if (const LocalDistances* balls = distances.store->local_balls()) {
+    if (balls) {
       result.distances.balls = balls->statistics();
       // The balls are solved inside the quality step: count them there, not twice.
     }
