@@ -20,6 +20,7 @@
 #include "particles/scheme_step.hpp"
 #include "pipeline/distances.hpp"
 #include "quality/distribution_quality.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles::testing {
 namespace {

@@ -47,8 +47,8 @@ template <typename Cloud>
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3, std::uint32_t>;
 using PointCloudTree = KdTree<PointCloud>;
 
-// A tree over the rows of a matrix, holding its adaptor, with the one
-// search correspondence asks of it.
+// A tree over the rows of a matrix, holding its adaptor, with the searches
+// correspondence asks of it.
 template <typename Matrix>
 class MatrixRowTree {
  public:
@@ -66,6 +66,20 @@ class MatrixRowTree {
     const double at[3] = {query(0), query(1), query(2)};
     const std::size_t found = tree_.knnSearch(at, count, indices.data(), squared.data());
     return std::vector<std::uint32_t>(indices.begin(), indices.begin() + std::ptrdiff_t(found));
+  }
+
+  // Every row closer than `radius` to `query`, in increasing index.
+  template <typename Row>
+  std::vector<std::uint32_t> within(const Row& query, double radius) const {
+    std::vector<std::pair<std::uint32_t, double>> near;
+    const double at[3] = {query(0), query(1), query(2)};
+    tree_.radiusSearch(at, radius * radius, near, nanoflann::SearchParams(32, 0.0f, false));
+    std::vector<std::uint32_t> indices;
+    for (const auto& [index, squared] : near) {
+      if (squared < radius * radius) indices.push_back(index);
+    }
+    std::sort(indices.begin(), indices.end());
+    return indices;
   }
 
  private:
