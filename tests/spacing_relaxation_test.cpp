@@ -4,13 +4,15 @@
 // its cover limit, on the surface, the same bits every time; a run keeps
 // the relaxed particles only where their cover stays within 1.1x the
 // farthest start's, and where it keeps none the evening step goes on
-// under the same cover rule; `quality` places points on their own
+// under the same cover rule; where it will keep nothing it stops early,
+// and says why in report.json; `quality` places points on their own
 // sheet of the surface and measures a run on the mesh it ran on.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <ostream>
 
 #include "common/random.hpp"
 #include "mesh/io/mesh_reader.hpp"
@@ -23,6 +25,7 @@
 #include "pipeline/point_set_measurement.hpp"
 #include "particle_test_support.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "reports/run_report.hpp"
 #include "test_files.hpp"
 
 namespace meshparticles::testing {
@@ -247,6 +250,9 @@ TEST_P(RelaxationStopsEarly, WhereItWillKeepNothing) {
   EXPECT_EQ(relaxation.round_spacings.size(), expected.rounds);
   EXPECT_EQ(relaxation.kept, relaxation.candidates.size());
   EXPECT_TRUE(run.spread->evening);
+  const nlohmann::json report = run_report(*mesh, run, "unused", std::nullopt);
+  EXPECT_EQ(report["relaxation"]["stopped"], relaxation_stop_name(expected.stopped));
+  EXPECT_EQ(report["relaxation"]["rounds"], expected.rounds);
   // The sweeps' vertices (--relax-rounds 0), relaxed with no early stop.
   request.relax_rounds = 0;
   const RunResult swept = run_pipeline(*mesh, request);
