@@ -272,7 +272,8 @@ INSTANTIATE_TEST_SUITE_P(CgalMeshes, RelaxationStopsEarly,
                          ::testing::Values(EarlyStop{"fandisk.off", RelaxationStop::squeezed, 25},
                                            EarlyStop{"dino.off", RelaxationStop::out_of_reach, 50}),
                          [](const ::testing::TestParamInfo<EarlyStop>& case_info) {
-                           return std::string(case_info.param.mesh).substr(0, std::string(case_info.param.mesh).find('.'));
+                           const std::string file = case_info.param.mesh;
+                           return file.substr(0, file.find('.'));
                          });
 
 // A whole run: the relaxed particles are vertices of the run's working
