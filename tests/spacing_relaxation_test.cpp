@@ -4,13 +4,15 @@
 // its cover limit, on the surface, the same bits every time; a run keeps
 // the relaxed particles only where their cover stays within 1.1x the
 // farthest start's, and where it keeps none the evening step goes on
-// under the same cover rule; `quality` places points on their own
+// under the same cover rule; where it will keep nothing it stops early,
+// and says why in report.json; `quality` places points on their own
 // sheet of the surface and measures a run on the mesh it ran on.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <ostream>
 
 #include "common/random.hpp"
 #include "mesh/io/mesh_reader.hpp"
@@ -23,6 +25,7 @@
 #include "pipeline/point_set_measurement.hpp"
 #include "particle_test_support.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "reports/run_report.hpp"
 #include "test_files.hpp"
 
 namespace meshparticles::testing {
@@ -218,6 +221,60 @@ TEST(Relaxation, SeparatesParticlesOnOnePoint) {
 
 INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphere.off", "torus.off", "atrium.off"),
                          stem);
+
+// The relaxation stops where it will keep nothing. On fandisk at n = 256
+// the even-density rounds squeeze a pair far under the sweeps' straight
+// spacing (stopped after round 25); on dino at 256 they do not, but the
+// growing radius could not pass it by round 100 (stopped after round 50).
+// The same start relaxed without those stops passes no state more spread
+// than its start in 100 rounds, whatever the cover: the run keeps the
+// sweeps' vertices either way, and the evening goes on from them.
+struct EarlyStop {
+  const char* mesh;
+  RelaxationStop stopped;
+  std::size_t rounds;
+};
+void PrintTo(const EarlyStop& stop, std::ostream* out) { *out << stop.mesh; }
+class RelaxationStopsEarly : public ::testing::TestWithParam<EarlyStop> {};
+
+TEST_P(RelaxationStopsEarly, WhereItWillKeepNothing) {
+  const EarlyStop& expected = GetParam();
+  const auto mesh = cgal_mesh(expected.mesh);
+  ASSERT_TRUE(mesh);
+  constexpr std::size_t kParticles = 256;
+  RunRequest request = quiet_run_request(expected.mesh, kParticles);
+  const RunResult run = run_pipeline(*mesh, request);
+  const RelaxationOutcome& relaxation = run.spread->relaxation;
+  EXPECT_FALSE(relaxation.skipped_for_straight);
+  EXPECT_EQ(relaxation_stop_name(relaxation.stopped), std::string(relaxation_stop_name(expected.stopped)));
+  EXPECT_EQ(relaxation.round_spacings.size(), expected.rounds);
+  EXPECT_EQ(relaxation.kept, relaxation.candidates.size());
+  EXPECT_TRUE(run.spread->evening);
+  const nlohmann::json report = run_report(*mesh, run, "unused", std::nullopt);
+  EXPECT_EQ(report["relaxation"]["stopped"], relaxation_stop_name(expected.stopped));
+  EXPECT_EQ(report["relaxation"]["rounds"], expected.rounds);
+  // The sweeps' vertices (--relax-rounds 0), relaxed with no early stop.
+  request.relax_rounds = 0;
+  const RunResult swept = run_pipeline(*mesh, request);
+  const RelaxationOutcome full =
+      relax_spacing(swept.spread->working->mesh, swept.outcome.positions, hexagonal_spacing(mesh->area(), kParticles),
+                    kSpreadRelaxRounds, {std::numeric_limits<double>::infinity()}, 0, true,
+                    swept.spread->sweeps.back().min_spacing, false);
+  EXPECT_EQ(relaxation_stop_name(full.stopped), std::string("no_candidate"));
+  EXPECT_EQ(full.candidates.front().round, 0u);
+  ASSERT_GT(full.round_spacings.size(), relaxation.round_spacings.size());
+  for (std::size_t k = 0; k < relaxation.round_spacings.size(); ++k) {
+    EXPECT_EQ(full.round_spacings[k], relaxation.round_spacings[k]) << "round " << k + 1;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CgalMeshes, RelaxationStopsEarly,
+                         ::testing::Values(EarlyStop{"fandisk.off", RelaxationStop::squeezed, 25},
+                                           EarlyStop{"dino.off", RelaxationStop::out_of_reach, 50}),
+                         [](const ::testing::TestParamInfo<EarlyStop>& case_info) {
+                           const std::string file = case_info.param.mesh;
+                           return file.substr(0, file.find('.'));
+                         });
 
 // A whole run: the relaxed particles are vertices of the run's working
 // mesh where they stopped, more evenly spaced than the sweeps alone, with a

@@ -212,6 +212,10 @@ void RadiusGrowth::record(double radius, double spacing, std::size_t round) {
   target_ = std::max(target_, std::min(radius, spacing * (1 + growth_)));
 }
 
+double RadiusGrowth::reachable(std::size_t rounds) const {
+  return std::max(best_, target_) * std::pow(1 + kGrowth, double(rounds));
+}
+
 bool RadiusGrowth::patient(std::size_t round) const { return round - last_gain_ <= kPatienceRounds; }
 
 }  // namespace meshparticles

@@ -93,6 +93,9 @@ class RadiusGrowth {
   bool patient(std::size_t round) const;
   // Patient again from round `round`, as if it had just gained.
   void renew(std::size_t round) { last_gain_ = round; }
+  // The smallest spacing the growth may reach in `rounds` more rounds: the
+  // target rises at most kGrowth a round, from the widest held so far.
+  double reachable(std::size_t rounds) const;
 
  private:
   double target_ = 0, growth_ = 0, best_ = 0;

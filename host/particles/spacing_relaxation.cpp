@@ -30,10 +30,31 @@ constexpr double kFoamRadius = 1.2;
 constexpr std::size_t kCheckEvery = 25;
 // The rounds after which a relaxation that has passed no state more spread
 // than its start gives up. Where it is kept (the committed meshes, smooth
-// CGAL shapes) a first such state comes by round 75; where it is not (most
+// CGAL shapes) a first such state comes by round 100 (retinal and knot1 at
+// n = 256: at 100, most by 25 or 75); where it is not (most
 // real models: parts facing each other through the air), the rounds after
 // this were a third of its time, spent for nothing.
 constexpr std::size_t kHopelessAfter = 100;
+// The even-density rounds are most of the relaxation's time (each pushes
+// every particle kPushesPerRound times; a growing round seldom moves one).
+// Where they squeeze some pair far under the start's spacing the run is
+// not kept. Measured on 43 relaxations (CGAL models at n = 256 and 1,024,
+// fandisk at 4,096, the committed meshes): the widest smallest spacing of
+// rounds 11 to 25 was at least 0.975 of the start's on every one kept, and
+// under 0.9 of it on 10 of the 23 that kept none (bull at 256 and 1,024,
+// triceratops and fandisk at 256, blade, knot, turbine; dino at 256 0.929,
+// elephant at 1,024 0.972): those stop after round 25 (`squeezed`).
+constexpr std::size_t kSqueezeFrom = 11, kSqueezeTo = 25;
+constexpr double kSqueezedShare = 0.9;
+// And once the radius grows: while no state more spread than the start has
+// come, the rounds stop where even the fastest growth (kGrowth a round from
+// the widest spacing held) times this margin would not pass the start's
+// spacing by kHopelessAfter (`out_of_reach`). On the same 43 the spacing
+// passed that bound by at most 1.01 where the widest held was over half the
+// start's (by up to 1.4 after a collapse to under 0.4 of it, still far
+// short); every one kept grew from at least 0.898 of the start's spacing.
+// It stops 6 more (dino and bunny00 at 256, lion-head at 1,024: round 51).
+constexpr double kReachMargin = 1.05;
 
 // Per vertex, the sum of its triangles' area-weighted normals.
 std::vector<Vec3> vertex_normals(const SurfaceMesh& mesh) {
@@ -82,6 +103,18 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& vertex_n
 
 }  // namespace
 
+const char* relaxation_stop_name(RelaxationStop stop) {
+  switch (stop) {
+    case RelaxationStop::not_run: return "not_run";
+    case RelaxationStop::max_rounds: return "max_rounds";
+    case RelaxationStop::stalled: return "stalled";
+    case RelaxationStop::no_candidate: return "no_candidate";
+    case RelaxationStop::squeezed: return "squeezed";
+    case RelaxationStop::out_of_reach: return "out_of_reach";
+  }
+  return "";
+}
+
 double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles) {
   const auto normals = vertex_normals(mesh);
   std::vector<Vec3> at, facing;
@@ -94,7 +127,8 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
                                 std::size_t max_rounds, const std::vector<double>& cover_limits,
-                                double start_geodesic_cover, bool quiet, double start_geodesic_spacing) {
+                                double start_geodesic_cover, bool quiet, double start_geodesic_spacing,
+                                bool stop_early) {
   const auto started = std::chrono::steady_clock::now();
   PackingRelaxation relaxation(mesh, start);
   RelaxationOutcome outcome;
@@ -119,20 +153,39 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
   if (max_rounds > 0 && std::isfinite(outcome.start_spacing) && !outcome.skipped_for_straight) {
     ProgressLine progress("relax", max_rounds, quiet);
     std::optional<RadiusGrowth> growth;
+    // The last round a first candidate can come at.
+    const std::size_t horizon = std::min(max_rounds, kHopelessAfter);
+    outcome.stopped = RelaxationStop::max_rounds;
+    double foam_widest = 0;  // the widest smallest spacing of rounds kSqueezeFrom to kSqueezeTo
     for (std::size_t round = 1; round <= max_rounds; ++round) {
       const bool evening = round <= kFoamRounds;
       if (round == kFoamRounds + 1) {  // the growth starts from what the even density reached
         growth.emplace(relaxation.smallest_spacing(reach), round);
       }
-      if (!evening && !growth->patient(round)) break;
-      if (round > kHopelessAfter && std::all_of(outcome.candidates.begin(), outcome.candidates.end(),
-                                                [](const RelaxationCandidate& c) { return c.round == 0; })) {
-        break;  // no state yet more spread than the start: it will not be kept
+      if (!evening && !growth->patient(round)) {
+        outcome.stopped = RelaxationStop::stalled;
+        break;
+      }
+      const bool none_yet = std::all_of(outcome.candidates.begin(), outcome.candidates.end(),
+                                        [](const RelaxationCandidate& c) { return c.round == 0; });
+      if (none_yet && round > kHopelessAfter) {
+        outcome.stopped = RelaxationStop::no_candidate;  // no state yet more spread than the start: it will not be kept
+        break;
+      }
+      if (stop_early && none_yet && round == kSqueezeTo + 1 && foam_widest < kSqueezedShare * outcome.start_spacing) {
+        outcome.stopped = RelaxationStop::squeezed;  // the even density squeezed a pair: it will not be kept
+        break;
+      }
+      if (stop_early && none_yet && !evening && round <= horizon &&
+          kReachMargin * growth->reachable(horizon - round + 1) <= outcome.start_spacing) {
+        outcome.stopped = RelaxationStop::out_of_reach;  // nor can one come by the horizon
+        break;
       }
       const double radius = evening ? kFoamRadius * d_hex : growth->radius();
       relaxation.push_round(radius);
       const double spacing = relaxation.smallest_spacing(evening ? radius : growth->target());
       outcome.round_spacings.push_back(spacing);
+      if (round >= kSqueezeFrom && round <= kSqueezeTo) foam_widest = std::max(foam_widest, spacing);
       if (!std::isfinite(spacing)) continue;  // no pair within reach: nothing to compare
       if (!evening) growth->record(radius, spacing, round);
       const bool wanted = std::any_of(outcome.candidates.begin(), outcome.candidates.end(),

@@ -35,6 +35,17 @@ struct RelaxationCandidate {
   std::size_t round = 0;   // 0: the start (then `points` are its vertices)
 };
 
+// Why the rounds ended.
+enum class RelaxationStop {
+  not_run,       // no rounds asked, no pair within reach, or skipped_for_straight
+  max_rounds,    // ran all the rounds asked
+  stalled,       // the smallest spacing stopped growing (kPatienceRounds)
+  no_candidate,  // no state more spread than the start by kHopelessAfter rounds
+  squeezed,      // none yet, and the even-density rounds held a pair far under the start's spacing
+  out_of_reach,  // none yet, and the growth could not pass the start's spacing by then
+};
+const char* relaxation_stop_name(RelaxationStop stop);
+
 struct RelaxationOutcome {
   double start_spacing = 0, start_cover = 0;
   // Per cover limit given, in its order: the state with the largest
@@ -48,6 +59,7 @@ struct RelaxationOutcome {
   bool passed_over_for_cover = false;
   bool undone_for_spacing = false;  // the kept candidate's geodesic smallest spacing was under the sweeps' own
   bool skipped_for_straight = false;  // not run: kRelaxationStraightShare
+  RelaxationStop stopped = RelaxationStop::not_run;
 };
 
 // The largest straight-line distance from a vertex of `mesh` to the nearest
@@ -65,10 +77,16 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 // cover scaled by the start's `start_geodesic_cover` over its straight one
 // (0: unscaled). No round is run (`skipped_for_straight`) where the
 // start's smallest straight spacing is under kRelaxationStraightShare of
-// `start_geodesic_spacing` (0: no such test). Deterministic:
+// `start_geodesic_spacing` (0: no such test). The rounds stop early
+// (`stopped`) where no state more spread than the start has come by
+// kHopelessAfter rounds, or none has come yet and the even-density rounds
+// squeezed a pair far under the start's spacing (squeezed) or the growing
+// radius could not pass it by then (out_of_reach; neither where not
+// `stop_early`, which tests use to see the rounds they skip). Deterministic:
 // the same mesh and start give the same bits. Unless `quiet`, a progress line.
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
                                 std::size_t max_rounds, const std::vector<double>& cover_limits,
-                                double start_geodesic_cover, bool quiet, double start_geodesic_spacing = 0);
+                                double start_geodesic_cover, bool quiet, double start_geodesic_spacing = 0,
+                                bool stop_early = true);
 
 }  // namespace meshparticles

@@ -198,6 +198,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
                           {"passed_over_for_cover", relaxation.passed_over_for_cover},
                           {"undone_for_spacing", relaxation.undone_for_spacing},
                           {"skipped_for_straight", relaxation.skipped_for_straight},
+                          {"stopped", relaxation_stop_name(relaxation.stopped)},
                           {"spacing_per_round", round_spacings}};
   if (spread.evening) report["evening"] = evening_json(*spread.evening, d_hex);
   report["quality"] = quality_json(result.quality);
