@@ -1,11 +1,16 @@
 // The holes particles leave in a surface: found between vertices as well as
-// at them, and pulled shut by the particles whose cells reach into them.
+// at them, and pulled shut by the particles whose cells reach into them,
+// along the surface (not by a particle through the air).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
+#include "geodesics/solver_factory.hpp"
+#include "mesh/nearest_surface_point.hpp"
 #include "particles/hole_pull.hpp"
+#include "folded_strip.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -29,15 +34,28 @@ std::vector<Vec3> grid(const std::vector<Vec3>& missing = {}) {
   return at;
 }
 
+// The points of `mesh` nearest to `points`.
+std::vector<SurfaceLocation> on(const SurfaceMesh& mesh, const std::vector<Vec3>& points) {
+  const NearestSurfacePoint nearest(mesh);
+  std::vector<SurfaceLocation> at;
+  for (const Vec3& p : points) at.push_back(*nearest.find(p));
+  return at;
+}
+
+std::unique_ptr<GeodesicSolver> solver_for(const SurfaceMesh& mesh) {
+  return make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
+}
+
 // A hole between the vertices is found: particles on the corners leave the
 // middle 0.707 away, where no vertex lies (the vertices alone say 0).
 TEST(HolePull, FindsAHoleBetweenTheVertices) {
   const SurfaceMesh square = unit_square();
-  const HolePull holes(square, 0.05);
+  const auto solver = solver_for(square);
+  const HolePull holes(square, *solver, 0.05);
   EXPECT_GT(holes.size(), 200u);
   const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-  EXPECT_NEAR(holes.cover(corners), std::sqrt(0.5), 0.05);
-  EXPECT_NEAR(holes.cover(grid()), std::sqrt(0.02), 0.02);
+  EXPECT_NEAR(holes.cover(on(square, corners)), std::sqrt(0.5), 0.05);
+  EXPECT_NEAR(holes.cover(on(square, grid())), std::sqrt(0.02), 0.02);
 }
 
 // A full grid has no point farther than its cells' half diagonal (0.141):
@@ -45,10 +63,12 @@ TEST(HolePull, FindsAHoleBetweenTheVertices) {
 // neighbours are drawn into, each straight toward it; far particles stay.
 TEST(HolePull, DrawsTheNeighboursOfAHoleIntoIt) {
   const SurfaceMesh square = unit_square();
-  HolePull holes(square, 0.02);
-  for (const Vec3& pull : holes.pull(grid(), 0.15, 0.04)) EXPECT_EQ(norm(pull), 0.0);
+  const auto solver = solver_for(square);
+  HolePull holes(square, *solver, 0.02);
+  for (const Vec3& pull : holes.pull(on(square, grid()), 0.15, 0.04)) EXPECT_EQ(norm(pull), 0.0);
   const std::vector<Vec3> at = grid({{0.5, 0.5, 0}});
-  const std::vector<Vec3> pulls = holes.pull(at, 0.15, 0.04);
+  HolePull fresh(square, *solver, 0.02);
+  const std::vector<Vec3> pulls = fresh.pull(on(square, at), 0.15, 0.04);
   for (std::size_t i = 0; i < at.size(); ++i) {
     const Vec3 toward = Vec3{0.5, 0.5, 0} - at[i];
     if (std::abs(norm(toward) - 0.2) < 1e-9) {
@@ -64,16 +84,51 @@ TEST(HolePull, DrawsTheNeighboursOfAHoleIntoIt) {
 // moves may have taken beyond the reach, and gives what a fresh look gives.
 TEST(HolePull, AgainAfterSmallMovesGivesWhatAFreshLookGives) {
   const SurfaceMesh square = unit_square();
-  HolePull again(square, 0.02);
+  const auto solver = solver_for(square);
+  HolePull again(square, *solver, 0.02);
   std::vector<Vec3> at = grid({{0.5, 0.5, 0}, {0.1, 0.9, 0}});
-  again.pull(at, 0.15, 0.04);
+  again.pull(on(square, at), 0.15, 0.04);
   for (Vec3& p : at) p = p + Vec3{0.004 * p.y, -0.003 * p.x, 0};
-  HolePull fresh(square, 0.02);
-  const std::vector<Vec3> expected = fresh.pull(at, 0.15, 0.04), found = again.pull(at, 0.15, 0.04);
+  HolePull fresh(square, *solver, 0.02);
+  const std::vector<Vec3> expected = fresh.pull(on(square, at), 0.15, 0.04),
+                          found = again.pull(on(square, at), 0.15, 0.04);
   for (std::size_t i = 0; i < at.size(); ++i) {
     EXPECT_EQ(found[i].x, expected[i].x) << i;
     EXPECT_EQ(found[i].y, expected[i].y) << i;
   }
+}
+
+// On a strip folded back on itself, particles cover one sheet and the
+// other but for its end: that hole lies a twentieth of a spacing from the
+// first sheet's particles through the air, and 1.5 along its own sheet from
+// the nearest of its own. Its own sheet's particles are drawn toward it
+// (along the sheet, to -x), the other sheet's not at all; and the cover is
+// what the surface says, not the air.
+TEST(HolePull, AHoleIsDrawnShutByParticlesOnItsOwnSheet) {
+  const SurfaceMesh mesh = folded_strip();
+  const auto solver = solver_for(mesh);
+  std::vector<Vec3> points;
+  std::vector<bool> on_the_hole_sheet;
+  for (double x = 0.25; x < kLength; x += 0.5) {
+    for (const double y : {0.5, 1.5}) {
+      points.push_back({x, y, 2 * kBend});  // the sheet that covers
+      on_the_hole_sheet.push_back(false);
+      if (x < 1.5) continue;
+      points.push_back({x, y, 0});
+      on_the_hole_sheet.push_back(true);
+    }
+  }
+  const std::vector<SurfaceLocation> at = on(mesh, points);
+  HolePull holes(mesh, *solver, 0.1);
+  const std::vector<Vec3> pulls = holes.pull(at, 0.6, 0.5);
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    if (!on_the_hole_sheet[i]) {
+      EXPECT_EQ(norm(pulls[i]), 0.0) << i;
+    } else if (points[i].x < 2) {
+      EXPECT_LT(pulls[i].x, -0.1) << i;
+    }
+  }
+  EXPECT_GT(holes.cover(at), 1.5);
 }
 
 }  // namespace

@@ -47,7 +47,8 @@ nlohmann::json refinement_summary(const JointRefinementRecord& refinement) {
                        {"undone", refinement.packing_undone},
                        {"smallest_spacing", refinement.packing_spacing},
                        {"correspondence_step", refinement.packing_correspondence_step}}},
-          {"evening_kept", refinement.evening_kept}};
+          {"evening_kept", refinement.evening_kept},
+          {"gap_sweeps", refinement.gap_sweeps}};
 }
 
 nlohmann::json shape_summary(const ShapeCorrespondence& shape) {

@@ -13,9 +13,13 @@
 #include "common/progress.hpp"
 #include "correspondence/correspondence_term.hpp"
 #include "mesh/point_cloud_tree.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "particles/hole_pull.hpp"
+#include "particles/local_farthest_points.hpp"
 #include "particles/packing_relaxation.hpp"
 #include "particles/particle_params.hpp"
+#include "particles/surface_neighbours.hpp"
+#include "particles/surface_voronoi.hpp"
 #include "shape_model/corresponding_points.hpp"
 #include "shape_model/procrustes.hpp"
 
@@ -23,9 +27,6 @@ namespace meshparticles {
 
 namespace {
 
-// Neighbours looked at by the sampling step: a hexagonal packing has 6
-// within the spacing; a crowded place a few more.
-constexpr std::size_t kNeighbours = 10;
 // A step is at most this share of the shape's spacing: no particle jumps
 // over a neighbour, and the walk stays short.
 constexpr double kLargestStep = 0.3;
@@ -71,12 +72,13 @@ constexpr double kHeldCoverSampleStep = 0.15;
 // ... and lie at most this much farther (squared) from the other shapes'
 // mean (aligned as the model aligns them) than the evened shape does.
 constexpr double kHeldOffTheOthers = 2;
-
-std::vector<Vec3> vec3_points(const PointSet& points) {
-  std::vector<Vec3> at;
-  for (Eigen::Index i = 0; i < points.rows(); ++i) at.push_back({points(i, 0), points(i, 1), points(i, 2)});
-  return at;
-}
+// A shape still closer than even enough then takes at most this many sweeps
+// of spread's evening (particles/local_farthest_points), each move widening
+// its particle's gap by over kGapMinGain of a spacing, until a sweep widens
+// the mean gap by under kGapStallGain. FAUST's people at n = 256 stall after 4.
+constexpr std::size_t kGapSweeps = 8;
+constexpr double kGapMinGain = 0.01;
+constexpr double kGapStallGain = 0.001;
 
 PointSet positions(const std::vector<SurfaceLocation>& at) {
   PointSet points(Eigen::Index(at.size()), 3);
@@ -84,14 +86,36 @@ PointSet positions(const std::vector<SurfaceLocation>& at) {
   return points;
 }
 
-// The smallest straight distance between any two of `at`, facing or not.
-double smallest_distance(const std::vector<SurfaceLocation>& at) {
+// One owned shape's surface, for the questions asked of its particles
+// along it: a solver, which pairs are neighbours, where its holes are.
+// `hole_step`: its points that find holes this far apart.
+struct ShapeSurface {
+  ShapeSurface(const SurfaceMesh& mesh, double hole_step)
+      : solver(make_geodesic_solver(mesh, GeodesicMethod::fast_marching)),
+        neighbours(mesh, *solver),
+        holes(mesh, *solver, hole_step) {}
+  std::unique_ptr<GeodesicSolver> solver;
+  SurfaceNeighbours neighbours;
+  HolePull holes;
+};
+
+// The smallest distance between two of `at` that may be neighbours on the
+// surface (`surface`, built for their mesh): each pair within `reach` in a
+// straight line, at the longer of that line and the surface's lower bound
+// (so fingers side by side count at their distance along the hand);
+// `reach` where none is nearer.
+double smallest_surface_distance(const std::vector<SurfaceLocation>& at, SurfaceNeighbours& surface, double reach) {
   const PointSet points = positions(at);
   const MatrixRowTree<PointSet> tree(points);
-  double smallest = std::numeric_limits<double>::infinity();
+  double smallest = reach;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    for (const Eigen::Index j : tree.nearest(points.row(i), 2)) {
-      if (j != i) smallest = std::min(smallest, (points.row(i) - points.row(j)).norm());
+    bool looked = false;
+    for (const Eigen::Index j : tree.within(points.row(i), smallest)) {
+      if (j == i) continue;
+      if (!looked) surface.look_from(at[std::size_t(i)], reach);
+      looked = true;
+      const double straight = (points.row(i) - points.row(j)).norm();
+      smallest = std::min(smallest, std::max(straight, surface.at_least(at[std::size_t(j)])));
     }
   }
   return smallest;
@@ -109,33 +133,52 @@ std::vector<double> population_spacings(const std::vector<ShapeParticles>& shape
 }
 
 // The population's spread: over the shapes, the median of each shape's
-// smallest distance between any two particles (facing or not: two sides of
-// a thin part count), in its hexagonal spacings. `at` has the owned shapes'
-// places; every process gets the same number.
+// smallest distance between two particles along the surface (two sides of
+// a thin part count), in its hexagonal spacings, at most 2. `at` has the owned shapes'
+// places, `surfaces` their surfaces; every process gets the same number.
 double median_smallest_spacing(const std::vector<const std::vector<SurfaceLocation>*>& at,
-                               const std::vector<double>& spacings, ShapeShare& share) {
+                               const std::vector<ShapeSurface*>& surfaces, const std::vector<double>& spacings,
+                               ShapeShare& share) {
   std::vector<std::vector<double>> smallest(at.size());
-  for_each_index(share.owned(), share.threads(),
-                 [&](std::size_t k) { smallest[k] = {smallest_distance(*at[k]) / spacings[k]}; });
+  for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
+    smallest[k] = {smallest_surface_distance(*at[k], surfaces[k]->neighbours, 2 * spacings[k]) / spacings[k]};
+  });
   share.gather(smallest);
   std::vector<double> values;
   for (const std::vector<double>& value : smallest) values.push_back(value.front());
   return median(std::move(values));
 }
 
-// Soft disks of diameter `spacing`: each pair closer than that is pushed
-// apart, each by kPush of its overlap. Adds the mean overlap (in spacings) to `overlap`.
-PointSet sampling_step(const PointSet& points, double spacing, double& overlap) {
+// Soft disks of diameter `spacing`: each pair closer than that, in a straight
+// line and perhaps along the surface (`surface`: fingers side by side are
+// not), is pushed apart, each by kPush of its overlap. `at`: the particles
+// of `points` on the surface, `walk` their mesh's. Two at one place (walks
+// toward a fingertip can end both on its vertex) part along an edge of the
+// lower index's triangle. Adds the mean overlap (in spacings) to `overlap`.
+PointSet sampling_step(const PointSet& points, const std::vector<SurfaceLocation>& at, double spacing,
+                       const SurfaceWalk& walk, SurfaceNeighbours& surface, double& overlap) {
   PointSet step = PointSet::Zero(points.rows(), 3);
   const MatrixRowTree<PointSet> tree(points);
   double total = 0;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    for (const Eigen::Index j : tree.nearest(points.row(i), kNeighbours)) {
+    bool looked = false;
+    for (const Eigen::Index j : tree.within(points.row(i), spacing)) {
       if (j == i) continue;
       const Eigen::RowVector3d apart = points.row(i) - points.row(j);
       const double distance = apart.norm();
-      if (distance >= spacing || distance == 0) continue;
-      step.row(i) += kPush * (spacing - distance) / distance * apart;
+      if (distance >= spacing) continue;
+      if (!looked) surface.look_from(at[std::size_t(i)], spacing);
+      looked = true;
+      if (surface.at_least(at[std::size_t(j)]) >= spacing) continue;
+      Eigen::RowVector3d away;
+      if (distance > 0) {
+        away = apart / distance;
+      } else {
+        const Vec3 edge = walk.first_edge_direction(at[std::size_t(std::min(i, j))].triangle);
+        away << edge.x, edge.y, edge.z;
+        if (i > j) away = -away;
+      }
+      step.row(i) += kPush * (spacing - distance) * away;
       total += (spacing - distance) / spacing;
     }
   }
@@ -148,7 +191,8 @@ PointSet sampling_step(const PointSet& points, double spacing, double& overlap) 
 // kLargestStep. `points`: every shape's places before the step, replaced
 // by those after it; the mean overlap and correspondence step go into `record`.
 void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet>& points,
-                       const std::vector<SurfaceWalk*>& walks, const std::vector<double>& spacings,
+                       const std::vector<SurfaceWalk*>& walks, const std::vector<ShapeSurface*>& surfaces,
+                       const std::vector<double>& spacings,
                        const CorrespondenceTerm& term, double weight, ShapeShare& share,
                        JointRefinementRecord& record) {
   const std::size_t particles = std::size_t(points.front().rows());
@@ -159,11 +203,13 @@ void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet
   std::vector<ShapePoints> moved(shapes.size());
   for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
     double overlap = 0;
-    const PointSet push = sampling_step(points[k], spacings[k], overlap);
+    const PointSet push = sampling_step(points[k], shapes[k].at, spacings[k], *walks[k], surfaces[k]->neighbours, overlap);
+    const double cell_area = std::sqrt(0.75) * spacings[k] * spacings[k];
+    const std::vector<Vec3> shut = surfaces[k]->holes.pull(shapes[k].at, kHoleReach * spacings[k], cell_area);
     for (std::size_t i = 0; i < particles; ++i) {
       SurfaceLocation& at = shapes[k].at[i];
       const Eigen::RowVector3d total = push.row(Eigen::Index(i)) + weight * pulls[k].row(Eigen::Index(i));
-      Vec3 move{total(0), total(1), total(2)};
+      Vec3 move = Vec3{total(0), total(1), total(2)} + kHoleGain * shut[i];
       const Vec3 normal = walks[k]->normal(at.triangle);
       move = move + (-dot(move, normal)) * normal;  // along the surface
       const double length = norm(move), largest = kLargestStep * spacings[k];
@@ -187,7 +233,7 @@ void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet
 struct ShapePacking {
   PackingRelaxation relaxation;
   RadiusGrowth growth;
-  HolePull holes;
+  std::unique_ptr<ShapeSurface> surface;
   bool released = false;  // packs on its own: the correspondence step no longer nudges it
   bool active = true;     // packs in this phase
 };
@@ -241,7 +287,7 @@ std::vector<PackingStatus> packing_round(std::vector<std::optional<ShapePacking>
     if (!status[k].growing) return;
     const double cell_area = std::sqrt(0.75) * spacings[k] * spacings[k];
     std::vector<Vec3> nudge =
-        packing.holes.pull(vec3_points(status[k].points), kHoleReach * spacings[k], cell_area);
+        packing.surface->holes.pull(packing.relaxation.locations(), kHoleReach * spacings[k], cell_area);
     for (Vec3& step : nudge) step = kHoleGain * step;
     if (!pulls.empty() && !packing.released) {
       for (Eigen::Index i = 0; i < pulls[k].rows(); ++i) {
@@ -269,7 +315,7 @@ void release_held_open(std::vector<std::optional<ShapePacking>>& packings, const
                        std::size_t round, ShapeShare& share) {
   for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
     ShapePacking& packing = *packings[k];
-    packing.released = packing.holes.cover(packing.relaxation.positions()) > kHeldOpenCover * spacings[k];
+    packing.released = packing.surface->holes.cover(packing.relaxation.locations()) > kHeldOpenCover * spacings[k];
     packing.active = packing.released;
     if (packing.released) packing.growth.renew(round);
   });
@@ -283,9 +329,13 @@ void iterate_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles,
   const std::vector<double> spacings = population_spacings(shapes, particles, share);
   std::vector<std::optional<SurfaceWalk>> own_walks(shapes.size());
   std::vector<SurfaceWalk*> walks(shapes.size(), nullptr);
+  std::vector<std::unique_ptr<ShapeSurface>> own_surfaces(shapes.size());
+  std::vector<ShapeSurface*> surfaces(shapes.size(), nullptr);
   std::vector<ShapePoints> start(shapes.size());
   for (const std::size_t k : share.owned()) {
     walks[k] = &own_walks[k].emplace(*shapes[k].mesh);
+    own_surfaces[k] = std::make_unique<ShapeSurface>(*shapes[k].mesh, kHoleSampleStep * spacings[k]);
+    surfaces[k] = own_surfaces[k].get();
     start[k].points = positions(shapes[k].at);
   }
   share.gather_points(start, particles);
@@ -294,7 +344,7 @@ void iterate_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles,
   const std::unique_ptr<CorrespondenceTerm> term = correspondence_term(options);
   ProgressLine progress("refine", options.iterations, quiet);
   for (std::size_t iteration = 0; iteration < options.iterations; ++iteration) {
-    evening_iteration(shapes, points, walks, spacings, *term, options.correspondence_weight, share, record);
+    evening_iteration(shapes, points, walks, surfaces, spacings, *term, options.correspondence_weight, share, record);
     char detail[80];
     std::snprintf(detail, sizeof detail, "overlap %.4f, correspondence step %.4f", record.overlap.back(),
                   record.correspondence_step.back());
@@ -312,7 +362,7 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
     PackingRelaxation relaxation(*shapes[k].mesh, shapes[k].at);
     const double start = relaxation.smallest_spacing(2 * spacings[k]);
     packings[k].emplace(ShapePacking{std::move(relaxation), RadiusGrowth(std::isfinite(start) ? start : spacings[k], 0),
-                                     HolePull(*shapes[k].mesh, kHoleSampleStep * spacings[k])});
+                                     std::make_unique<ShapeSurface>(*shapes[k].mesh, kHoleSampleStep * spacings[k])});
   });
   const std::unique_ptr<CorrespondenceTerm> term = correspondence_term(options);
   ProgressLine progress("pack", 2 * kPackingRounds, quiet);
@@ -344,13 +394,16 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
   record.packing_rounds = round - 1;
   std::vector<std::vector<SurfaceLocation>> packed(shapes.size());
   std::vector<const std::vector<SurfaceLocation>*> before(shapes.size()), after(shapes.size());
+  std::vector<ShapeSurface*> surfaces(shapes.size(), nullptr);
   for (const std::size_t k : share.owned()) {
+    surfaces[k] = packings[k]->surface.get();
     packed[k] = packings[k]->relaxation.locations();
     before[k] = &shapes[k].at;
     after[k] = &packed[k];
   }
   // Kept only where it spreads the population at least as well as the iterations did.
-  record.packing_undone = median_smallest_spacing(after, spacings, share) < median_smallest_spacing(before, spacings, share);
+  record.packing_undone = median_smallest_spacing(after, surfaces, spacings, share) <
+                          median_smallest_spacing(before, surfaces, spacings, share);
   if (record.packing_undone) return;
   for (const std::size_t k : share.owned()) shapes[k].at = std::move(packed[k]);
 }
@@ -377,12 +430,8 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
     const SurfaceWalk walk(mesh);
     const PointSet others_mean = (mean - aligned.aligned[k]) / others;
     const std::vector<SurfaceLocation>& refined = shapes[k].at;
-    const HolePull holes(mesh, kHeldCoverSampleStep * spacings[k]);
-    const auto cover = [&](const std::vector<SurfaceLocation>& at) {
-      std::vector<Vec3> places;
-      for (const SurfaceLocation& particle : at) places.push_back(particle.at);
-      return holes.cover(places);
-    };
+    ShapeSurface surface(mesh, kHeldCoverSampleStep * spacings[k]);
+    const auto cover = [&](const std::vector<SurfaceLocation>& at) { return surface.holes.cover(at); };
     const double refined_cover = cover(refined);
     const auto off_the_others = [&](const std::vector<SurfaceLocation>& at) {
       return (aligned.transforms[k].apply(positions(at)) - others_mean).squaredNorm();
@@ -396,7 +445,7 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
         const Vec3 from = transferred[k][i].at, to = refined[i].at;
         held[i] = walk.walk(refined[i].triangle, from + fraction * (to + (-1.0) * from));
       }
-      if (smallest_distance(held) < options.even_enough * spacings[k] ||
+      if (smallest_surface_distance(held, surface.neighbours, spacings[k]) < options.even_enough * spacings[k] ||
           cover(held) > kHeldCover * refined_cover ||
           off_the_others(held) > kHeldOffTheOthers * refined_off) {
         continue;
@@ -405,11 +454,26 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
       share_kept = fraction;
       break;
     }
-    kept[k] = {share_kept};
+    // Still closer than even enough (no share was): moves that only widen
+    // a particle's gap along the surface, as the shape's own run makes.
+    std::size_t sweeps = 0;
+    if (smallest_surface_distance(shapes[k].at, surface.neighbours, spacings[k]) < options.even_enough * spacings[k]) {
+      SolverScratch scratch;
+      const double widest = surface_voronoi(mesh, *surface.solver, shapes[k].at, scratch).cover();
+      const EveningLimits limits{kGapSweeps, spacings[k], kGapMinGain * spacings[k], kGapStallGain * spacings[k], widest};
+      EveningOutcome gapped = even_out(mesh, *surface.solver, shapes[k].at, limits, 1, true);
+      shapes[k].at = std::move(gapped.points);
+      sweeps = gapped.sweeps.size();
+    }
+    kept[k] = {share_kept, double(sweeps)};
   });
   share.gather(kept);
   record.evening_kept.clear();
-  for (const std::vector<double>& value : kept) record.evening_kept.push_back(value.front());
+  record.gap_sweeps.clear();
+  for (const std::vector<double>& value : kept) {
+    record.evening_kept.push_back(value[0]);
+    record.gap_sweeps.push_back(std::size_t(value[1]));
+  }
 }
 
 }  // namespace meshparticles

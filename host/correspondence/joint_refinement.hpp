@@ -68,8 +68,11 @@ struct JointRefinementRecord {
   std::size_t packing_released = 0;  // shapes let go to pack on their own (a hole held open)
   bool packing_undone = false;       // the packing left the shapes less spread: the iterations' places kept
   // Per shape, the share of each particle's move from the transfer that
-  // hold_back_evening kept (in tenths; 1: the refinement's places).
+  // hold_back_evening kept (in tenths; 1: the refinement's places), and the
+  // sweeps of moves that only widen a gap that it then took (0: none, the
+  // shape even enough).
   std::vector<double> evening_kept;
+  std::vector<std::size_t> gap_sweeps;
 };
 
 // The iterations, then the packing (each a stage a resume starts from):

@@ -225,7 +225,8 @@ nlohmann::json refinement_json(const JointRefinementRecord& record) {
           {"packing_rounds", record.packing_rounds},
           {"packing_released", record.packing_released},
           {"packing_undone", record.packing_undone},
-          {"evening_kept", record.evening_kept}};
+          {"evening_kept", record.evening_kept},
+          {"gap_sweeps", record.gap_sweeps}};
 }
 
 JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
@@ -238,6 +239,7 @@ JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
   record.packing_released = json.at("packing_released").get<std::size_t>();
   record.packing_undone = json.value("packing_undone", false);
   json.at("evening_kept").get_to(record.evening_kept);
+  json.at("gap_sweeps").get_to(record.gap_sweeps);
   return record;
 }
 

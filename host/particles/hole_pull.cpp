@@ -15,9 +15,47 @@ constexpr std::size_t kLookAgainShare = 8;  // 1/8
 // Parts along a triangle's edge at most (a triangle 60 steps long is cut anyway).
 constexpr int kMostParts = 60;
 
+std::vector<Vec3> places(const std::vector<SurfaceLocation>& particles) {
+  std::vector<Vec3> at;
+  at.reserve(particles.size());
+  for (const SurfaceLocation& particle : particles) at.push_back(particle.at);
+  return at;
+}
+
+struct Nearest {
+  std::uint32_t particle = 0;
+  double away = std::numeric_limits<double>::infinity();
+};
+
+// The particle `point` (of `triangle`) belongs to: the straight nearest in
+// `tree` (over `at`), unless `regions` bound its distance along the surface
+// to every particle to over HolePull::kThroughTheAir times that (for each
+// corner c, d(c) - |point - c|); then the straight nearest of the particles
+// whose regions hold the corners.
+Nearest nearest_on_surface(const SurfaceMesh& mesh, std::uint32_t triangle, const Vec3& point,
+                           const PointCloudTree& tree, const std::vector<Vec3>& at, const SurfaceVoronoi& regions) {
+  const double query[3] = {point.x, point.y, point.z};
+  Nearest straight;
+  double squared = 0;
+  tree.knnSearch(query, 1, &straight.particle, &squared);
+  straight.away = std::sqrt(squared);
+  double along = 0;
+  Nearest owner;
+  for (const VertexId c : mesh.triangles()[triangle]) {
+    along = std::max(along, double(regions.distance[c]) - distance(point, mesh.positions()[c]));
+    const std::uint32_t q = regions.owner[c];
+    if (q == SurfaceVoronoi::kNoPoint) continue;
+    const double away = distance(point, at[q]);
+    if (away < owner.away || (away == owner.away && q < owner.particle)) owner = {q, away};
+  }
+  const bool through_the_air = along > HolePull::kThroughTheAir * straight.away && std::isfinite(owner.away);
+  return through_the_air ? owner : straight;
+}
+
 }  // namespace
 
-HolePull::HolePull(const SurfaceMesh& mesh, double step) : mesh_(mesh) {
+HolePull::HolePull(const SurfaceMesh& mesh, const GeodesicSolver& solver, double step)
+    : mesh_(mesh), solver_(solver) {
   const auto& positions = mesh.positions();
   for (const Triangle& t : mesh.triangles()) {
     const Vec3 ab = positions[t[1]] - positions[t[0]], ac = positions[t[2]] - positions[t[0]];
@@ -40,66 +78,64 @@ void HolePull::for_each_point(Visit&& visit) const {
     // The parts pointing as the triangle does, then beside each the one pointing the other way.
     for (int i = 0; i < parts; ++i) {
       for (int j = 0; i + j < parts; ++j) {
-        visit(index++, a + ((i + 1.0 / 3) / parts) * ab + ((j + 1.0 / 3) / parts) * ac, area);
-        if (i + j + 1 < parts) visit(index++, a + ((i + 2.0 / 3) / parts) * ab + ((j + 2.0 / 3) / parts) * ac, area);
+        visit(index++, std::uint32_t(k), a + ((i + 1.0 / 3) / parts) * ab + ((j + 1.0 / 3) / parts) * ac, area);
+        if (i + j + 1 < parts) visit(index++, std::uint32_t(k), a + ((i + 2.0 / 3) / parts) * ab + ((j + 2.0 / 3) / parts) * ac, area);
       }
     }
   }
 }
 
-std::vector<Vec3> HolePull::pull(const std::vector<Vec3>& particles, double reach, double cell_area) {
+std::vector<Vec3> HolePull::pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area) {
   std::vector<Vec3> pulls(particles.size());
   if (particles.empty()) return pulls;
-  const PointCloud cloud{particles};
+  const std::vector<Vec3> at = places(particles);
+  const PointCloud cloud{at};
   const PointCloudTree tree(3, cloud);
   const bool full = looked_from_.size() != particles.size();
   std::vector<double> moved(particles.size(), 0.0);
   if (full) {
+    regions_ = surface_voronoi(mesh_, solver_, particles, scratch_);
     nearest_.assign(size_, 0);
     distance_.assign(size_, 0);
   } else {
-    for (std::size_t i = 0; i < particles.size(); ++i) moved[i] = distance(particles[i], looked_from_[i]);
+    for (std::size_t i = 0; i < particles.size(); ++i) moved[i] = distance(at[i], looked_from_[i]);
   }
   std::size_t looked = 0;
-  for_each_point([&](std::uint32_t s, const Vec3& point, double area) {
-    // Its nearest particle is no farther than the one nearest at the full look.
+  for_each_point([&](std::uint32_t s, std::uint32_t triangle, const Vec3& point, double area) {
+    // Its particle is no farther than the one it had at the full look.
     if (!full && double(distance_[s]) + moved[nearest_[s]] <= reach) return;
     ++looked;
-    const double query[3] = {point.x, point.y, point.z};
-    std::uint32_t nearest = 0;
-    double squared = 0;
-    tree.knnSearch(query, 1, &nearest, &squared);
-    const double away = std::sqrt(squared);
+    const Nearest nearest = nearest_on_surface(mesh_, triangle, point, tree, at, regions_);
     if (full) {
-      nearest_[s] = nearest;
-      float rounded = float(away);
-      if (double(rounded) < away) rounded = std::nextafter(rounded, std::numeric_limits<float>::infinity());
+      nearest_[s] = nearest.particle;
+      float rounded = float(nearest.away);
+      if (double(rounded) < nearest.away) rounded = std::nextafter(rounded, std::numeric_limits<float>::infinity());
       distance_[s] = rounded;
     }
-    if (away <= reach) return;
-    pulls[nearest] = pulls[nearest] + (area / cell_area * (1 - reach / away)) * (point - particles[nearest]);
+    if (nearest.away <= reach) return;
+    pulls[nearest.particle] =
+        pulls[nearest.particle] + (area / cell_area * (1 - reach / nearest.away)) * (point - at[nearest.particle]);
   });
   if (full) {
-    looked_from_ = particles;
+    looked_from_ = at;
   } else if (looked * kLookAgainShare > size_) {
     looked_from_.clear();  // the next call looks at every point from where the particles are then
   }
   return pulls;
 }
 
-double HolePull::cover(const std::vector<Vec3>& particles) const {
+double HolePull::cover(const std::vector<SurfaceLocation>& particles) const {
   if (particles.empty()) return 0;
-  const PointCloud cloud{particles};
+  const std::vector<Vec3> at = places(particles);
+  const PointCloud cloud{at};
   const PointCloudTree tree(3, cloud);
+  SolverScratch scratch;
+  const SurfaceVoronoi regions = surface_voronoi(mesh_, solver_, particles, scratch);
   double cover = 0;
-  for_each_point([&](std::uint32_t, const Vec3& point, double) {
-    const double query[3] = {point.x, point.y, point.z};
-    std::uint32_t nearest = 0;
-    double squared = 0;
-    tree.knnSearch(query, 1, &nearest, &squared);
-    cover = std::max(cover, squared);
+  for_each_point([&](std::uint32_t, std::uint32_t triangle, const Vec3& point, double) {
+    cover = std::max(cover, nearest_on_surface(mesh_, triangle, point, tree, at, regions).away);
   });
-  return std::sqrt(cover);
+  return cover;
 }
 
 }  // namespace meshparticles

@@ -7,24 +7,35 @@
 // particles whose Voronoi cells reach into a hole move into it (a step of
 // Lloyd's toward the far part of their cells).
 //
-// Distances are straight lines to the nearest particle, whichever way it
-// faces: the correspondence's shapes are closed bodies a spacing thick and
-// more.
+// A point's particle is the nearest in a straight line, unless the surface
+// says that one lies through the air: then the nearest of those whose
+// geodesic regions hold its triangle's corners (particles/surface_voronoi).
+// A fingertip's hole is drawn shut by the particle on its own finger, not by
+// one on the next finger that no step along the surface brings there.
 #include <cstdint>
 #include <vector>
 
+#include "geodesics/geodesic_solver.hpp"
+#include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/vec3.hpp"
+#include "particles/surface_voronoi.hpp"
 
 namespace meshparticles {
 
 class HolePull {
  public:
-  // The points of `mesh`'s surface (which must outlive this), none farther
-  // than about `step` from the next: each triangle cut into equal parts
-  // with edges under `step`, the parts' centroids, each standing for its
-  // part's area.
-  HolePull(const SurfaceMesh& mesh, double step);
+  // A straight nearest particle is taken to lie through the air where the
+  // surface puts the point farther than this many times as far from every
+  // particle (a lower bound from its triangle's corners): smooth surfaces
+  // stay well under it at a spacing, two fingers side by side far over.
+  static constexpr double kThroughTheAir = 1.25;
+
+  // The points of `mesh`'s surface (which must outlive this, as `solver`,
+  // built for it), none farther than about `step` from the next: each
+  // triangle cut into equal parts with edges under `step`, the parts'
+  // centroids, each standing for its part's area.
+  HolePull(const SurfaceMesh& mesh, const GeodesicSolver& solver, double step);
 
   // Per particle of `particles`: over the points farther than `reach` from
   // their nearest particle, that particle's sum of (point - particle) times
@@ -32,26 +43,30 @@ class HolePull {
   // descent of the squared overshoots, in a cell's terms). Called again
   // with the same particles moved, it looks again only at the points that
   // the particles' moves may have taken beyond `reach` (a point's distance
-  // at the last full look plus how far its nearest particle has moved since):
-  // the same pulls at a fraction of the cost.
-  std::vector<Vec3> pull(const std::vector<Vec3>& particles, double reach, double cell_area);
+  // at the last full look plus how far its nearest particle has moved since;
+  // the surface's regions are those of the last full look): the same pulls
+  // at a fraction of the cost.
+  std::vector<Vec3> pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area);
 
-  // The largest distance from a point to its nearest particle.
-  double cover(const std::vector<Vec3>& particles) const;
+  // The largest distance from a point to its particle.
+  double cover(const std::vector<SurfaceLocation>& particles) const;
 
   std::size_t size() const { return size_; }
 
  private:
-  // Calls visit(index, point, area) for every point, in index order.
+  // Calls visit(index, triangle, point, area) for every point, in index order.
   template <typename Visit>
   void for_each_point(Visit&& visit) const;
 
   const SurfaceMesh& mesh_;
+  const GeodesicSolver& solver_;
+  SolverScratch scratch_;
   std::vector<std::uint8_t> parts_;  // per triangle, its parts along an edge
   std::size_t size_ = 0;
-  // At the last full look: the particles, each point's nearest and its
-  // distance (rounded up).
+  // At the last full look: the particles, their surface regions, each
+  // point's particle and its distance (rounded up).
   std::vector<Vec3> looked_from_;
+  SurfaceVoronoi regions_;
   std::vector<std::uint32_t> nearest_;
   std::vector<float> distance_;
 };
