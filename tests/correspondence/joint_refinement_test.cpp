@@ -4,7 +4,8 @@
 // its shape's surface; the iterations even the crowded start out; the
 // result is the same to the bit whatever the threads; the packing is kept
 // only where it spreads the shapes at least as well; the hold-back keeps a
-// share of each shape's evening in tenths.
+// share of each shape's evening in tenths, and a shape still under
+// even-enough takes sweeps that only widen its gaps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -197,6 +198,33 @@ TEST_F(JointRefinement, TheHoldBackKeepsAShareOfEachShapesEvening) {
       EXPECT_LT(norm(shapes[k].at[i].at + (-1.0) * refined[k].at[i].at), 1e-12) << "shape " << k << " particle " << i;
     }
   }
+}
+
+// Where no share of the evening is even enough (here: the closest pair a
+// whole hexagonal spacing apart, which 40 particles crowded at a pole after
+// a few iterations are not), each shape takes sweeps that only widen gaps:
+// they run, and no shape's closest pair ends closer than it was.
+TEST_F(JointRefinement, AShapeStillUnderEvenEnoughTakesSweepsThatOnlyWiden) {
+  JointRefinementOptions options;
+  options.iterations = 5;
+  options.even_enough = 1.0;
+  JointRefinementRecord record;
+  const std::vector<ShapeParticles> transfer = iterated(options, 2, record);
+  std::vector<ShapeParticles> shapes = transfer;
+  ShapeShare share(shapes.size(), 2);
+  iterate_jointly(shapes, kTransferredParticles, options, share, record, true);
+  const std::vector<ShapeParticles> refined = shapes;
+  std::vector<std::vector<SurfaceLocation>> transferred;
+  for (const ShapeParticles& shape : transfer) transferred.push_back(shape.at);
+  hold_back_evening(shapes, transferred, kTransferredParticles, options, share, record);
+  ASSERT_EQ(record.gap_sweeps.size(), 3u);
+  expect_on_surface(shapes);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(record.evening_kept[k], 1.0) << "shape " << k;
+    EXPECT_GT(record.gap_sweeps[k], 0u) << "shape " << k;
+    EXPECT_GE(smallest_spacing(shapes[k]), smallest_spacing(refined[k])) << "shape " << k;
+  }
+  EXPECT_FALSE(same_places(shapes, refined));
 }
 
 }  // namespace
