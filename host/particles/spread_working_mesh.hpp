@@ -1,8 +1,9 @@
 #pragma once
 // The mesh spread's particles move on (docs/ALGORITHM.md, "The
-// resolution"): the input with every edge longer than kSpreadLongestEdge
-// hexagonal spacings split where it is (after midpoint rounds to
-// `vertices_per_particle` vertices per particle where that is asked for),
+// resolution"): the input with every edge longer than `longest_edge`
+// hexagonal spacings (kSpreadLongestEdge unless asked) split where it is
+// (after midpoint rounds to `vertices_per_particle` vertices per particle
+// where that is asked for),
 // within a cap on the vertices known before anything is built. One rule
 // for the run and for `quality`, which measures a spread run's particles
 // on the same mesh.
@@ -48,7 +49,9 @@ struct WorkingMeshPlan {
   bool capped = false;
 };
 
-WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particles, double vertices_per_particle);
+// `longest_edge` in hexagonal spacings at `particles`.
+WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particles, double vertices_per_particle,
+                                  double longest_edge);
 
 // Where spread's relaxation is not kept, its sweeps go on on the working
 // mesh cut this many midpoint rounds more (each about four times the
