@@ -35,7 +35,7 @@ namespace meshparticles {
 // together at an armpit, where the packing does not push pairs that face
 // apart (rho 0.20); seed 3, a pair the iterations left at a fingertip
 // (rho 0.33). On this mesh, rho 0.59 to 0.62 on seeds 1 to 3.
-// docs/CORRESPONDENCE.md, step 1.
+// docs/CORRESPONDENCE.md, step 1 and "Tried and dropped".
 inline constexpr double kTemplateVerticesPerParticle = 24;
 inline constexpr double kTemplateLongestEdge = 0.5;
 
