@@ -253,7 +253,8 @@ TEST(SpreadPlan, DefaultsAndImpliedMethod) {
   request.quiet = false;
   request.vertices_per_particle.reset();
   request.longest_edge = 0.5;  // asked for (correspond's template): longer edges kept
-  EXPECT_DOUBLE_EQ(plan_run(mesh, request).spread->working_mesh.longest_edge, 0.5 * hexagonal_spacing(mesh.area(), 200));
+  EXPECT_DOUBLE_EQ(plan_run(mesh, request).spread->working_mesh.longest_edge,
+                   0.5 * hexagonal_spacing(mesh.area(), 200));
   request.longest_edge.reset();
 
   request.scheme = Scheme::sequential;
