@@ -42,6 +42,11 @@ struct MeasurementTolerance {  // |device - host| / |host| of each at most
 // (bull, 64); on the regular committed meshes 1e-4 or less. Bounds about
 // twice the worst.
 const MeasurementTolerance kFastMarching{0.01, 0.03, 0.015};
+// high_valence's fan of thin obtuse triangles, on a working mesh that no
+// longer cuts it (at n = 26 no edge is over 0.3 d_hex): the methods differ
+// most there. Measured: rho 0.019, nn_cv 0.097, energy 0.008 relative (nn_cv
+// 0.086 against 0.094). Bounds about twice.
+const MeasurementTolerance kFastMarchingOnAFan{0.04, 0.2, 0.015};
 // Against the host's fast iterative method (the same updates, on the host's
 // cores, in double): the device rounds in float (docs/GEODESICS.md: 1e-7 on
 // average, 7.7e-4 at a vertex). Measured, worst of the same cases: rho 2.3e-7,
@@ -114,7 +119,8 @@ void expect_device_measures_as_host(const SurfaceMesh& mesh, const std::string& 
     ADD_FAILURE() << "the two runs placed different particles: their measurements do not compare";
     return;
   }
-  expect_within(on_device.quality, host.quality, kFastMarching, "fast marching (the host path)");
+  expect_within(on_device.quality, host.quality, name == "high_valence.off" ? kFastMarchingOnAFan : kFastMarching,
+                "fast marching (the host path)");
   // Measured through balls of the wider cutoff where a particle was alone: not redone here.
   if (on_device.quality.alone == 0) {
     expect_within(on_device.quality, measured_by_host_fim(on_device), kSameMethod, "fast iterative method");

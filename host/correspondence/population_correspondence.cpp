@@ -195,6 +195,10 @@ std::vector<SurfaceLocation> sample_template(const SurfaceMesh& template_mesh, c
     if (kept) return *kept;
   }
   RunRequest run = request.run;
+  if (run.method != Method::paper) {  // spread's working mesh, at the template's resolution
+    run.vertices_per_particle = run.vertices_per_particle.value_or(kTemplateVerticesPerParticle);
+    run.longest_edge = run.longest_edge.value_or(kTemplateLongestEdge);
+  }
   run.mesh_label = request.meshes.front().string();
   run.quiet = request.quiet;
   const RunResult result = run_pipeline(template_mesh, run);

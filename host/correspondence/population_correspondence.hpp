@@ -25,6 +25,20 @@
 
 namespace meshparticles {
 
+// The template's spread run works on a finer mesh than `run`'s own default
+// (midpoint rounds to 24 vertices a particle, then no edge over 0.5
+// spacings: `run`'s before 0.11) where the request leaves it open. On the
+// coarser one (no rounds, edges over 0.3 spacings) the template's particles
+// differ a little, and on FAUST's people at n = 256 that alone left a shape
+// with a close pair: seed 1, the packing kept by a hair (the median shape's
+// smallest spacing 0.4088 against 0.4080) and two arms' sides squeezed
+// together at an armpit, where the packing does not push pairs that face
+// apart (rho 0.20); seed 3, a pair the iterations left at a fingertip
+// (rho 0.33). On this mesh, rho 0.59 to 0.62 on seeds 1 to 3.
+// docs/CORRESPONDENCE.md, step 1 and "Tried and dropped".
+inline constexpr double kTemplateVerticesPerParticle = 24;
+inline constexpr double kTemplateLongestEdge = 0.5;
+
 struct PopulationRequest {
   std::vector<std::filesystem::path> meshes;  // the first is the template
   RunRequest run;                             // the template's run (-n, seed, method, ...)

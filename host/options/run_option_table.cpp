@@ -65,12 +65,13 @@ std::vector<RunOptionSpec> declared_options() {
   std::vector<RunOptionSpec> table = {
       particles,
       word("method", &V::method, {"spread", "paper"},
-           "spread: farthest-point optimization on the surface refined to enough vertices per particle, the "
+           "spread: farthest-point optimization on the surface with its long edges split, the "
            "evenest spacing (default); paper: the paper's energy and one-ring moves on the mesh's vertices "
            "(implied by --backend, --scheme, --colors, --weights, --rebuild-every, --wg, --tile or --init v0)"),
       positive("vertices-per-particle", &V::vertices_per_particle,
-               "spread: refine the mesh until it has this many vertices per particle (default " +
-                   format_number("%g", kSpreadVerticesPerParticle) + "; more spreads further at a larger cover and cost)"),
+               "spread: refine the whole mesh by midpoint rounds until it has this many vertices per particle "
+               "(default: none, only edges over " + format_number("%g", kSpreadLongestEdge) +
+                   " spacings split; more spreads a little further at a larger cost)"),
       whole("relax-rounds", &V::relax_rounds, kRelaxRoundRange,
             "spread: at most this many rounds pushing all particles apart at once, off the vertices, after the "
             "sweeps (default " + std::to_string(kSpreadRelaxRounds) +

@@ -7,7 +7,8 @@
 
 namespace meshparticles {
 
-WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particles, double vertices_per_particle) {
+WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particles, double vertices_per_particle,
+                                  double longest_edge) {
   WorkingMeshPlan plan;
   const double memory_holds = 0.5 * double(usable_host_memory_bytes()) / kSpreadBytesPerWorkingVertex;
   plan.max_vertices =
@@ -20,7 +21,7 @@ WorkingMeshPlan plan_working_mesh(const SurfaceMesh& input, std::size_t particle
     ++plan.levels;
   }
   plan.capped = double(refined_vertex_count(input, plan.levels)) < vertices_per_particle * double(particles);
-  plan.longest_edge = kSpreadLongestEdge * hexagonal_spacing(input.area(), particles);
+  plan.longest_edge = longest_edge * hexagonal_spacing(input.area(), particles);
   return plan;
 }
 

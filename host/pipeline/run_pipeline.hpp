@@ -33,6 +33,10 @@ struct RunRequest {
   std::optional<Method> method;
   // spread: the working mesh's vertices per particle; default kSpreadVerticesPerParticle.
   std::optional<double> vertices_per_particle;
+  // spread: no edge of the working mesh longer than this many hexagonal
+  // spacings; default kSpreadLongestEdge. No option sets it: correspond
+  // samples its template at a resolution of its own (kTemplateLongestEdge).
+  std::optional<double> longest_edge;
   // spread: rounds of relaxation; default kSpreadRelaxRounds, 0: the sweeps' vertices.
   std::optional<std::size_t> relax_rounds;
   // paper: iterations; spread: sweeps. Both stop early when nothing moves.

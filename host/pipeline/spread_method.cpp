@@ -39,7 +39,8 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   }
   SpreadPlan& spread = plan.spread.emplace();
   spread.vertices_per_particle = request.vertices_per_particle.value_or(kSpreadVerticesPerParticle);
-  spread.working_mesh = plan_working_mesh(mesh, request.particles, spread.vertices_per_particle);
+  spread.longest_edge = request.longest_edge.value_or(kSpreadLongestEdge);
+  spread.working_mesh = plan_working_mesh(mesh, request.particles, spread.vertices_per_particle, spread.longest_edge);
   if (spread.working_mesh.capped && spread.working_mesh.cap_set_by_memory.empty() && request.vertices_per_particle &&
       !request.quiet) {
     std::cerr << "meshparticles: warning: --vertices-per-particle " << format_number("%g", spread.vertices_per_particle)
@@ -168,9 +169,12 @@ void warn_of_memory_cap(const RunPlan& plan, const RefinedMesh& working) {
   const WorkingMeshPlan& planned = plan.spread->working_mesh;
   if (planned.cap_set_by_memory.empty() || plan.request.quiet) return;
   std::cerr << "meshparticles: warning: " << plan.request.mesh_label << ": the working mesh stops at "
-            << working.mesh.vertex_count() << " vertices, short of the resolution asked ("
-            << format_number("%g", plan.spread->vertices_per_particle) << " vertices per particle, no edge over "
-            << format_number("%g", kSpreadLongestEdge) << " spacings): half the memory usable here (set by "
+            << working.mesh.vertex_count() << " vertices, short of the resolution asked (no edge over "
+            << format_number("%g", plan.spread->longest_edge) << " spacings"
+            << (plan.spread->vertices_per_particle > 0
+                    ? ", " + format_number("%g", plan.spread->vertices_per_particle) + " vertices per particle"
+                    : std::string())
+            << "): half the memory usable here (set by "
             << planned.cap_set_by_memory << ") holds " << planned.max_vertices
             << "; with more memory the particles differ (report.json: working_mesh.vertex_cap_set_by)\n";
 }

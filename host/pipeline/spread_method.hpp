@@ -58,6 +58,7 @@ inline constexpr double kStraightCoverMargin = 1.03;
 // What plan_run decides for spread alone (RunPlan::spread).
 struct SpreadPlan {
   double vertices_per_particle = 0;  // asked of the working mesh
+  double longest_edge = 0;           // asked of the working mesh, in hexagonal spacings
   WorkingMeshPlan working_mesh;
   // --device given: the evening's Voronoi diagrams on it
   // (particles/device_surface_voronoi); else on the host.

@@ -45,7 +45,7 @@ MeasuringMesh measuring_mesh(const SurfaceMesh& mesh, const std::vector<std::vec
   // Points on the input's vertices (a paper run's, a vertex sampler's) are
   // measured on the input, as the paper run measured them itself.
   if (!spread && on_vertices(mesh)) return {refine_by_midpoints(mesh, 0), false};
-  const WorkingMeshPlan plan = plan_working_mesh(mesh, fewest, kSpreadVerticesPerParticle);
+  const WorkingMeshPlan plan = plan_working_mesh(mesh, fewest, kSpreadVerticesPerParticle, kSpreadLongestEdge);
   RefinedMesh working = build_working_mesh(mesh, plan);
   // A spread run whose sweeps went on on a finer mesh (its relaxation not
   // kept) left its particles on that mesh's vertices: measured there, as

@@ -24,6 +24,7 @@
 #include "fixtures/mesh_generator.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "particles/particle_params.hpp"
+#include "pipeline/mesh_input.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "shape_model/shape_model.hpp"
 
@@ -125,6 +126,26 @@ class SmallPopulation : public ::testing::Test {
 // The joint refinement evens every shape out, and its correspondence step is
 // what keeps particle i in place while it does: without it (weight 0) the
 // same iterations let the particles drift apart across shapes.
+// The template is sampled on spread's working mesh at the template's own
+// resolution (kTemplateVerticesPerParticle, kTemplateLongestEdge), not at
+// the default run's: its particles are those of a run asked for that mesh,
+// measured alike, and not the default run's.
+TEST_F(SmallPopulation, TheTemplateIsSampledAtItsOwnResolution) {
+  const PopulationCorrespondence population = correspond(0, 0.1, false);
+  RunRequest run;
+  run.particles = kParticles;
+  run.quiet = true;
+  run.vertices_per_particle = kTemplateVerticesPerParticle;
+  run.longest_edge = kTemplateLongestEdge;
+  const DistributionQuality template_run = run_pipeline(load_mesh(files_.front(), true), run).quality;
+  EXPECT_EQ(population.template_quality.rho, template_run.rho);
+  EXPECT_EQ(population.template_quality.nn_cv, template_run.nn_cv);
+  EXPECT_EQ(population.template_quality.energy, template_run.energy);
+  run.vertices_per_particle.reset();
+  run.longest_edge.reset();
+  EXPECT_NE(population.template_quality.nn_cv, run_pipeline(load_mesh(files_.front(), true), run).quality.nn_cv);
+}
+
 TEST_F(SmallPopulation, JointRefinementEvensShapesOutWhileTheCorrespondenceHolds) {
   const PopulationCorrespondence transferred = correspond(0, 0.1, false, 1.0);
   const PopulationCorrespondence refined = correspond(600, 0.1, false, 1.0);
