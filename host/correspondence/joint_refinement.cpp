@@ -93,9 +93,11 @@ struct ShapeSurface {
   ShapeSurface(const SurfaceMesh& mesh, double hole_step)
       : solver(make_geodesic_solver(mesh, GeodesicMethod::fast_marching)),
         neighbours(mesh, *solver),
+        pairs(mesh, *solver),
         holes(mesh, *solver, hole_step) {}
   std::unique_ptr<GeodesicSolver> solver;
   SurfaceNeighbours neighbours;
+  SurfacePairs pairs;  // the same question, step after step
   HolePull holes;
 };
 
@@ -156,20 +158,18 @@ double median_smallest_spacing(const std::vector<const std::vector<SurfaceLocati
 // toward a fingertip can end both on its vertex) part along an edge of the
 // lower index's triangle. Adds the mean overlap (in spacings) to `overlap`.
 PointSet sampling_step(const PointSet& points, const std::vector<SurfaceLocation>& at, double spacing,
-                       const SurfaceWalk& walk, SurfaceNeighbours& surface, double& overlap) {
+                       const SurfaceWalk& walk, SurfacePairs& surface, double& overlap) {
   PointSet step = PointSet::Zero(points.rows(), 3);
   const MatrixRowTree<PointSet> tree(points);
+  surface.begin_step(at);
   double total = 0;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    bool looked = false;
     for (const Eigen::Index j : tree.within(points.row(i), spacing)) {
       if (j == i) continue;
       const Eigen::RowVector3d apart = points.row(i) - points.row(j);
       const double distance = apart.norm();
       if (distance >= spacing) continue;
-      if (!looked) surface.look_from(at[std::size_t(i)], spacing);
-      looked = true;
-      if (surface.at_least(at[std::size_t(j)]) >= spacing) continue;
+      if (!surface.may_be_within(std::uint32_t(i), std::uint32_t(j), spacing)) continue;
       Eigen::RowVector3d away;
       if (distance > 0) {
         away = apart / distance;
@@ -203,7 +203,7 @@ void evening_iteration(std::vector<ShapeParticles>& shapes, std::vector<PointSet
   std::vector<ShapePoints> moved(shapes.size());
   for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
     double overlap = 0;
-    const PointSet push = sampling_step(points[k], shapes[k].at, spacings[k], *walks[k], surfaces[k]->neighbours, overlap);
+    const PointSet push = sampling_step(points[k], shapes[k].at, spacings[k], *walks[k], surfaces[k]->pairs, overlap);
     const double cell_area = std::sqrt(0.75) * spacings[k] * spacings[k];
     const std::vector<Vec3> shut = surfaces[k]->holes.pull(shapes[k].at, kHoleReach * spacings[k], cell_area);
     for (std::size_t i = 0; i < particles; ++i) {

@@ -36,4 +36,38 @@ double SurfaceNeighbours::at_least(const SurfaceLocation& to) const {
   return bound;
 }
 
+void SurfacePairs::begin_step(const std::vector<SurfaceLocation>& at) {
+  if (looked_step_.size() != at.size()) {
+    looked_step_.assign(at.size(), 0);
+    looked_from_.assign(at.size(), Vec3{});
+    seen_.assign(at.size(), {});
+  }
+  at_ = &at;
+  ++step_;
+  looking_ = kNone;
+}
+
+bool SurfacePairs::may_be_within(std::uint32_t i, std::uint32_t j, double radius) {
+  const std::vector<SurfaceLocation>& at = *at_;
+  if (looking_ != i) {
+    if (looked_step_[i] > 0 && step_ - looked_step_[i] < kFreshSteps) {
+      for (const Seen& seen : seen_[i]) {
+        if (seen.particle != j) continue;
+        if (seen.bound < radius) return true;
+        const double moved = distance(at[i].at, looked_from_[i]) + distance(at[j].at, seen.at);
+        if (seen.bound - moved >= radius) return false;
+        break;  // no longer surely apart: look again
+      }
+    }
+    look_.look_from(at[i], radius);
+    looking_ = i;
+    looked_step_[i] = step_;
+    looked_from_[i] = at[i].at;
+    seen_[i].clear();
+  }
+  const double bound = look_.at_least(at[j]);
+  seen_[i].push_back({j, at[j].at, bound});
+  return bound < radius;
+}
+
 }  // namespace meshparticles

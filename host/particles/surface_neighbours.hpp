@@ -12,6 +12,7 @@
 // for each corner c, d(c) - |c - particle| (the path to the particle and
 // on to c is no shorter than the path to c). A pair whose bound reaches
 // the radius is surely farther along the surface; one under it may not be.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +43,44 @@ class SurfaceNeighbours {
   SolverScratch scratch_;
   std::vector<std::pair<VertexId, float>> within_;
   std::vector<float> distance_;  // per vertex: the last march's distance, +inf beyond it
+};
+
+// The same question asked of a set of particles step after step, as they
+// move a little each step: what a look from particle i said of particle j
+// is kept, and a pair surely apart stays so while its bound, less how far
+// both have moved since, still says so. A pair never looked at, or one no
+// longer surely apart, has i looked from anew; every particle is looked
+// from anew every kFreshSteps steps. A pair once found perhaps within
+// stays so until then (to part along the surface while near in a straight
+// line takes longer). Deterministic: the same places give the same answers.
+class SurfacePairs {
+ public:
+  static constexpr std::size_t kFreshSteps = 10;
+
+  SurfacePairs(const SurfaceMesh& mesh, const GeodesicSolver& solver) : look_(mesh, solver) {}
+
+  // A step over the particles `at` (which must outlive the step's questions).
+  void begin_step(const std::vector<SurfaceLocation>& at);
+
+  // Whether particle j may lie within `radius` of particle i along the
+  // surface (`radius` the same at every step).
+  bool may_be_within(std::uint32_t i, std::uint32_t j, double radius);
+
+ private:
+  struct Seen {
+    std::uint32_t particle = 0;
+    Vec3 at;           // its place at the look
+    double bound = 0;  // the look's lower bound of its distance
+  };
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+  SurfaceNeighbours look_;
+  const std::vector<SurfaceLocation>* at_ = nullptr;
+  std::size_t step_ = 0;
+  std::uint32_t looking_ = kNone;  // the particle look_ marched from this step
+  std::vector<std::size_t> looked_step_;  // per particle: the step of its last look (+1; 0: never)
+  std::vector<Vec3> looked_from_;         // per particle: its place then
+  std::vector<std::vector<Seen>> seen_;   // per particle: what that look said of the others asked of
 };
 
 }  // namespace meshparticles
