@@ -12,8 +12,8 @@
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
 #include "correspondence/correspondence_term.hpp"
-#include "mesh/point_cloud_tree.hpp"
 #include "geodesics/solver_factory.hpp"
+#include "mesh/point_cloud_tree.hpp"
 #include "particles/hole_pull.hpp"
 #include "particles/local_farthest_points.hpp"
 #include "particles/packing_relaxation.hpp"
@@ -42,9 +42,9 @@ constexpr double kPush = 0.25;
 // again for the shapes released).
 constexpr std::size_t kFadingRounds = 50;
 constexpr std::size_t kPackingRounds = 1000;
-// Each round, every point of a shape's surface farther than kHoleReach of
-// its spacing from the nearest particle draws that particle toward it
-// (particles/hole_pull), kHoleGain of the pull joining the round's nudge:
+// Each round (and each iteration), every point of a shape's surface farther
+// than kHoleReach of its spacing from its particle draws that particle
+// toward it (particles/hole_pull), kHoleGain of the pull joining the step:
 // the pushes only part pairs too close, so without it nothing closes a
 // hole that the correspondence step holds open (on a bump that grows, up
 // to 1.5 spacings wide at n = 1,024). A hexagonal packing leaves no point

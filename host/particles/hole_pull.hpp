@@ -3,7 +3,7 @@
 // A packing's pushes only part pairs that are too close: nothing moves a
 // particle into an empty place beside it, and a small steady pull (the
 // correspondence step) can hold one open. Each point of the surface farther
-// than a reach from its nearest particle draws that particle toward it: the
+// than a reach from its particle draws that particle toward it: the
 // particles whose Voronoi cells reach into a hole move into it (a step of
 // Lloyd's toward the far part of their cells).
 //
