@@ -222,10 +222,11 @@ TEST(Relaxation, SeparatesParticlesOnOnePoint) {
 INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphere.off", "torus.off", "atrium.off"),
                          stem);
 
-// The relaxation stops where it will keep nothing. On fandisk at n = 256
+// The relaxation stops where it will keep nothing. On turbine at n = 256
 // the even-density rounds squeeze a pair far under the sweeps' straight
-// spacing (stopped after round 25); on dino at 256 they do not, but the
-// growing radius could not pass it by round 100 (stopped after round 50).
+// spacing (0.47 of it: stopped after round 25); on elephant at 256 they do
+// not (1.01), but the growing radius could not pass it by round 100
+// (stopped after round 50).
 // The same start relaxed without those stops passes no state more spread
 // than its start in 100 rounds, whatever the cover: the run keeps the
 // sweeps' vertices either way, and the evening goes on from them.
@@ -269,8 +270,8 @@ TEST_P(RelaxationStopsEarly, WhereItWillKeepNothing) {
 }
 
 INSTANTIATE_TEST_SUITE_P(CgalMeshes, RelaxationStopsEarly,
-                         ::testing::Values(EarlyStop{"fandisk.off", RelaxationStop::squeezed, 25},
-                                           EarlyStop{"dino.off", RelaxationStop::out_of_reach, 50}),
+                         ::testing::Values(EarlyStop{"turbine.off", RelaxationStop::squeezed, 25},
+                                           EarlyStop{"elephant.off", RelaxationStop::out_of_reach, 50}),
                          [](const ::testing::TestParamInfo<EarlyStop>& case_info) {
                            const std::string file = case_info.param.mesh;
                            return file.substr(0, file.find('.'));
