@@ -30,8 +30,8 @@ constexpr double kFoamRadius = 1.2;
 constexpr std::size_t kCheckEvery = 25;
 // The rounds after which a relaxation that has passed no state more spread
 // than its start gives up. Where it is kept (the committed meshes, smooth
-// CGAL shapes) a first such state comes by round 100 (retinal and knot1 at
-// n = 256: at 100, most by 25 or 75); where it is not (most
+// CGAL shapes) a first such state comes by round 100 (knot1 at n = 256:
+// at 100, atrium and bear at 75, most by 25); where it is not (most
 // real models: parts facing each other through the air), the rounds after
 // this were a third of its time, spent for nothing.
 constexpr std::size_t kHopelessAfter = 100;
