@@ -38,14 +38,16 @@ class HolePull {
   HolePull(const SurfaceMesh& mesh, const GeodesicSolver& solver, double step);
 
   // Per particle of `particles`: over the points farther than `reach` from
-  // their nearest particle, that particle's sum of (point - particle) times
+  // their particle, that particle's sum of (point - particle) times
   // (1 - reach / distance) times the point's area, over `cell_area` (the
   // descent of the squared overshoots, in a cell's terms). Called again
   // with the same particles moved, it looks again only at the points that
   // the particles' moves may have taken beyond `reach` (a point's distance
-  // at the last full look plus how far its nearest particle has moved since;
-  // the surface's regions are those of the last full look): the same pulls
-  // at a fraction of the cost.
+  // at the last full look plus how far its particle has moved since), with
+  // the surface's regions of the last full look: a fresh look's pulls at a
+  // fraction of the cost, but for a point that the rule would now give a
+  // particle of its regions where it gave the straight nearest (a full look
+  // comes once an eighth of the points had to be looked at).
   std::vector<Vec3> pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area);
 
   // The largest distance from a point to its particle.
