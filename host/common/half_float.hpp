@@ -15,11 +15,11 @@ inline std::uint16_t half_bits_nearest(float value) {
   const std::uint32_t bits = std::bit_cast<std::uint32_t>(value);
   const auto sign = static_cast<std::uint16_t>((bits >> 16) & 0x8000u);
   const std::uint32_t magnitude = bits & 0x7fffffffu;
-  constexpr std::uint32_t kInfinity = 0x7f800000u;
+  constexpr std::uint32_t kInfinityBits = 0x7f800000u;
   constexpr std::uint32_t kSmallestNormalHalf = 0x38800000u;  // 2^-14 as a float
   constexpr std::uint32_t kHalfOfSmallestSubnormal = 0x33000000u;  // 2^-25: a tie that rounds to 0
   constexpr std::uint32_t kFirstToInfinity = 0x477ff000u;  // 65520: halfway past the largest half
-  if (magnitude > kInfinity) return sign | 0x7e00u | static_cast<std::uint16_t>((magnitude >> 13) & 0x3ffu);
+  if (magnitude > kInfinityBits) return sign | 0x7e00u | static_cast<std::uint16_t>((magnitude >> 13) & 0x3ffu);
   if (magnitude >= kFirstToInfinity) return sign | 0x7c00u;
   if (magnitude <= kHalfOfSmallestSubnormal) return sign;
   std::uint32_t kept;  // the half's bits before rounding
