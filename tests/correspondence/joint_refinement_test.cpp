@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "correspondence/joint_refinement.hpp"
@@ -53,6 +54,24 @@ class JointRefinement : public ::testing::Test {
     ShapeShare share(shapes.size(), threads);
     iterate_jointly(shapes, kTransferredParticles, options, share, record, true);
     return shapes;
+  }
+
+  // The places after options.iterations iterations stand for the transfer's;
+  // as many more refine them; then each shape is held back from the
+  // refinement's places toward the transfer's.
+  struct HeldBack {
+    std::vector<ShapeParticles> refined, shapes;
+  };
+  HeldBack held_back(const JointRefinementOptions& options, JointRefinementRecord& record) const {
+    const std::vector<ShapeParticles> transfer = iterated(options, 2, record);
+    std::vector<ShapeParticles> shapes = transfer;
+    ShapeShare share(shapes.size(), 2);
+    iterate_jointly(shapes, kTransferredParticles, options, share, record, true);
+    const std::vector<ShapeParticles> refined = shapes;
+    std::vector<std::vector<SurfaceLocation>> transferred;
+    for (const ShapeParticles& shape : transfer) transferred.push_back(shape.at);
+    hold_back_evening(shapes, transferred, kTransferredParticles, options, share, record);
+    return {refined, std::move(shapes)};
   }
 
   static double smallest_spacing(const ShapeParticles& shape) {
@@ -167,13 +186,8 @@ TEST_F(JointRefinement, TheHoldBackKeepsAShareOfEachShapesEvening) {
   options.iterations = 20;
   options.even_enough = 0.3;
   JointRefinementRecord record;
-  const std::vector<ShapeParticles> transfer = iterated(options, 2, record);
-  std::vector<ShapeParticles> shapes = transfer;
+  std::vector<ShapeParticles> shapes = held_back(options, record).shapes;
   ShapeShare share(shapes.size(), 2);
-  iterate_jointly(shapes, kTransferredParticles, options, share, record, true);
-  std::vector<std::vector<SurfaceLocation>> transferred;
-  for (const ShapeParticles& shape : transfer) transferred.push_back(shape.at);
-  hold_back_evening(shapes, transferred, kTransferredParticles, options, share, record);
   ASSERT_EQ(record.evening_kept.size(), 3u);
   expect_on_surface(shapes);
   std::size_t held_back = 0;
@@ -209,14 +223,7 @@ TEST_F(JointRefinement, AShapeStillUnderEvenEnoughTakesSweepsThatOnlyWiden) {
   options.iterations = 5;
   options.even_enough = 1.0;
   JointRefinementRecord record;
-  const std::vector<ShapeParticles> transfer = iterated(options, 2, record);
-  std::vector<ShapeParticles> shapes = transfer;
-  ShapeShare share(shapes.size(), 2);
-  iterate_jointly(shapes, kTransferredParticles, options, share, record, true);
-  const std::vector<ShapeParticles> refined = shapes;
-  std::vector<std::vector<SurfaceLocation>> transferred;
-  for (const ShapeParticles& shape : transfer) transferred.push_back(shape.at);
-  hold_back_evening(shapes, transferred, kTransferredParticles, options, share, record);
+  const auto [refined, shapes] = held_back(options, record);
   ASSERT_EQ(record.gap_sweeps.size(), 3u);
   expect_on_surface(shapes);
   for (std::size_t k = 0; k < 3; ++k) {
