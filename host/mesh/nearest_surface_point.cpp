@@ -19,12 +19,8 @@ NearestSurfacePoint::NearestSurfacePoint(const SurfaceMesh& mesh)
       walk_(mesh),
       around_(vertex_triangles(mesh.triangles(), mesh.vertex_count())),
       cloud_{mesh.positions()},
-      tree_(std::make_unique<PointCloudTree>(3, cloud_)) {
-  const auto& x = mesh.positions();
-  for (const Triangle& t : mesh.triangles()) {
-    for (int k = 0; k < 3; ++k) longest_edge_ = std::max(longest_edge_, distance(x[t[k]], x[t[(k + 1) % 3]]));
-  }
-}
+      tree_(std::make_unique<PointCloudTree>(3, cloud_)),
+      longest_edge_(longest_edge(mesh)) {}
 
 std::optional<SurfaceLocation> NearestSurfacePoint::find(Vec3 p) const {
   if (mesh_.triangle_count() == 0) return std::nullopt;

@@ -13,6 +13,15 @@ double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
   return 0.5 * norm(cross(b - a, c - a));
 }
 
+double longest_edge(const SurfaceMesh& mesh) {
+  const auto& x = mesh.positions();
+  double longest = 0;
+  for (const Triangle& t : mesh.triangles()) {
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, distance(x[t[k]], x[t[(k + 1) % 3]]));
+  }
+  return longest;
+}
+
 namespace {
 
 // Union-find with path halving: enough for labelling components once.

@@ -75,4 +75,8 @@ class SurfaceMesh {
 
 double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c);
 
+// The longest edge of any triangle of `mesh` (0 without triangles): how far
+// a point of a triangle can be from each of its corners.
+double longest_edge(const SurfaceMesh& mesh);
+
 }  // namespace meshparticles

@@ -6,13 +6,10 @@
 namespace meshparticles {
 
 SurfaceNeighbours::SurfaceNeighbours(const SurfaceMesh& mesh, const GeodesicSolver& solver)
-    : mesh_(mesh), solver_(solver), distance_(mesh.vertex_count(), std::numeric_limits<float>::infinity()) {
-  const auto& p = mesh.positions();
-  for (const Triangle& t : mesh.triangles()) {
-    longest_edge_ = std::max({longest_edge_, distance(p[t[0]], p[t[1]]), distance(p[t[1]], p[t[2]]),
-                              distance(p[t[2]], p[t[0]])});
-  }
-}
+    : mesh_(mesh),
+      solver_(solver),
+      longest_edge_(longest_edge(mesh)),
+      distance_(mesh.vertex_count(), std::numeric_limits<float>::infinity()) {}
 
 void SurfaceNeighbours::look_from(const SurfaceLocation& from, double radius) {
   for (const auto& [v, d] : within_) distance_[v] = std::numeric_limits<float>::infinity();
