@@ -48,7 +48,8 @@ nlohmann::json refinement_summary(const JointRefinementRecord& refinement) {
                        {"smallest_spacing", refinement.packing_spacing},
                        {"correspondence_step", refinement.packing_correspondence_step}}},
           {"evening_kept", refinement.evening_kept},
-          {"gap_sweeps", refinement.gap_sweeps}};
+          {"gap_sweeps", refinement.gap_sweeps},
+          {"hole_swaps", refinement.hole_swaps}};
 }
 
 nlohmann::json shape_summary(const ShapeCorrespondence& shape) {

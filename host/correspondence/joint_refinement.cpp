@@ -15,6 +15,7 @@
 #include "geodesics/solver_factory.hpp"
 #include "mesh/point_cloud_tree.hpp"
 #include "particles/hole_pull.hpp"
+#include "particles/hole_swap.hpp"
 #include "particles/local_farthest_points.hpp"
 #include "particles/packing_relaxation.hpp"
 #include "particles/particle_params.hpp"
@@ -79,6 +80,13 @@ constexpr double kHeldOffTheOthers = 2;
 constexpr std::size_t kGapSweeps = 8;
 constexpr double kGapMinGain = 0.01;
 constexpr double kGapStallGain = 0.001;
+// Then at most kHoleSwaps particles carried from a crowd into a hole within
+// kSwapSteps neighbours (particles/hole_swap), while the shape's closest
+// pair is under even enough or its widest hole over kSwapHole times the
+// template's own run's (the target is 1.15x the shape's own run's).
+constexpr std::size_t kHoleSwaps = 8;
+constexpr std::size_t kSwapSteps = 2;
+constexpr double kSwapHole = 1.05;
 
 PointSet positions(const std::vector<SurfaceLocation>& at) {
   PointSet points(Eigen::Index(at.size()), 3);
@@ -101,28 +109,6 @@ struct ShapeSurface {
   HolePull holes;
 };
 
-// The smallest distance between two of `at` that may be neighbours on the
-// surface (`surface`, built for their mesh): each pair within `reach` in a
-// straight line, at the longer of that line and the surface's lower bound
-// (so fingers side by side count at their distance along the hand);
-// `reach` where none is nearer.
-double smallest_surface_distance(const std::vector<SurfaceLocation>& at, SurfaceNeighbours& surface, double reach) {
-  const PointSet points = positions(at);
-  const MatrixRowTree<PointSet> tree(points);
-  double smallest = reach;
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    bool looked = false;
-    for (const Eigen::Index j : tree.within(points.row(i), smallest)) {
-      if (j == i) continue;
-      if (!looked) surface.look_from(at[std::size_t(i)], reach);
-      looked = true;
-      const double straight = (points.row(i) - points.row(j)).norm();
-      smallest = std::min(smallest, std::max(straight, surface.at_least(at[std::size_t(j)])));
-    }
-  }
-  return smallest;
-}
-
 // Every shape's hexagonal spacing, on every process.
 std::vector<double> population_spacings(const std::vector<ShapeParticles>& shapes, std::size_t particles,
                                         ShapeShare& share) {
@@ -143,7 +129,7 @@ double median_smallest_spacing(const std::vector<const std::vector<SurfaceLocati
                                ShapeShare& share) {
   std::vector<std::vector<double>> smallest(at.size());
   for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
-    smallest[k] = {smallest_surface_distance(*at[k], surfaces[k]->neighbours, 2 * spacings[k]) / spacings[k]};
+    smallest[k] = {closest_surface_pair(*at[k], surfaces[k]->neighbours, 2 * spacings[k]).spacing / spacings[k]};
   });
   share.gather(smallest);
   std::vector<double> values;
@@ -409,8 +395,14 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
 }
 
 void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<std::vector<SurfaceLocation>>& transferred,
-                       std::size_t particles, const JointRefinementOptions& options, ShapeShare& share,
-                       JointRefinementRecord& record) {
+                       std::size_t particles, double template_hole, const JointRefinementOptions& options,
+                       ShapeShare& share, JointRefinementRecord& record) {
+  if (options.iterations == 0) {  // no refinement: the transfer's places, as they are
+    record.evening_kept.assign(shapes.size(), 1.0);
+    record.gap_sweeps.assign(shapes.size(), 0);
+    record.hole_swaps.assign(shapes.size(), 0);
+    return;
+  }
   const std::vector<double> spacings = population_spacings(shapes, particles, share);
   // Every shape's evened places, aligned as the model aligns them: each
   // shape is judged against the mean of the others.
@@ -445,7 +437,7 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
         const Vec3 from = transferred[k][i].at, to = refined[i].at;
         held[i] = walk.walk(refined[i].triangle, from + fraction * (to + (-1.0) * from));
       }
-      if (smallest_surface_distance(held, surface.neighbours, spacings[k]) < options.even_enough * spacings[k] ||
+      if (closest_surface_pair(held, surface.neighbours, spacings[k]).spacing < options.even_enough * spacings[k] ||
           cover(held) > kHeldCover * refined_cover ||
           off_the_others(held) > kHeldOffTheOthers * refined_off) {
         continue;
@@ -457,7 +449,7 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
     // Still closer than even enough (no share was): moves that only widen
     // a particle's gap along the surface, as the shape's own run makes.
     std::size_t sweeps = 0;
-    if (smallest_surface_distance(shapes[k].at, surface.neighbours, spacings[k]) < options.even_enough * spacings[k]) {
+    if (closest_surface_pair(shapes[k].at, surface.neighbours, spacings[k]).spacing < options.even_enough * spacings[k]) {
       SolverScratch scratch;
       const double widest = surface_voronoi(mesh, *surface.solver, shapes[k].at, scratch).cover();
       const EveningLimits limits{kGapSweeps, spacings[k], kGapMinGain * spacings[k], kGapStallGain * spacings[k], widest};
@@ -465,14 +457,19 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
       shapes[k].at = std::move(gapped.points);
       sweeps = gapped.sweeps.size();
     }
-    kept[k] = {share_kept, double(sweeps)};
+    const HoleSwapLimits swap_limits{kHoleSwaps, options.even_enough * spacings[k],
+                                     kSwapHole * template_hole * spacings[k], kSwapSteps};
+    const std::size_t swaps = swap_into_holes(mesh, *surface.solver, surface.neighbours, shapes[k].at, swap_limits).swaps;
+    kept[k] = {share_kept, double(sweeps), double(swaps)};
   });
   share.gather(kept);
   record.evening_kept.clear();
   record.gap_sweeps.clear();
+  record.hole_swaps.clear();
   for (const std::vector<double>& value : kept) {
     record.evening_kept.push_back(value[0]);
     record.gap_sweeps.push_back(std::size_t(value[1]));
+    record.hole_swaps.push_back(std::size_t(value[2]));
   }
 }
 

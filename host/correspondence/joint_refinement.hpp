@@ -70,9 +70,11 @@ struct JointRefinementRecord {
   // Per shape, the share of each particle's move from the transfer that
   // hold_back_evening kept (in tenths; 1: the refinement's places), and the
   // sweeps of moves that only widen a gap that it then took (0: none, the
-  // shape even enough).
+  // shape even enough), and the particles it then carried from a crowd
+  // into a hole (particles/hole_swap).
   std::vector<double> evening_kept;
   std::vector<std::size_t> gap_sweeps;
+  std::vector<std::size_t> hole_swaps;
 };
 
 // The iterations, then the packing (each a stage a resume starts from):
@@ -97,9 +99,13 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
 // mean of the other shapes' (aligned as the model aligns them) as the
 // evened shape's: where the transfer was wrong (a shape a few degrees
 // turned), the refinement's correction is kept. The refinement's places
-// where no share is.
+// where no share is. A shape still closer than even enough, or with a hole
+// over kSwapHole times `template_hole` (the template's own run's widest, in
+// its spacings, as the diagram at the vertices measures it), then takes up
+// to kHoleSwaps particles from its crowds into its holes. With no
+// iterations (`options.iterations` 0) the transfer's places stay.
 void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<std::vector<SurfaceLocation>>& transferred,
-                       std::size_t particles, const JointRefinementOptions& options, ShapeShare& share,
-                       JointRefinementRecord& record);
+                       std::size_t particles, double template_hole, const JointRefinementOptions& options,
+                       ShapeShare& share, JointRefinementRecord& record);
 
 }  // namespace meshparticles

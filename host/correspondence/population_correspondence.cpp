@@ -24,9 +24,12 @@
 #include "correspondence/relief_pose.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
+#include "geodesics/solver_factory.hpp"
 #include "mesh/nearest_on_triangle.hpp"
 #include "mesh/nearest_surface_point.hpp"
 #include "mesh/vertex_triangles.hpp"
+#include "particles/particle_params.hpp"
+#include "particles/surface_voronoi.hpp"
 #include "pipeline/mesh_input.hpp"
 #include "pipeline/point_set_measurement.hpp"
 #include "pipeline/run_pipeline.hpp"
@@ -64,6 +67,15 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
   if (quality.alone == 0) return quality;
   request.distances.cutoff = kSpreadWideQualityCutoff;
   return measure_point_sets(mesh, request).sets.front().quality;
+}
+
+// The widest hole `particles` leave on `mesh`, in hexagonal spacings, as
+// the geodesic Voronoi diagram at the vertices measures it (the template's:
+// what hold_back_evening holds every shape's holes to).
+double widest_hole(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles) {
+  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
+  SolverScratch scratch;
+  return surface_voronoi(mesh, *solver, particles, scratch).cover() / hexagonal_spacing(mesh.area(), particles.size());
 }
 
 // A shape aligned onto the template, and the template's particles carried
@@ -520,7 +532,8 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   });
   refinement_stage("packed", particles, particle_count, paths, share, checkpoint, population.refinement, [&] {
     pack_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
-    hold_back_evening(particles, transferred, particle_count, request.refinement, share, population.refinement);
+    hold_back_evening(particles, transferred, particle_count, widest_hole(template_mesh, template_particles),
+                      request.refinement, share, population.refinement);
   });
 
   // Each shape measured on its own surface; then every process holds every shape's result.

@@ -226,7 +226,8 @@ nlohmann::json refinement_json(const JointRefinementRecord& record) {
           {"packing_released", record.packing_released},
           {"packing_undone", record.packing_undone},
           {"evening_kept", record.evening_kept},
-          {"gap_sweeps", record.gap_sweeps}};
+          {"gap_sweeps", record.gap_sweeps},
+          {"hole_swaps", record.hole_swaps}};
 }
 
 JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
@@ -240,6 +241,7 @@ JointRefinementRecord refinement_from_json(const nlohmann::json& json) {
   record.packing_undone = json.value("packing_undone", false);
   json.at("evening_kept").get_to(record.evening_kept);
   json.at("gap_sweeps").get_to(record.gap_sweeps);
+  json.at("hole_swaps").get_to(record.hole_swaps);
   return record;
 }
 

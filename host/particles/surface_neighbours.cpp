@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <limits>
 
+#include <Eigen/Core>
+
+#include "mesh/point_cloud_tree.hpp"
+
 namespace meshparticles {
 
 SurfaceNeighbours::SurfaceNeighbours(const SurfaceMesh& mesh, const GeodesicSolver& solver)
@@ -65,6 +69,27 @@ bool SurfacePairs::may_be_within(std::uint32_t i, std::uint32_t j, double radius
   const double bound = look_.at_least(at[j]);
   seen_[i].push_back({j, at[j].at, bound});
   return bound < radius;
+}
+
+ClosestPair closest_surface_pair(const std::vector<SurfaceLocation>& at, SurfaceNeighbours& surface, double reach) {
+  Eigen::Matrix<double, Eigen::Dynamic, 3> points(Eigen::Index(at.size()), 3);
+  for (std::size_t i = 0; i < at.size(); ++i) points.row(Eigen::Index(i)) << at[i].at.x, at[i].at.y, at[i].at.z;
+  const MatrixRowTree<Eigen::Matrix<double, Eigen::Dynamic, 3>> tree(points);
+  ClosestPair closest{reach, 0, 0};
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    bool looked = false;
+    for (const Eigen::Index j : tree.within(points.row(i), closest.spacing)) {
+      if (j == i) continue;
+      if (!looked) surface.look_from(at[std::size_t(i)], reach);
+      looked = true;
+      const double straight = (points.row(i) - points.row(j)).norm();
+      const double spacing = std::max(straight, surface.at_least(at[std::size_t(j)]));
+      if (spacing < closest.spacing) {
+        closest = {spacing, std::uint32_t(std::min(i, j)), std::uint32_t(std::max(i, j))};
+      }
+    }
+  }
+  return closest;
 }
 
 }  // namespace meshparticles

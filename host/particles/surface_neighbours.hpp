@@ -45,6 +45,16 @@ class SurfaceNeighbours {
   std::vector<float> distance_;  // per vertex: the last march's distance, +inf beyond it
 };
 
+// The closest two of `at` along the surface, as far as looks tell: each
+// pair within `reach` in a straight line, at the longer of that line and
+// the surface's lower bound (so fingers side by side count at their
+// distance along the hand); `spacing` is `reach` where none is nearer.
+struct ClosestPair {
+  double spacing = 0;
+  std::uint32_t a = 0, b = 0;  // a < b where `spacing` < `reach`
+};
+ClosestPair closest_surface_pair(const std::vector<SurfaceLocation>& at, SurfaceNeighbours& surface, double reach);
+
 // The same question asked of a set of particles step after step, as they
 // move a little each step: what a look from particle i said of particle j
 // is kept, and a pair surely apart stays so while its bound, less how far

@@ -23,6 +23,10 @@ namespace meshparticles::testing {
 namespace {
 
 constexpr std::size_t kTransferredParticles = 40;
+// The template's widest hole that hold_back_evening holds the shapes to:
+// none here, so that only a closest pair under even enough moves a particle
+// into a hole (the holes' own swaps: hole_swap_test).
+constexpr double kNoHoleLimit = std::numeric_limits<double>::infinity();
 
 class JointRefinement : public ::testing::Test {
  protected:
@@ -70,7 +74,7 @@ class JointRefinement : public ::testing::Test {
     const std::vector<ShapeParticles> refined = shapes;
     std::vector<std::vector<SurfaceLocation>> transferred;
     for (const ShapeParticles& shape : transfer) transferred.push_back(shape.at);
-    hold_back_evening(shapes, transferred, kTransferredParticles, options, share, record);
+    hold_back_evening(shapes, transferred, kTransferredParticles, kNoHoleLimit, options, share, record);
     return {refined, std::move(shapes)};
   }
 
@@ -206,7 +210,7 @@ TEST_F(JointRefinement, TheHoldBackKeepsAShareOfEachShapesEvening) {
   const std::vector<ShapeParticles> refined = shapes;
   std::vector<std::vector<SurfaceLocation>> same;
   for (const ShapeParticles& shape : refined) same.push_back(shape.at);
-  hold_back_evening(shapes, same, kTransferredParticles, options, share, record);
+  hold_back_evening(shapes, same, kTransferredParticles, kNoHoleLimit, options, share, record);
   for (std::size_t k = 0; k < 3; ++k) {
     for (std::size_t i = 0; i < kTransferredParticles; ++i) {
       EXPECT_LT(norm(shapes[k].at[i].at + (-1.0) * refined[k].at[i].at), 1e-12) << "shape " << k << " particle " << i;
@@ -225,6 +229,7 @@ TEST_F(JointRefinement, AShapeStillUnderEvenEnoughTakesSweepsThatOnlyWiden) {
   JointRefinementRecord record;
   const auto [refined, shapes] = held_back(options, record);
   ASSERT_EQ(record.gap_sweeps.size(), 3u);
+  ASSERT_EQ(record.hole_swaps.size(), 3u);
   expect_on_surface(shapes);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_EQ(record.evening_kept[k], 1.0) << "shape " << k;

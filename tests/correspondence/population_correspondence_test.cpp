@@ -205,7 +205,7 @@ TEST_F(SmallPopulation, EachShapeKeepsOnlyTheEveningItNeeds) {
 // at 1.17 to 1.23 times its own run's cover at n = 512. The packing's hole
 // pull closes them.
 TEST(RadiiPopulation, PackingLeavesNoHoleBetweenTheVertices) {
-  constexpr std::size_t kParticles = 512;
+  constexpr std::size_t kRadiiParticles = 512;
   const std::filesystem::path directory =
       std::filesystem::temp_directory_path() / ("mp_radii_" + std::to_string(::getpid()));
   std::filesystem::create_directories(directory);
@@ -217,13 +217,13 @@ TEST(RadiiPopulation, PackingLeavesNoHoleBetweenTheVertices) {
     request.meshes.push_back(directory / ("radii_" + std::to_string(s) + ".off"));
     write_mesh(meshes.back(), request.meshes.back());
   }
-  request.run.particles = kParticles;
+  request.run.particles = kRadiiParticles;
   request.quiet = true;
   const PopulationCorrespondence packed = correspond_population(request);
   std::filesystem::remove_all(directory);
   for (std::size_t s = 0; s < meshes.size(); ++s) {
     RunRequest run;
-    run.particles = kParticles;
+    run.particles = kRadiiParticles;
     run.quiet = true;
     const double own = run_pipeline(meshes[s], run).quality.cover.value();
     EXPECT_LE(packed.shapes[s].quality.cover.value(), 1.15 * own)

@@ -1,0 +1,174 @@
+#include "particles/hole_swap.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+#include "mesh/surface_walk.hpp"
+#include "particles/surface_neighbours.hpp"
+#include "particles/surface_voronoi.hpp"
+
+namespace meshparticles {
+
+namespace {
+
+// A swap must lessen the shortfall by more than this: rounding is no gain.
+constexpr double kLeastGain = 1e-9;
+// Pairs are looked for within this many times the wanted spacing: farther
+// ones count as that far (enough to tell a gain from a loss near the limit).
+constexpr double kPairReach = 2;
+
+// What a set's diagram says of it: its widest hole (and the vertex there)
+// and its closest neighbours (and their shortest path).
+struct Figures {
+  double cover = 0;
+  VertexId hole = 0;
+  double smallest = std::numeric_limits<double>::infinity();
+  std::uint32_t a = 0, b = 0;
+};
+
+Figures figures(const SurfaceVoronoi& diagram, const std::vector<SurfaceLocation>& points,
+                SurfaceNeighbours& surface, const HoleSwapLimits& limits) {
+  Figures found;
+  for (VertexId v = 0; v < diagram.distance.size(); ++v) {
+    const double d = diagram.distance[v];
+    if (std::isfinite(d) && d > found.cover) {
+      found.cover = d;
+      found.hole = v;
+    }
+  }
+  const ClosestPair closest = closest_surface_pair(points, surface, kPairReach * limits.spacing);
+  found.smallest = closest.spacing;
+  found.a = closest.a;
+  found.b = closest.b;
+  return found;
+}
+
+// How far a set falls short of the limits, each figure relative to its own.
+double shortfall(const Figures& set, const HoleSwapLimits& limits) {
+  return std::max(0.0, 1 - set.smallest / limits.spacing) + std::max(0.0, set.cover / limits.cover - 1);
+}
+
+// The particles within `steps` steps of `from` on the neighbour graph, `from` too.
+std::vector<std::uint32_t> within_steps(const std::vector<std::vector<std::uint32_t>>& neighbours, std::uint32_t from,
+                                        std::size_t steps) {
+  std::vector<std::uint32_t> reached{from};
+  std::size_t ring_begin = 0;
+  for (std::size_t step = 0; step < steps; ++step) {
+    const std::size_t ring_end = reached.size();
+    for (std::size_t k = ring_begin; k < ring_end; ++k) {
+      for (const std::uint32_t next : neighbours[reached[k]]) {
+        if (std::find(reached.begin(), reached.end(), next) == reached.end()) reached.push_back(next);
+      }
+    }
+    ring_begin = ring_end;
+  }
+  return reached;
+}
+
+struct Trial {
+  std::vector<SurfaceLocation> points;
+  Figures figures;
+};
+
+class Swapper {
+ public:
+  Swapper(const SurfaceMesh& mesh, const GeodesicSolver& solver, SurfaceNeighbours& surface,
+          const HoleSwapLimits& limits)
+      : mesh_(mesh), solver_(solver), surface_(surface), walk_(mesh), limits_(limits) {}
+
+  Figures measure(const std::vector<SurfaceLocation>& points) {
+    return figures(surface_voronoi(mesh_, solver_, points, scratch_), points, surface_, limits_);
+  }
+
+  // `points` with particle `mover` taken out and put at the vertex farthest
+  // from the rest among the regions of `neighbourhood` (its own excluded);
+  // none where no vertex there is reached, or where that vertex lies
+  // nearer the rest than `closest` (the move could only be refused).
+  std::optional<Trial> moved(const std::vector<SurfaceLocation>& points, std::uint32_t mover,
+                             const std::vector<std::uint32_t>& neighbourhood, double closest) {
+    std::vector<SurfaceLocation> rest = points;
+    rest.erase(rest.begin() + mover);
+    const SurfaceVoronoi without = surface_voronoi(mesh_, solver_, rest, scratch_);
+    std::vector<char> near(points.size(), 0);
+    for (const std::uint32_t k : neighbourhood) near[k] = 1;
+    std::optional<VertexId> target;
+    double farthest = -1;
+    for (VertexId v = 0; v < without.distance.size(); ++v) {
+      const std::uint32_t owner = without.owner[v];
+      if (owner == SurfaceVoronoi::kNoPoint) continue;
+      const std::uint32_t particle = owner < mover ? owner : owner + 1;  // its index among `points`
+      if (!near[particle] || !(without.distance[v] > farthest)) continue;
+      farthest = without.distance[v];
+      target = v;
+    }
+    if (!target || farthest < closest) return std::nullopt;
+    Trial trial{points, {}};
+    trial.points[mover] = walk_.at_vertex(*target);
+    trial.figures = measure(trial.points);
+    return trial;
+  }
+
+ private:
+  const SurfaceMesh& mesh_;
+  const GeodesicSolver& solver_;
+  SurfaceNeighbours& surface_;
+  const SurfaceWalk walk_;
+  const HoleSwapLimits& limits_;
+  SolverScratch scratch_;
+};
+
+}  // namespace
+
+HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& solver, SurfaceNeighbours& surface,
+                                std::vector<SurfaceLocation>& points, const HoleSwapLimits& limits) {
+  HoleSwapOutcome outcome;
+  if (points.size() < 3) return outcome;
+  Swapper swapper(mesh, solver, surface, limits);
+  SolverScratch scratch;
+  for (;;) {
+    const SurfaceVoronoi diagram = surface_voronoi(mesh, solver, points, scratch);
+    const std::vector<SurfacePath> paths = diagram.neighbour_paths(mesh);
+    const Figures now = figures(diagram, points, surface, limits);
+    outcome.smallest = now.smallest;
+    outcome.cover = now.cover;
+    const double short_now = shortfall(now, limits);
+    if (outcome.swaps == limits.max_swaps || short_now <= 0) break;
+    std::vector<std::vector<std::uint32_t>> neighbours(points.size());
+    for (const SurfacePath& path : paths) {
+      neighbours[path.a].push_back(path.b);
+      neighbours[path.b].push_back(path.a);
+    }
+    std::vector<std::uint32_t> movers = within_steps(neighbours, diagram.owner[now.hole], limits.steps);
+    movers.push_back(now.a);
+    movers.push_back(now.b);
+    std::sort(movers.begin(), movers.end());
+    movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
+    std::optional<Trial> best;
+    double short_best = short_now - kLeastGain;
+    for (const std::uint32_t mover : movers) {
+      std::vector<std::uint32_t> neighbourhood = within_steps(neighbours, mover, limits.steps);
+      neighbourhood.erase(neighbourhood.begin());  // the mover's own region is no place to go
+      std::optional<Trial> trial =
+          swapper.moved(points, mover, neighbourhood, std::min(now.smallest, limits.spacing));
+      if (!trial) continue;
+      const Figures& then = trial->figures;
+      if (then.smallest < std::min(now.smallest, limits.spacing) || then.cover > std::max(now.cover, limits.cover)) {
+        continue;
+      }
+      const double short_then = shortfall(then, limits);
+      if (short_then < short_best) {
+        short_best = short_then;
+        best = std::move(trial);
+      }
+    }
+    if (!best) break;
+    points = std::move(best->points);
+    ++outcome.swaps;
+  }
+  return outcome;
+}
+
+}  // namespace meshparticles
