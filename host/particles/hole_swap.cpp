@@ -152,12 +152,10 @@ HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& s
       std::vector<std::uint32_t> neighbourhood = within_steps(neighbours, mover, limits.steps);
       neighbourhood.erase(neighbourhood.begin());  // the mover's own region is no place to go
       std::optional<Trial> trial =
-          swapper.moved(points, mover, neighbourhood, std::min(now.smallest, limits.spacing));
+          swapper.moved(points, mover, neighbourhood, now.smallest);
       if (!trial) continue;
       const Figures& then = trial->figures;
-      if (then.smallest < std::min(now.smallest, limits.spacing) || then.cover > std::max(now.cover, limits.cover)) {
-        continue;
-      }
+      if (then.smallest < now.smallest || then.cover > now.cover) continue;
       const double short_then = shortfall(then, limits);
       if (short_then < short_best) {
         short_best = short_then;

@@ -43,8 +43,7 @@ struct HoleSwapOutcome {
 // farthest from the rest among its neighbourhood's regions. The mover
 // kept is the one that leaves the least shortfall (the spacing's under its
 // limit plus the hole's over its limit, each relative), where it lessens
-// the shortfall without making either figure worse than its limit or than
-// it was. The hole is the largest distance of the surface's Voronoi
+// the shortfall and makes neither figure worse than it was. The hole is the largest distance of the surface's Voronoi
 // diagram at the vertices (particles/surface_voronoi), the spacing as
 // closest_surface_pair tells it (`surface`, built for `mesh`), and the
 // neighbours those of the diagram. Deterministic: ties go to the lowest index.
