@@ -81,7 +81,7 @@ CHECK
 }
 none_turned_from_template 12 2000 5 same
 # Seed 5 at 2,500 vertices: two shapes bent the other way, which the coarse
-# fit laid in the half turn at 0.33 (under kSureRelief), are posed by their
+# fit laid in the half turn at 0.33 (under sure_relief), are posed by their
 # canonical forms, which lay the relief better (0.59, 0.46).
 none_turned_from_template 6 2500 5 any
 echo "ok"

@@ -13,14 +13,6 @@ namespace {
 
 using DirectionTree = MatrixRowTree<PointSet>;
 
-// Directions at which bodies' features are compared, and rounds of choosing turns.
-constexpr Eigen::Index kProfileDirections = 2000;
-constexpr std::size_t kBodyTurnRounds = 5;
-// A shape leaves the turn it has only for one whose features agree this
-// much better with the others': where two agree about as well (a shape
-// with faint features), its fit onto the template decides.
-constexpr double kClearlyBetter = 1.1;
-
 }  // namespace
 
 ProfileGrid profile_grid(std::size_t count) {
@@ -78,12 +70,13 @@ Eigen::VectorXd turned_profile(const Eigen::VectorXd& profile, const ProfileGrid
 }
 
 void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, ShapeShare& share,
-                       const PointSet& template_points, std::vector<MeshAlignment>& alignments) {
+                       const PointSet& template_points, std::vector<MeshAlignment>& alignments,
+                       const PoseChoiceOptions& options) {
   const std::optional<EllipsoidBody> reference = ellipsoid_body(template_points);
   if (!reference) return;
   const std::size_t count = meshes.size();
   const std::vector<std::size_t> owned = share.owned();
-  const ProfileGrid grid = profile_grid(kProfileDirections);
+  const ProfileGrid grid = profile_grid(options.profile_directions);
   const Eigen::Index directions = grid.directions.rows();
   const std::vector<Eigen::Matrix3d>& turns = cube_rotations();
   std::vector<std::optional<EllipsoidBody>> bodies(count);
@@ -125,14 +118,14 @@ void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, Sh
     }
     return Eigen::VectorXd(sum / double(with_body.size() - 1));
   };
-  for (std::size_t round = 0; round < kBodyTurnRounds; ++round) {
+  for (std::size_t round = 0; round < options.body_turn_rounds; ++round) {
     bool changed = false;
     for (const std::size_t k : with_body) {
       agreements[k] = turn_agreements(profiles[k], others(k), grid);
       if (k == 0) continue;  // the template's turn is the common frame's
       const std::size_t best = std::size_t(std::max_element(agreements[k].begin(), agreements[k].end()) - agreements[k].begin());
       const double held = agreements[k][chosen[k]];
-      if (best == chosen[k] || (held > 0 && agreements[k][best] < kClearlyBetter * held)) continue;
+      if (best == chosen[k] || !clearly_higher(agreements[k][best], held, options.clearly_better_turn)) continue;
       chosen[k] = best;
       placed[k] = turned_profile(profiles[k], grid, best);
       changed = true;

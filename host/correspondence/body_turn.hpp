@@ -12,6 +12,7 @@
 
 #include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/mesh_alignment.hpp"
+#include "correspondence/pose_choice_options.hpp"
 #include "correspondence/shape_share.hpp"
 #include "shape_model/corresponding_points.hpp"
 
@@ -43,14 +44,16 @@ Eigen::VectorXd turned_profile(const Eigen::VectorXd& profile, const ProfileGrid
 // is an ellipsoid body, each other shape with one (of at least 3) takes the
 // cube rotation of its body onto the template's whose features agree best
 // with the rest of the population's, each in its turn as chosen so far
-// (rounds in the shapes' order until none changes; the first turns are
-// those nearest the shapes' poses in `alignments`). A shape whose features
+// (rounds in the shapes' order until none changes, at most
+// body_turn_rounds; a turn held gives way only to one clearly_better_turn;
+// the first turns are those nearest the shapes' poses in `alignments`). A shape whose features
 // are faint, or whose knob stands where the template's bump does, is then
 // placed by all the others rather than by the template alone. Its pose:
 // that turn, its body's centre on the template's; its stretch: its body's
 // radii onto the template's. Every process gathers every shape's profile
 // and chooses the same turns; each sets its own shapes' alignments.
 void choose_body_turns(const std::vector<std::optional<SurfaceMesh>>& meshes, ShapeShare& share,
-                       const PointSet& template_points, std::vector<MeshAlignment>& alignments);
+                       const PointSet& template_points, std::vector<MeshAlignment>& alignments,
+                       const PoseChoiceOptions& options);
 
 }  // namespace meshparticles

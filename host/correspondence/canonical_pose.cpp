@@ -16,9 +16,6 @@ namespace meshparticles {
 
 namespace {
 
-// Two canonical fits whose rotations differ by less than this end in one pose.
-constexpr double kSamePoseDegrees = 30;
-
 // A rigid fit of `moving` onto the tree's points (iterative closest points,
 // each step the Kabsch motion onto the nearest points), from `rotation`.
 struct RigidFit {
@@ -123,15 +120,15 @@ std::optional<PointSet> canonical_form(const SurfaceMesh& mesh, const CanonicalP
 }
 
 CanonicalTemplate::CanonicalTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points,
-                                     const CanonicalPoseOptions& pose_options)
+                                     const PoseChoiceOptions& pose_options)
     : mesh(template_mesh),
       points(template_points),
-      form(canonical_form(template_mesh, pose_options)),
+      form(canonical_form(template_mesh, pose_options.canonical)),
       relief(detrended_relief(template_mesh, template_points)),
       options(pose_options) {}
 
 std::optional<CanonicalPose> choose_pose_canonically(const CanonicalTemplate& reference, const SurfaceMesh& mesh) {
-  const CanonicalPoseOptions& options = reference.options;
+  const CanonicalPoseOptions& options = reference.options.canonical;
   if (!reference.form) return std::nullopt;
   const std::optional<PointSet> form = canonical_form(mesh, options);
   if (!form) return std::nullopt;
@@ -149,18 +146,16 @@ std::optional<CanonicalPose> choose_pose_canonically(const CanonicalTemplate& re
       fits.push_back(canonical_fit(moving, template_form, template_tree, turn * rolled, options.fit_iterations));
     }
   }
-  // The distinct ends within open_ratio of the best, least rms first.
-  std::vector<std::size_t> order(fits.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fits[a].rms < fits[b].rms; });
-  std::vector<std::size_t> open;
-  for (const std::size_t k : order) {
-    if (fits[k].rms > options.open_ratio * fits[order.front()].rms) break;
-    const bool another = std::all_of(open.begin(), open.end(), [&](std::size_t p) {
-      return turn_angle(fits[p].rotation, fits[k].rotation) >= kSamePoseDegrees;
-    });
-    if (another) open.push_back(k);
+  // The distinct ends within open_ratio of the best, least rms first (two
+  // fits whose rotations differ by less than same_pose_degrees end in one pose).
+  std::vector<double> rms;
+  std::vector<Eigen::Matrix3d> turns;
+  for (const RigidFit& fit : fits) {
+    rms.push_back(fit.rms);
+    turns.push_back(fit.rotation);
   }
+  const std::vector<std::size_t> open =
+      distinct_poses(rms, turns, {}, options.open_ratio, reference.options.same_pose_degrees);
   // Each told by where the template's relief lands on the shape's.
   const PointSet own = vertex_points(mesh);
   const Eigen::VectorXd relief = detrended_relief(mesh, own);
@@ -173,21 +168,14 @@ std::optional<CanonicalPose> choose_pose_canonically(const CanonicalTemplate& re
     for (Eigen::Index v = 0; v < template_form.rows(); ++v) pairs[std::size_t(v)] = tree.nearest(template_form.row(v)).front();
     agreements.push_back(relief_agreement(reference.relief, relief, pairs));
   }
-  std::size_t chosen = 0;
-  for (std::size_t c = 1; c < open.size(); ++c) {
-    if (agreements[c] > agreements[chosen]) chosen = c;
-  }
+  std::vector<Eigen::Matrix3d> open_turns;
+  for (const std::size_t k : open) open_turns.push_back(fits[k].rotation);
   CanonicalPose pose;
-  pose.pairs = std::move(pairings[chosen]);
   MeshAlignment::Relief& told = pose.alignment.relief;
-  told.measured = true;
+  const std::size_t chosen =
+      choose_by_agreement(agreements, open_turns, [](std::size_t c, std::size_t best) { return c == best; }, told);
   told.canonical = true;
-  told.agreement = agreements[chosen];
-  for (std::size_t c = 0; c < open.size(); ++c) {
-    if (c == chosen || !(agreements[c] > told.runner_up)) continue;
-    told.runner_up = agreements[c];
-    told.runner_up_degrees = turn_angle(fits[open[c]].rotation, fits[open[chosen]].rotation);
-  }
+  pose.pairs = std::move(pairings[chosen]);
 
   // The pose in the shape's own space: the rigid motion, at unit area, that
   // lays each template vertex's partner over it.

@@ -19,7 +19,7 @@
 // the deformation graph's stiff stages (deform_by_graph's `guide`), which
 // carries the template through a bend reversed. correspond takes it where
 // no pose the rigid fit leaves open lays the relief after a coarse
-// deformable fit (relief_pose's agreement under kWeakRelief: FAUST's arms
+// deformable fit (relief_pose's agreement under weak_relief: FAUST's arms
 // overhead, bent-either's bodies bent the other way from the template).
 //
 // Measured limits (n = 256): the bent families' bend is not isometric
@@ -36,47 +36,25 @@
 #include <vector>
 
 #include "correspondence/mesh_alignment.hpp"
+#include "correspondence/pose_choice_options.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace meshparticles {
-
-struct CanonicalPoseOptions {
-  // Landmarks: geodesic farthest points, whose distances to each other are
-  // scaled and to every vertex place it; at most the vertex count.
-  std::size_t landmarks = 200;
-  // Take out the bend the form keeps (its across coordinates' quadratic
-  // trend along the long axis): a bend that stretches the outer side is not
-  // isometric. With the raw relief, on bent-either, none of the 8 shapes
-  // bent the other way paired right without it and 1 with it; with the
-  // relief's slow trend taken out too, 7 of 8 (and the 3 bent the
-  // template's way, as without).
-  bool straighten = true;
-  // Starts of the canonical fit: the shape's principal axes onto the
-  // template's in the 24 proper ways, each also turned about the long axis
-  // by every `roll_degrees` below 90 (a body round in section has no
-  // second axis).
-  double roll_degrees = 30;
-  std::size_t fit_iterations = 12;
-  std::size_t fit_points = 1500;  // vertices fitted, evenly strided beyond
-  // The fits whose rms lies within this ratio of the best's are told apart
-  // by the relief; the others are another shape's.
-  double open_ratio = 1.15;
-};
 
 // A mesh's canonical form: its vertices embedded (ids as the mesh's) at
 // unit area, centred, along their principal axes; nothing where the mesh
 // has vertices no landmark reaches (several components).
 std::optional<PointSet> canonical_form(const SurfaceMesh& mesh, const CanonicalPoseOptions& options = {});
 
-// The template's side, the same for every shape.
+// The template's side, the same for every shape (its form made by
+// `options.canonical`).
 struct CanonicalTemplate {
-  CanonicalTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points,
-                    const CanonicalPoseOptions& options = {});
+  CanonicalTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points, const PoseChoiceOptions& options);
   const SurfaceMesh& mesh;
   PointSet points;  // in the common frame
   std::optional<PointSet> form;
   Eigen::VectorXd relief;
-  CanonicalPoseOptions options;
+  PoseChoiceOptions options;
 };
 
 struct CanonicalPose {

@@ -17,14 +17,6 @@ namespace {
 constexpr std::size_t kMaxIterations = 60;
 constexpr double kSettled = 1e-9;            // rms change, unit-area units
 constexpr Eigen::Index kMaxFitPoints = 4000;  // vertices fitted, evenly strided beyond
-// The given pose is kept when its trial ends in the best start's pose, or
-// fits within this ratio of it: shapes of one scanner often arrive roughly
-// aligned, and where the geometry barely tells poses apart, the pose as
-// given is the better guess.
-constexpr double kGivenPoseKept = 1.02;
-constexpr std::size_t kTrialIterations = 8;
-// Trials that end this far from the chosen pose are another pose.
-constexpr double kOtherPoseDegrees = 30;
 
 // The vertices the fit uses: all, or every k-th of a large mesh.
 PointSet fit_points(const PointSet& points) { return strided_rows(points, std::size_t(kMaxFitPoints)); }
@@ -215,7 +207,7 @@ Similarity canonical_frame(const SurfaceMesh& mesh) {
 }
 
 PoseTrials pose_trials(const SurfaceMesh& mesh, const PointSet& template_points, const Similarity& template_frame,
-                       const PointsTree& template_tree) {
+                       const PointsTree& template_tree, const PoseChoiceOptions& options) {
   const Similarity own = canonical_frame(mesh);
   // The starts: the pose as given (turned as the template's frame turns
   // the template: shapes of one scanner often arrive roughly aligned, and
@@ -240,40 +232,51 @@ PoseTrials pose_trials(const SurfaceMesh& mesh, const PointSet& template_points,
   for (Similarity& start : starts) {
     start.translation = -start.scale * (start.rotation * found.points.colwise().mean().transpose());
     const ClosestPointFit fit = affine_closest_point_fit(start.apply(found.points), template_points, template_tree,
-                                                         kTrialIterations);
+                                                         options.trial_iterations);
     found.trials.push_back({start, fit.linear, fit.translation, fit.rms, nearest_rotation(fit.linear) * start.rotation});
     if (fit.rms < found.trials[found.best].rms) found.best = found.trials.size() - 1;
   }
   const std::vector<PoseTrial>& trials = found.trials;
-  found.chosen = found.best;
-  if (turn_angle(trials.front().turn, trials[found.best].turn) < kOtherPoseDegrees ||
-      trials.front().rms <= kGivenPoseKept * trials[found.best].rms) {
-    found.chosen = 0;
-  }
+  // The best start takes the place of the pose as given only where it
+  // ends in another pose and fits clearly better.
+  const bool another_pose = turn_angle(trials.front().turn, trials[found.best].turn) >= options.same_pose_degrees;
+  found.chosen = another_pose && clearly_lower(trials[found.best].rms, trials.front().rms, options.given_pose_kept)
+                     ? found.best
+                     : 0;
   return found;
 }
 
-std::vector<std::size_t> PoseTrials::distinct_poses(double within) const {
-  std::vector<std::size_t> poses{chosen};
-  std::vector<std::size_t> order(trials.size());
+std::vector<std::size_t> distinct_poses(const std::vector<double>& rms, const std::vector<Eigen::Matrix3d>& turns,
+                                        std::vector<std::size_t> kept, double within, double degrees) {
+  std::vector<std::size_t> order(rms.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return trials[a].rms < trials[b].rms; });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rms[a] < rms[b]; });
   for (const std::size_t k : order) {
-    if (trials[k].rms > within * trials[best].rms) break;
-    const bool another = std::all_of(poses.begin(), poses.end(), [&](std::size_t p) {
-      return turn_angle(trials[p].turn, trials[k].turn) >= kOtherPoseDegrees;
+    if (rms[k] > within * rms[order.front()]) break;
+    const bool another = std::all_of(kept.begin(), kept.end(), [&](std::size_t p) {
+      return turn_angle(turns[p], turns[k]) >= degrees;
     });
-    if (another) poses.push_back(k);
+    if (another) kept.push_back(k);
   }
-  return poses;
+  return kept;
+}
+
+std::vector<std::size_t> PoseTrials::distinct_poses(const PoseChoiceOptions& options) const {
+  std::vector<double> rms;
+  std::vector<Eigen::Matrix3d> turns;
+  for (const PoseTrial& trial : trials) {
+    rms.push_back(trial.rms);
+    turns.push_back(trial.turn);
+  }
+  return meshparticles::distinct_poses(rms, turns, {chosen}, options.open_pose_ratio, options.same_pose_degrees);
 }
 
 MeshAlignment fit_pose(const PoseTrials& found, std::size_t chosen, const PointSet& template_points,
-                       const PointsTree& template_tree) {
+                       const PointsTree& template_tree, const PoseChoiceOptions& options) {
   const PoseTrial& start = found.trials[chosen];
   // The pose itself: rigid, from the chosen start (a short fit, then to the end).
   const PointSet started = start.start.apply(found.points);
-  const ClosestPointFit first = closest_point_fit(started, template_points, template_tree, kTrialIterations);
+  const ClosestPointFit first = closest_point_fit(started, template_points, template_tree, options.trial_iterations);
   const PointSet placed = (started * first.linear.transpose()).rowwise() + first.translation.transpose();
   const ClosestPointFit finish = closest_point_fit(placed, template_points, template_tree, kMaxIterations);
 
@@ -288,17 +291,17 @@ MeshAlignment fit_pose(const PoseTrials& found, std::size_t chosen, const PointS
   // The runner-up: the best trial that ended in another pose.
   for (const PoseTrial& trial : found.trials) {
     const double angle = turn_angle(start.turn, trial.turn);
-    if (angle < kOtherPoseDegrees || trial.rms >= alignment.runner_up.rms) continue;
+    if (angle < options.same_pose_degrees || trial.rms >= alignment.runner_up.rms) continue;
     alignment.runner_up = {trial.rms / start.rms, angle, trial.rms};
   }
   return alignment;
 }
 
 MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& template_points,
-                                const Similarity& template_frame) {
+                                const Similarity& template_frame, const PoseChoiceOptions& options) {
   const PointsTree tree(template_points);
-  const PoseTrials found = pose_trials(mesh, template_points, template_frame, tree);
-  return fit_pose(found, found.chosen, template_points, tree);
+  const PoseTrials found = pose_trials(mesh, template_points, template_frame, tree, options);
+  return fit_pose(found, found.chosen, template_points, tree, options);
 }
 
 }  // namespace meshparticles

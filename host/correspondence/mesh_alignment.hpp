@@ -18,6 +18,7 @@
 #include <memory>
 #include <vector>
 
+#include "correspondence/pose_choice_options.hpp"
 #include "mesh/point_cloud_tree.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "shape_model/procrustes.hpp"
@@ -51,7 +52,8 @@ struct MeshAlignment {
   double rms = 0;
   std::size_t iterations = 0;
   bool from_principal_axes = false;  // else from the pose as given
-  // The best start that ended at least 30 degrees from the chosen pose,
+  // The best start that ended in another pose than the chosen one
+  // (PoseChoiceOptions::same_pose_degrees or more from it),
   // after the same short affine fit: its rms over the chosen's (infinite:
   // none), and the angle between the two poses.
   struct RunnerUp {
@@ -74,14 +76,6 @@ struct MeshAlignment {
     bool canonical = false;
   } relief;
 };
-
-// The poses a shape's fit onto the template leaves open: those whose short
-// affine fit is within this ratio of the best's (the template's relief then
-// chooses among them, relief_pose). The bent family's wrong poses fit
-// within 1.03 to 1.09 of its right ones; FAUST's right poses up to 1.15 of
-// a turned one's. A shape turned by its body whose runner-up lies within it
-// is warned of (population_doubts).
-inline constexpr double kOpenPoseRatio = 1.15;
 
 // The vertices an alignment fits: all, or every k-th of a large mesh.
 PointSet alignment_points(const SurfaceMesh& mesh);
@@ -144,24 +138,55 @@ struct PoseTrials {
   std::size_t best = 0;    // the least rms
   std::size_t chosen = 0;  // the best, or the pose as given where it ends there or fits almost as well
   // The chosen trial, then the best trial of every other pose (ending at
-  // least 30 degrees from those before it) whose rms is within `within`
-  // times the best's, least rms first: the poses the shape's own fit onto
-  // the template cannot rule out.
-  std::vector<std::size_t> distinct_poses(double within) const;
+  // least same_pose_degrees from those before it) whose rms is within
+  // open_pose_ratio times the best's, least rms first: the poses the
+  // shape's own fit onto the template cannot rule out.
+  std::vector<std::size_t> distinct_poses(const PoseChoiceOptions& options) const;
 };
+
+// Of candidate fits (their rms and the turns they end in), `kept` and then,
+// least rms first (ties: the earlier), each whose rms is within `within`
+// times the least and whose turn lies at least `degrees` from every one
+// taken before it: the distinct poses that fit about as well as the best.
+// The trials' open poses (PoseTrials::distinct_poses) and the canonical
+// fits' (canonical_pose).
+std::vector<std::size_t> distinct_poses(const std::vector<double>& rms, const std::vector<Eigen::Matrix3d>& turns,
+                                        std::vector<std::size_t> kept, double within, double degrees);
+
+// The candidate whose agreement is highest (ties: the earlier), and as a
+// Relief (measured) its agreement and the best other's whose end is not
+// `same_end(c, chosen)`'s (ties: the earlier; -infinity: none), with the
+// angle from `turns[chosen]` to its turn. The relief's choice among the
+// open poses (relief_pose) and among the canonical fits (canonical_pose).
+template <typename SameEnd>
+std::size_t choose_by_agreement(const std::vector<double>& agreements, const std::vector<Eigen::Matrix3d>& turns,
+                                SameEnd&& same_end, MeshAlignment::Relief& relief) {
+  std::size_t chosen = 0;
+  for (std::size_t c = 1; c < agreements.size(); ++c) {
+    if (agreements[c] > agreements[chosen]) chosen = c;
+  }
+  relief.measured = true;
+  relief.agreement = agreements[chosen];
+  for (std::size_t c = 0; c < agreements.size(); ++c) {
+    if (same_end(c, chosen) || !(agreements[c] > relief.runner_up)) continue;
+    relief.runner_up = agreements[c];
+    relief.runner_up_degrees = turn_angle(turns[c], turns[chosen]);
+  }
+  return chosen;
+}
 
 // `template_points`: the template's vertices in the common frame, which
 // `template_frame` (its canonical_frame) defines; `template_tree` over them.
 PoseTrials pose_trials(const SurfaceMesh& mesh, const PointSet& template_points, const Similarity& template_frame,
-                       const PointsTree& template_tree);
+                       const PointsTree& template_tree, const PoseChoiceOptions& options);
 
 // The pose of trial `chosen`, fitted rigidly onto the template from its
 // start, and its runner-up among the other trials.
 MeshAlignment fit_pose(const PoseTrials& trials, std::size_t chosen, const PointSet& template_points,
-                       const PointsTree& template_tree);
+                       const PointsTree& template_tree, const PoseChoiceOptions& options);
 
 // pose_trials, then fit_pose of the chosen trial.
 MeshAlignment align_to_template(const SurfaceMesh& mesh, const PointSet& template_points,
-                                const Similarity& template_frame);
+                                const Similarity& template_frame, const PoseChoiceOptions& options);
 
 }  // namespace meshparticles

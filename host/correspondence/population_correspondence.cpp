@@ -11,17 +11,15 @@
 
 #include "common/json_text.hpp"
 #include "common/parallel_for.hpp"
-#include "common/progress.hpp"
+#include "common/shared_progress.hpp"
 #include "common/text_format.hpp"
 #include "common/user_error.hpp"
-#include "correspondence/body_turn.hpp"
-#include "correspondence/canonical_pose.hpp"
 #include "correspondence/deformation_graph.hpp"
-#include "correspondence/ellipsoid_body.hpp"
 #include "correspondence/geodesic_repair.hpp"
 #include "correspondence/joint_refinement.hpp"
+#include "correspondence/mesh_alignment.hpp"
 #include "correspondence/population_doubts.hpp"
-#include "correspondence/relief_pose.hpp"
+#include "correspondence/pose_choice.hpp"
 #include "correspondence/shape_records.hpp"
 #include "correspondence/template_deformation.hpp"
 #include "geodesics/solver_factory.hpp"
@@ -40,11 +38,6 @@
 namespace meshparticles {
 
 namespace {
-
-// A shape takes its pose onto the medoid only where that lies this much
-// nearer the population than its pose onto the template: where the two are
-// about as near, the template's is kept (and the output as it was).
-constexpr double kNearerPopulation = 1.02;
 
 // The particles measured as `run` measures its own (through the balls of
 // kSpreadQualityCutoff around them, wider where a particle is alone there),
@@ -223,22 +216,6 @@ std::vector<SurfaceLocation> sample_template(const SurfaceMesh& template_mesh, c
   return particles;
 }
 
-// A progress line that the threads of a stage advance together.
-class SharedProgress {
- public:
-  SharedProgress(const char* label, std::size_t total, bool quiet) : line_(label, total, quiet) {}
-  void advance() {
-    const std::lock_guard lock(mutex_);
-    line_.update(++done_);
-  }
-  void finish() { line_.finish(); }
-
- private:
-  std::mutex mutex_;
-  ProgressLine line_;
-  std::size_t done_ = 0;
-};
-
 // A refinement stage ("iterated", "packed"): taken from the checkpoint where
 // an earlier run finished it, else run and kept. Every process takes the same
 // branch. Each shape's entry names its mesh (`meshes`, the request's).
@@ -279,166 +256,11 @@ void refinement_stage(const std::string& stage, std::vector<ShapeParticles>& par
 // gets particles, but particle i cannot mean the same place on both (a
 // torus's hole has no match on a sphere), and the model's modes describe
 // the mismatch; a shape whose pose another fits almost as well may lie turned.
-void warn_of_doubts(PopulationCorrespondence& population, bool quiet) {
-  for (std::string& line : population_doubts(population.shapes)) {
+void warn_of_doubts(PopulationCorrespondence& population, const PoseChoiceOptions& poses, bool quiet) {
+  for (std::string& line : population_doubts(population.shapes, poses)) {
     if (!quiet) std::cerr << "meshparticles: warning: " << line << "\n";
     population.warnings.push_back(std::move(line));
   }
-}
-
-// Every owned shape's first pose: its fit onto the template where that
-// leaves one pose open, else the one of those in which the template's
-// relief lands on the shape's (relief_pose); where none lays it surely
-// (kSureRelief), the pose its canonical form chooses (canonical_pose) if
-// none lays it (kWeakRelief) or the canonical form lays it better, whose
-// pairs then guide the shape's deformation (`guides`). A shape
-// `turned_by_body` keeps its fit's pose (choose_body_turns turns it later).
-// Each owner decides its own shapes: the same choice on any number of
-// threads or processes.
-std::vector<MeshAlignment> first_poses(const PopulationRequest& request, const std::vector<std::optional<SurfaceMesh>>& meshes,
-                                       ShapeShare& share, const Similarity& template_frame,
-                                       const PointSet& template_points, const std::vector<char>& turned_by_body,
-                                       std::vector<std::vector<Eigen::Index>>& guides) {
-  const std::vector<std::size_t> owned = share.owned();
-  const PointsTree template_tree(template_points);
-  const ReliefTemplate relief_template(*meshes.front(), template_points);
-  // The template's canonical form, made for the first shape that needs it.
-  std::once_flag canonical_side;
-  std::optional<CanonicalTemplate> canonical_template;
-  std::vector<MeshAlignment> alignments(meshes.size());
-  SharedProgress fitting("align", owned.size(), request.quiet);
-  for_each_index(owned, share.threads(), [&](std::size_t k) {
-    const PoseTrials trials = pose_trials(*meshes[k], template_points, template_frame, template_tree);
-    const std::vector<std::size_t> open =
-        k == 0 || turned_by_body[k] ? std::vector{trials.chosen} : trials.distinct_poses(kOpenPoseRatio);
-    std::vector<MeshAlignment> poses;
-    for (const std::size_t trial : open) poses.push_back(fit_pose(trials, trial, template_points, template_tree));
-    if (poses.size() == 1) {
-      alignments[k] = poses.front();
-    } else {
-      const ReliefChoice choice =
-          choose_pose_by_relief(relief_template, *meshes[k], poses);
-      alignments[k] = poses[choice.chosen];
-      alignments[k].relief = choice.relief;
-      if (choice.relief.agreement < kSureRelief) {
-        // No open pose lays the relief surely after the coarse fit: the
-        // canonical form is asked too. Under kWeakRelief it chooses (FAUST's
-        // arms overhead); else where it lays the relief better (a body bent
-        // the other way, which the coarse fit cannot unbend). Its pairs then
-        // carry the template.
-        std::call_once(canonical_side, [&] { canonical_template.emplace(*meshes.front(), template_points); });
-        std::optional<CanonicalPose> pose = choose_pose_canonically(*canonical_template, *meshes[k]);
-        if (pose && (choice.relief.agreement < kWeakRelief || pose->alignment.relief.agreement > choice.relief.agreement)) {
-          alignments[k] = pose->alignment;
-          guides[k] = std::move(pose->pairs);
-        }
-      }
-    }
-    fitting.advance();
-  });
-  fitting.finish();
-  return alignments;
-}
-
-// `pose` (into the frame where the template lies at `from`) into the frame
-// where it lies at `to`.
-Similarity follow(const Similarity& from, const Similarity& to, const Similarity& pose) {
-  const Eigen::Matrix3d turn = to.rotation * from.rotation.transpose();
-  const double grow = to.scale / from.scale;
-  Similarity moved;
-  moved.scale = grow * pose.scale;
-  moved.rotation = turn * pose.rotation;
-  moved.translation = grow * (turn * (pose.translation - from.translation)) + to.translation;
-  return moved;
-}
-
-// Every owned shape's pose in the common frame (loading its mesh). A first
-// pose (first_poses); then the shape nearest the others (the medoid) is a
-// second reference, and each shape whose fit left one pose open, the
-// template too, takes its pose onto the medoid where that lies clearly
-// nearer the whole population (one the relief or the canonical form chose
-// keeps it and follows the template): a
-// template whose radii or pose differ from most shapes' then pulls them
-// less. Every process gathers every shape's aligned points (its rotation
-// first) and chooses the same medoid. Shapes with an ellipsoid body, where
-// the template has one, take their turn from the population's features
-// (choose_body_turns). `template_points` follow the template where it moves.
-std::vector<MeshAlignment> align_population(const PopulationRequest& request,
-                                            std::vector<std::optional<SurfaceMesh>>& meshes, ShapeShare& share,
-                                            const Similarity& template_frame, PointSet& template_points,
-                                            std::vector<std::vector<Eigen::Index>>& guides) {
-  const std::size_t count = meshes.size();
-  const std::vector<std::size_t> owned = share.owned();
-  const SurfaceMesh& template_mesh = *meshes.front();
-  const bool body_template = ellipsoid_body(template_points).has_value();
-  std::vector<char> turned_by_body(count, 0);
-  for_each_index(owned, share.threads(), [&](std::size_t k) {
-    if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], request.quiet, {}));
-    turned_by_body[k] = k != 0 && body_template && ellipsoid_body(vertex_points(*meshes[k])).has_value();
-  });
-  std::vector<MeshAlignment> alignments =
-      first_poses(request, meshes, share, template_frame, template_points, turned_by_body, guides);
-  std::vector<std::vector<double>> aligned_message(count);
-  for_each_index(owned, share.threads(), [&](std::size_t k) {
-    const PointSet placed = alignments[k].to_common.apply(alignment_points(*meshes[k]));
-    std::vector<double>& shape_message = aligned_message[k];
-    const Eigen::Matrix3d& rotation = alignments[k].to_common.rotation;
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) shape_message.push_back(rotation(r, c));
-    }
-    for (Eigen::Index i = 0; i < placed.rows(); ++i) {
-      for (int c = 0; c < 3; ++c) shape_message.push_back(placed(i, c));
-    }
-  });
-  share.gather(aligned_message);
-  std::vector<PointSet> aligned_points(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    const std::vector<double>& shape_message = aligned_message[k];
-    PointSet& points = aligned_points[k];
-    points.resize(Eigen::Index((shape_message.size() - 9) / 3), 3);
-    for (Eigen::Index i = 0; i < points.rows(); ++i) {
-      for (int c = 0; c < 3; ++c) points(i, c) = shape_message[9 + std::size_t(3 * i + c)];
-    }
-  }
-  const AlignedShapes aligned(std::move(aligned_points));
-  const std::size_t medoid = aligned.medoid();
-  if (medoid != 0) {
-    // The medoid's pose as given stands for the template's in the first start.
-    Similarity medoid_frame;
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) medoid_frame.rotation(r, c) = aligned_message[medoid][std::size_t(3 * r + c)];
-    }
-    const PointSet& reference = aligned.shape(medoid);
-    // Each shape keeps the pose, onto the template or onto the medoid,
-    // that lies nearer the whole population (as first aligned).
-    const auto realign = [&](std::size_t k, const SurfaceMesh& mesh, const MeshAlignment& first) {
-      MeshAlignment again = align_to_template(mesh, reference, medoid_frame);
-      const PointSet points = alignment_points(mesh);
-      const double before = aligned.distance_to_population(first.to_common.apply(points), k);
-      const double after = aligned.distance_to_population(again.to_common.apply(points), k);
-      return after * kNearerPopulation < before ? std::optional(again) : std::nullopt;
-    };
-    const std::optional<MeshAlignment> template_again =
-        body_template ? std::nullopt
-                      : realign(0, template_mesh, align_to_template(template_mesh, template_points, template_frame));
-    if (template_again) template_points = template_again->to_common.apply(vertex_points(template_mesh));
-    for_each_index(owned, share.threads(), [&](std::size_t k) {
-      if (turned_by_body[k]) return;
-      if (alignments[k].relief.measured) {
-        // Its pose is the template's, chosen by the relief or carried by the
-        // canonical pairs: it moves where the template moves. A rigid fit
-        // onto the medoid, judged by the silhouette, would overrule what
-        // the relief chose (bent-either: a shape bent the template's way
-        // turned half round onto a medoid bent the other).
-        if (template_again) alignments[k].to_common = follow(template_frame, template_again->to_common, alignments[k].to_common);
-        return;
-      }
-      const std::optional<MeshAlignment> again = k == 0 ? template_again : realign(k, *meshes[k], alignments[k]);
-      if (again) alignments[k] = *again;
-    });
-  }
-  choose_body_turns(meshes, share, template_points, alignments);
-  return alignments;
 }
 
 }  // namespace
@@ -473,9 +295,15 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   PointSet template_points = template_frame.apply(vertex_points(template_mesh));
 
   const std::vector<std::size_t> owned = share.owned();
-  std::vector<std::vector<Eigen::Index>> guides(count);  // a shape's canonical pairs, where they chose its pose
-  const std::vector<MeshAlignment> alignments =
-      align_population(request, meshes, share, template_frame, template_points, guides);
+  // Each process loads its own shapes (the template it holds already).
+  for_each_index(owned, share.threads(), [&](std::size_t k) {
+    if (!meshes[k]) meshes[k].emplace(load_mesh(request.meshes[k], request.quiet, {}));
+  });
+  // Every owned shape's pose, and its canonical pairs where they chose it.
+  const PopulationPoses poses =
+      choose_population_poses(meshes, share, template_frame, template_points, request.poses, request.quiet);
+  const std::vector<MeshAlignment>& alignments = poses.alignments;
+  const std::vector<std::vector<Eigen::Index>>& guides = poses.guides;
   // The template's side of the transfer, made for the first shape not
   // resumed from the checkpoint (none, where every shape is).
   std::once_flag template_side;
@@ -559,7 +387,7 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   measuring.finish();
   share.gather(results);
   for (std::size_t k = 0; k < count; ++k) population.shapes[k] = shape_from_json(nlohmann::json::parse(results[k]));
-  warn_of_doubts(population, request.quiet);
+  warn_of_doubts(population, request.poses, request.quiet);
   return population;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Particles that correspond across a population (issue 31): the template
 // (the first shape) is sampled by the default run (spread); every shape is
-// brought into the template's frame (mesh_alignment; among the poses its fit
-// leaves open, the one relief_pose chooses) and the template is deformed
+// brought into the template's frame (pose_choice: its fit onto the template,
+// the relief's or canonical form's choice among the poses the fit leaves
+// open, the medoid, the body's turn) and the template is deformed
 // onto it (deformation_graph, or template_deformation); each template
 // particle goes to the nearest point of each shape's surface, so particle i
 // sits at the same place, up to how well the shapes fit, on every shape;
@@ -17,6 +18,7 @@
 
 #include "correspondence/correspondence_checkpoint.hpp"
 #include "correspondence/joint_refinement.hpp"
+#include "correspondence/pose_choice_options.hpp"
 #include "correspondence/shape_correspondence.hpp"
 #include "correspondence/shape_share.hpp"
 #include "correspondence/template_deformation.hpp"
@@ -44,6 +46,9 @@ struct PopulationRequest {
   RunRequest run;                             // the template's run (-n, seed, method, ...)
   JointRefinementOptions refinement;
   TemplateDeformation deformation = TemplateDeformation::graph;
+  // How each shape's pose is chosen and its doubts judged: the measured
+  // numbers, no option of correspond's (so not in correspond_params).
+  PoseChoiceOptions poses;
   bool quiet = false;
 };
 

@@ -15,11 +15,13 @@ PointSet in_shape_frame(const MeshAlignment& pose, const PointSet& common) {
 
 }  // namespace
 
-ReliefTemplate::ReliefTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points)
+ReliefTemplate::ReliefTemplate(const SurfaceMesh& template_mesh, const PointSet& template_points,
+                               const PoseChoiceOptions& choice_options)
     : mesh(template_mesh),
       points(template_points),
       relief(detrended_relief(template_mesh, template_points)),
-      graph(template_graph(template_mesh, template_points, coarse_deformation_graph_options())) {}
+      graph(template_graph(template_mesh, template_points, coarse_deformation_graph_options())),
+      options(choice_options) {}
 
 ReliefChoice choose_pose_by_relief(const ReliefTemplate& reference, const SurfaceMesh& mesh,
                                    const std::vector<MeshAlignment>& poses) {
@@ -38,18 +40,15 @@ ReliefChoice choose_pose_by_relief(const ReliefTemplate& reference, const Surfac
     agreements.push_back(relief_agreement(reference.relief, relief, pairs));
     ends.push_back(in_shape_frame(pose, moved));
   }
+  std::vector<Eigen::Matrix3d> turns;
+  for (const MeshAlignment& pose : poses) turns.push_back(pose.to_common.rotation);
   ReliefChoice choice;
-  for (std::size_t c = 1; c < poses.size(); ++c) {
-    if (agreements[c] > agreements[choice.chosen]) choice.chosen = c;
-  }
-  choice.relief.agreement = agreements[choice.chosen];
-  for (std::size_t c = 0; c < poses.size(); ++c) {
-    // At unit area, as the common frame is.
-    const double apart = (ends[c] - ends[choice.chosen]).rowwise().norm().mean() * poses[choice.chosen].to_common.scale;
-    if (apart < kSameEndState || !(agreements[c] > choice.relief.runner_up)) continue;
-    choice.relief.runner_up = agreements[c];
-    choice.relief.runner_up_degrees = turn_angle(poses[c].to_common.rotation, poses[choice.chosen].to_common.rotation);
-  }
+  // At unit area, as the common frame is; the chosen's own end is its own.
+  const auto same_end = [&](std::size_t c, std::size_t chosen) {
+    const double apart = (ends[c] - ends[chosen]).rowwise().norm().mean() * poses[chosen].to_common.scale;
+    return apart < reference.options.same_end_state;
+  };
+  choice.chosen = choose_by_agreement(agreements, turns, same_end, choice.relief);
   return choice;
 }
 

@@ -90,7 +90,7 @@ TEST(BodyTurn, EachShapeTakesTheTurnThatLaysItsBumpOnTheTemplates) {
   std::vector<MeshAlignment> alignments(shapes.size());
   alignments[0].to_common = template_frame;
   for (std::size_t k = 1; k < shapes.size(); ++k) {
-    alignments[k] = align_to_template(*meshes[k], template_points, template_frame);
+    alignments[k] = align_to_template(*meshes[k], template_points, template_frame, PoseChoiceOptions{});
   }
   // Shape 2 starts turned half round about the template's longest axis from
   // its fit: a pose its body alone cannot tell from the right one.
@@ -98,7 +98,7 @@ TEST(BodyTurn, EachShapeTakesTheTurnThatLaysItsBumpOnTheTemplates) {
   alignments[2].to_common.rotation = half_turn * alignments[2].to_common.rotation;
   alignments[2].to_common.translation = half_turn * alignments[2].to_common.translation;
   ShapeShare share(shapes.size(), 2);
-  choose_body_turns(meshes, share, template_points, alignments);
+  choose_body_turns(meshes, share, template_points, alignments, PoseChoiceOptions{});
   const auto in_common = [&](std::size_t k, const Eigen::Vector3d& world) -> Eigen::Vector3d {
     const PointSet point = alignments[k].to_common.apply(PointSet(world.transpose()));
     return alignments[k].stretch * point.row(0).transpose() + alignments[k].shift;

@@ -89,7 +89,7 @@ TEST(CanonicalPose, LaysABodyBentTheOtherWayOverTheTemplateByItsBumps) {
   }
   const SurfaceMesh shape(posed, other_way.triangles());
   const PointSet template_points = canonical_frame(template_mesh).apply(vertex_points(template_mesh));
-  const CanonicalTemplate reference(template_mesh, template_points);
+  const CanonicalTemplate reference(template_mesh, template_points, PoseChoiceOptions{});
   const std::optional<CanonicalPose> pose = choose_pose_canonically(reference, shape);
   ASSERT_TRUE(pose);
   // Vertex v is the same point on both: each template vertex's partner lies near it, along the surface.
@@ -103,7 +103,7 @@ TEST(CanonicalPose, LaysABodyBentTheOtherWayOverTheTemplateByItsBumps) {
     return (alignment.to_common.apply(vertex_points(shape)) - template_points).rowwise().norm().mean();
   };
   const double canonical = mean_apart(pose->alignment);
-  const double rigid = mean_apart(align_to_template(shape, template_points, canonical_frame(template_mesh)));
+  const double rigid = mean_apart(align_to_template(shape, template_points, canonical_frame(template_mesh), PoseChoiceOptions{}));
   EXPECT_LT(canonical, 0.15);
   EXPECT_GT(rigid, 2 * canonical);
   EXPECT_TRUE(pose->alignment.relief.measured);

@@ -74,11 +74,11 @@ TEST(MeshAlignment, ACopyOfTheTemplateFitsItExactly) {
   const Similarity template_frame = canonical_frame(template_mesh);
   const PointSet template_points = template_frame.apply(vertex_points(template_mesh));
   const SurfaceMesh copy = moved(template_mesh, 0.4, Eigen::Vector3d(-2, 5, 1));
-  const MeshAlignment alignment = align_to_template(copy, template_points, template_frame);
+  const MeshAlignment alignment = align_to_template(copy, template_points, template_frame, PoseChoiceOptions{});
   EXPECT_LT(alignment.rms, 1e-6);
   EXPECT_LT((alignment.to_common.apply(vertex_points(copy)) - template_points).cwiseAbs().maxCoeff(), 1e-6);
   EXPECT_NEAR(alignment.to_common.scale * 0.4, template_frame.scale, 1e-9);
-  EXPECT_GT(alignment.runner_up.rms_ratio, kOpenPoseRatio);  // no other pose left open
+  EXPECT_GT(alignment.runner_up.rms_ratio, PoseChoiceOptions{}.open_pose_ratio);  // no other pose left open
   EXPECT_FALSE(alignment.relief.measured);
 }
 

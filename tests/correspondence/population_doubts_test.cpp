@@ -18,14 +18,14 @@ ShapeCorrespondence sphere_shape(const std::string& name, std::size_t particles)
 }
 
 TEST(PopulationDoubts, NoneForAPopulationWithoutDoubts) {
-  EXPECT_TRUE(population_doubts({sphere_shape("a.off", 8), sphere_shape("b.off", 8)}).empty());
-  EXPECT_TRUE(population_doubts({}).empty());
+  EXPECT_TRUE(population_doubts({sphere_shape("a.off", 8), sphere_shape("b.off", 8)}, PoseChoiceOptions{}).empty());
+  EXPECT_TRUE(population_doubts({}, PoseChoiceOptions{}).empty());
 }
 
 TEST(PopulationDoubts, StackedParticlesNameTheirShape) {
   std::vector<ShapeCorrespondence> shapes = {sphere_shape("a.off", 8), sphere_shape("b.off", 8)};
   shapes[1].quality.stacked = 2;
-  const std::vector<std::string> doubts = population_doubts(shapes);
+  const std::vector<std::string> doubts = population_doubts(shapes, PoseChoiceOptions{});
   ASSERT_EQ(doubts.size(), 1u);
   EXPECT_EQ(doubts[0].rfind("b.off: 2 of its 8 particles lie at another's place", 0), 0u) << doubts[0];
 }
@@ -37,7 +37,7 @@ TEST(PopulationDoubts, AnotherTopologyAndAnOpenPoseNameTheirShapes) {
   shapes[1].topology.genus = 1;
   shapes[2].alignment.relief = {true, 0.62, 0.58, 180};  // the relief barely chose
   shapes[3].alignment.relief = {true, 0.85, 0.60, 180};  // a clear choice
-  const std::vector<std::string> doubts = population_doubts(shapes);
+  const std::vector<std::string> doubts = population_doubts(shapes, PoseChoiceOptions{});
   ASSERT_EQ(doubts.size(), 2u);
   EXPECT_NE(doubts[0].find("torus.off (1 component, genus 1"), std::string::npos) << doubts[0];
   EXPECT_EQ(doubts[1],
@@ -55,7 +55,7 @@ TEST(PopulationDoubts, TheReliefsMarginDecidesWhereItChose) {
   shapes[1].alignment.relief = {true, 0.80, 0.61, 180};  // clear
   shapes[2].alignment.relief = {true, 0.20, 0.05, 175};  // clear, but nothing laid well
   shapes[3].alignment.relief = {true, 0.80};             // one end state: nothing else to fear
-  std::vector<std::string> doubts = population_doubts(shapes);
+  std::vector<std::string> doubts = population_doubts(shapes, PoseChoiceOptions{});
   ASSERT_EQ(doubts.size(), 2u);
   // The template (no relief: one pose open) keeps the fit's rule.
   EXPECT_EQ(doubts[0].rfind("a.off: a pose 180 degrees from the one chosen fits the template within 3.0% (fit_runner_up)", 0), 0u)
@@ -65,7 +65,7 @@ TEST(PopulationDoubts, TheReliefsMarginDecidesWhereItChose) {
   // Told in canonical form (where no pose laid the relief after the coarse fit): said so.
   shapes[2].alignment.relief.canonical = true;
   shapes[1].alignment.relief = {true, 0.40, 0.35, 180, true};
-  doubts = population_doubts(shapes);
+  doubts = population_doubts(shapes, PoseChoiceOptions{});
   ASSERT_EQ(doubts.size(), 3u);
   EXPECT_EQ(doubts[1].rfind("b.off: a pose 180 degrees from the one chosen lays the template's features over its own in "
                             "canonical form almost as well (fit_relief: 0.35 against 0.40)", 0), 0u)
@@ -75,7 +75,7 @@ TEST(PopulationDoubts, TheReliefsMarginDecidesWhereItChose) {
       << doubts[2];
 }
 
-// Under kSureRelief a choice is a guess more often than kCloseRelief's
+// Under sure_relief a choice is a guess more often than close_relief's
 // margin says: bent-either's shapes bent the other way (6 shapes of 2,500
 // vertices, seeds 1 to 8) ended turned at margins of 0.12 and 0.14 (0.41
 // against 0.27) unwarned. Every such choice is named, by either method.
@@ -85,7 +85,7 @@ TEST(PopulationDoubts, EveryChoiceUnderTheSureAgreementIsNamed) {
   shapes[1].alignment.relief = {true, 0.41, 0.27, 180, true};
   shapes[2].alignment.relief = {true, 0.44, 0.32, 179};
   shapes[3].alignment.relief = {true, 0.45};  // one end state
-  const std::vector<std::string> doubts = population_doubts(shapes);
+  const std::vector<std::string> doubts = population_doubts(shapes, PoseChoiceOptions{});
   ASSERT_EQ(doubts.size(), 3u);
   EXPECT_EQ(doubts[0],
             "b.off: no pose lays the template's features over its own surely in canonical form (fit_relief: 0.41 at "

@@ -36,6 +36,7 @@ MeshAlignment posed(const Eigen::Matrix3d& rotation) {
 }
 
 const Eigen::Matrix3d kHalfTurn = Eigen::Vector3d(-1, 1, -1).asDiagonal();  // about y
+const PoseChoiceOptions kReliefOptions;  // correspond's
 
 TEST(SurfaceRelief, ABumpStandsOffTheSurfaceAndTheRestIsFlat) {
   const SurfaceMesh mesh = bumped_sphere_mesh(2000, 0.2);
@@ -65,7 +66,7 @@ TEST(SurfaceRelief, AgreementIsTheCorrelationOverPairs) {
 TEST(ReliefPose, TheRightPoseLaysTheTemplatesFeaturesOverTheShapes) {
   const SurfaceMesh template_mesh = bumped_sphere_mesh(1500, 0.2);
   const PointSet template_points = vertex_points(template_mesh);
-  const ReliefTemplate reference(template_mesh, template_points);
+  const ReliefTemplate reference(template_mesh, template_points, kReliefOptions);
   const SurfaceMesh shape = bumped_sphere_mesh(2200, 0.15);  // lower bumps, meshed apart
   // Either order: the choice does not lean on the fit's.
   for (const bool right_first : {true, false}) {
@@ -75,7 +76,7 @@ TEST(ReliefPose, TheRightPoseLaysTheTemplatesFeaturesOverTheShapes) {
     EXPECT_EQ(choice.chosen, right_first ? 0u : 1u);
     EXPECT_TRUE(choice.relief.measured);
     EXPECT_GT(choice.relief.agreement, 0.8);
-    EXPECT_LT(choice.relief.runner_up, choice.relief.agreement - kCloseRelief);
+    EXPECT_LT(choice.relief.runner_up, choice.relief.agreement - kReliefOptions.close_relief);
     EXPECT_NEAR(choice.relief.runner_up_degrees, 180, 1e-6);
   }
 }
@@ -105,22 +106,22 @@ TEST(ReliefPose, TheBumpsDecideOnABodyBentTheTemplatesWay) {
   const SurfaceMesh shape = bent_body_as_made(4, -1);
   const Eigen::Matrix3d about_x = Eigen::Vector3d(1, -1, -1).asDiagonal();  // the unbumped body's own symmetry
   const ReliefChoice choice = choose_pose_by_relief(
-      ReliefTemplate(template_mesh, template_points), shape,
+      ReliefTemplate(template_mesh, template_points, kReliefOptions), shape,
       {posed_onto(about_x, shape, template_points), posed_onto(Eigen::Matrix3d::Identity(), shape, template_points)});
   EXPECT_EQ(choice.chosen, 1u);
   EXPECT_GT(choice.relief.agreement, 0.5);
-  EXPECT_LT(choice.relief.runner_up, choice.relief.agreement - kCloseRelief);
+  EXPECT_LT(choice.relief.runner_up, choice.relief.agreement - kReliefOptions.close_relief);
 }
 
 TEST(ReliefPose, ABendReversedIsNeverTakenForTheHalfTurnThatMatchesItWithConfidence) {
   const SurfaceMesh template_mesh = bent_body_as_made(10, 1);
   const PointSet template_points = vertex_points(template_mesh);
-  const ReliefTemplate reference(template_mesh, template_points);
+  const ReliefTemplate reference(template_mesh, template_points, kReliefOptions);
   // The half turn about the long axis bends a body bent the other way as
   // the template bends: it matches the silhouette, not the bumps. The raw
   // relief, which the bend itself shapes, took it on each of these 6
   // bodies, agreeing 0.45 to 0.63; less its bend's trend, the true pose is
-  // taken, or the agreement stays under kWeakRelief (canonical_pose then
+  // taken, or the agreement stays under weak_relief (canonical_pose then
   // decides).
   const Eigen::Matrix3d about_long_axis = Eigen::Vector3d(-1, -1, 1).asDiagonal();
   std::size_t true_poses = 0;
@@ -130,7 +131,7 @@ TEST(ReliefPose, ABendReversedIsNeverTakenForTheHalfTurnThatMatchesItWithConfide
         reference, shape,
         {posed_onto(about_long_axis, shape, template_points), posed_onto(Eigen::Matrix3d::Identity(), shape, template_points)});
     true_poses += choice.chosen == 1;
-    EXPECT_TRUE(choice.chosen == 1 || choice.relief.agreement < kWeakRelief)
+    EXPECT_TRUE(choice.chosen == 1 || choice.relief.agreement < kReliefOptions.weak_relief)
         << "seed " << seed << ": the half turn, agreeing " << choice.relief.agreement;
   }
   EXPECT_GE(true_poses, 5u);
@@ -141,10 +142,11 @@ TEST(ReliefPose, AShapeWithoutFeaturesLeavesThePosesClose) {
   const PointSet template_points = vertex_points(template_mesh);
   const SurfaceMesh shape = generate_mesh_at("sphere", 2200);
   const ReliefChoice choice =
-      choose_pose_by_relief(ReliefTemplate(template_mesh, template_points), shape,
+      choose_pose_by_relief(ReliefTemplate(template_mesh, template_points, kReliefOptions), shape,
                             {posed(Eigen::Matrix3d::Identity()), posed(kHalfTurn)});
   // Nothing to lay over anything: warned of either way (population_doubts).
-  EXPECT_TRUE(choice.relief.agreement < kWeakRelief || choice.relief.runner_up > choice.relief.agreement - kCloseRelief)
+  EXPECT_TRUE(choice.relief.agreement < kReliefOptions.weak_relief ||
+              choice.relief.runner_up > choice.relief.agreement - kReliefOptions.close_relief)
       << choice.relief.agreement << " " << choice.relief.runner_up;
 }
 
