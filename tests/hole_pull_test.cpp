@@ -64,11 +64,12 @@ TEST(HolePull, FindsAHoleBetweenTheVertices) {
 TEST(HolePull, DrawsTheNeighboursOfAHoleIntoIt) {
   const SurfaceMesh square = unit_square();
   const auto solver = solver_for(square);
+  SolverScratch scratch;
   HolePull holes(square, *solver, 0.02);
-  for (const Vec3& pull : holes.pull(on(square, grid()), 0.15, 0.04)) EXPECT_EQ(norm(pull), 0.0);
+  for (const Vec3& pull : holes.pull(on(square, grid()), 0.15, 0.04, scratch)) EXPECT_EQ(norm(pull), 0.0);
   const std::vector<Vec3> at = grid({{0.5, 0.5, 0}});
   HolePull fresh(square, *solver, 0.02);
-  const std::vector<Vec3> pulls = fresh.pull(on(square, at), 0.15, 0.04);
+  const std::vector<Vec3> pulls = fresh.pull(on(square, at), 0.15, 0.04, scratch);
   for (std::size_t i = 0; i < at.size(); ++i) {
     const Vec3 toward = Vec3{0.5, 0.5, 0} - at[i];
     if (std::abs(norm(toward) - 0.2) < 1e-9) {
@@ -85,13 +86,14 @@ TEST(HolePull, DrawsTheNeighboursOfAHoleIntoIt) {
 TEST(HolePull, AgainAfterSmallMovesGivesWhatAFreshLookGives) {
   const SurfaceMesh square = unit_square();
   const auto solver = solver_for(square);
+  SolverScratch scratch;
   HolePull again(square, *solver, 0.02);
   std::vector<Vec3> at = grid({{0.5, 0.5, 0}, {0.1, 0.9, 0}});
-  again.pull(on(square, at), 0.15, 0.04);
+  again.pull(on(square, at), 0.15, 0.04, scratch);
   for (Vec3& p : at) p = p + Vec3{0.004 * p.y, -0.003 * p.x, 0};
   HolePull fresh(square, *solver, 0.02);
-  const std::vector<Vec3> expected = fresh.pull(on(square, at), 0.15, 0.04),
-                          found = again.pull(on(square, at), 0.15, 0.04);
+  const std::vector<Vec3> expected = fresh.pull(on(square, at), 0.15, 0.04, scratch),
+                          found = again.pull(on(square, at), 0.15, 0.04, scratch);
   for (std::size_t i = 0; i < at.size(); ++i) {
     EXPECT_EQ(found[i].x, expected[i].x) << i;
     EXPECT_EQ(found[i].y, expected[i].y) << i;
@@ -120,7 +122,8 @@ TEST(HolePull, AHoleIsDrawnShutByParticlesOnItsOwnSheet) {
   }
   const std::vector<SurfaceLocation> at = on(mesh, points);
   HolePull holes(mesh, *solver, 0.1);
-  const std::vector<Vec3> pulls = holes.pull(at, 0.6, 0.5);
+  SolverScratch scratch;
+  const std::vector<Vec3> pulls = holes.pull(at, 0.6, 0.5, scratch);
   for (std::size_t i = 0; i < at.size(); ++i) {
     if (!on_the_hole_sheet[i]) {
       EXPECT_EQ(norm(pulls[i]), 0.0) << i;

@@ -85,7 +85,8 @@ void HolePull::for_each_point(Visit&& visit) const {
   }
 }
 
-std::vector<Vec3> HolePull::pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area) {
+std::vector<Vec3> HolePull::pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area,
+                                 SolverScratch& scratch) {
   std::vector<Vec3> pulls(particles.size());
   if (particles.empty()) return pulls;
   const std::vector<Vec3> at = places(particles);
@@ -94,7 +95,7 @@ std::vector<Vec3> HolePull::pull(const std::vector<SurfaceLocation>& particles, 
   const bool full = looked_from_.size() != particles.size();
   std::vector<double> moved(particles.size(), 0.0);
   if (full) {
-    regions_ = surface_voronoi(mesh_, solver_, particles, scratch_);
+    regions_ = surface_voronoi(mesh_, solver_, particles, scratch);
     nearest_.assign(size_, 0);
     distance_.assign(size_, 0);
   } else {

@@ -47,8 +47,10 @@ class HolePull {
   // the surface's regions of the last full look: a fresh look's pulls at a
   // fraction of the cost, but for a point that the rule would now give a
   // particle of its regions where it gave the straight nearest (a full look
-  // comes once an eighth of the points had to be looked at).
-  std::vector<Vec3> pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area);
+  // comes once an eighth of the points had to be looked at). A full look
+  // marches in `scratch` (a thread's, lent to every shape's pull in turn).
+  std::vector<Vec3> pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area,
+                         SolverScratch& scratch);
 
   // The largest distance from a point to its particle.
   double cover(const std::vector<SurfaceLocation>& particles) const;
@@ -62,7 +64,6 @@ class HolePull {
 
   const SurfaceMesh& mesh_;
   const GeodesicSolver& solver_;
-  SolverScratch scratch_;
   std::vector<std::uint8_t> parts_;  // per triangle, its parts along an edge
   std::size_t size_ = 0;
   // At the last full look: the particles, their surface regions, each
