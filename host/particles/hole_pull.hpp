@@ -67,9 +67,14 @@ class HolePull {
   std::vector<std::uint8_t> parts_;  // per triangle, its parts along an edge
   std::size_t size_ = 0;
   // At the last full look: the particles, their surface regions, each
-  // point's particle and its distance (rounded up).
+  // point's particle and its distance (rounded up). A shape's points are
+  // held through a whole refinement, so a particle takes two bytes where
+  // there are at most 65,536 (nearest_narrow_), four only where there are
+  // more (nearest_): a quarter of what the points hold, 0.17 MB a shape of
+  // 10,000 vertices at n = 1,024.
   std::vector<Vec3> looked_from_;
   SurfaceVoronoi regions_;
+  std::vector<std::uint16_t> nearest_narrow_;
   std::vector<std::uint32_t> nearest_;
   std::vector<float> distance_;
 };
