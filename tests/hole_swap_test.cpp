@@ -60,10 +60,11 @@ HoleSwapLimits limits(std::size_t swaps) {
 TEST(HoleSwap, ACrowdedParticleGoesIntoTheHoleBesideIt) {
   const SurfaceMesh square = square_grid(40);
   const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
-  SurfaceNeighbours surface(square, *solver);
+  const SurfaceNeighbours surface(square, *solver);
+  LookScratch look;
   const std::vector<SurfaceLocation> before = grid_particles(square, true, {{0.36, 0.3, 0}});
   std::vector<SurfaceLocation> after = before;
-  const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, after, limits(8));
+  const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, look, after, limits(8));
   EXPECT_EQ(outcome.swaps, 1u);
   EXPECT_GE(outcome.smallest, 0.15);
   EXPECT_LE(outcome.cover, 0.16);
@@ -81,12 +82,13 @@ TEST(HoleSwap, ACrowdedParticleGoesIntoTheHoleBesideIt) {
 TEST(HoleSwap, NothingMovesWithinTheLimitsOrWithNoSwapAllowed) {
   const SurfaceMesh square = square_grid(40);
   const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
-  SurfaceNeighbours surface(square, *solver);
+  const SurfaceNeighbours surface(square, *solver);
+  LookScratch look;
   for (const bool crowded : {false, true}) {
     const std::vector<SurfaceLocation> before =
         crowded ? grid_particles(square, true, {{0.36, 0.3, 0}}) : grid_particles(square, false, {});
     std::vector<SurfaceLocation> after = before;
-    const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, after, limits(crowded ? 0 : 8));
+    const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, look, after, limits(crowded ? 0 : 8));
     EXPECT_EQ(outcome.swaps, 0u) << crowded;
     for (std::size_t i = 0; i < before.size(); ++i) EXPECT_EQ(distance(before[i].at, after[i].at), 0.0) << i;
   }

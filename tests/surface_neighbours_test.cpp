@@ -22,15 +22,46 @@ TEST(SurfaceNeighbours, APairFacingAcrossAFoldIsNotOneBesideIs) {
   const SurfaceLocation from = *nearest.find({1, 1, 0});
   const SurfaceLocation across = *nearest.find({1, 1, 2 * kBend});
   const SurfaceLocation beside = *nearest.find({1.5, 1.2, 0});
-  SurfaceNeighbours surface(mesh, *solver);
-  surface.look_from(from, 1.0);
-  EXPECT_GE(surface.at_least(across), 1.0);  // about 6 along the surface
+  const SurfaceNeighbours surface(mesh, *solver);
+  LookScratch scratch;
+  surface.look_from(from, 1.0, scratch);
+  EXPECT_GE(surface.at_least(across, scratch), 1.0);  // about 6 along the surface
   const double apart = distance(from.at, beside.at);
-  EXPECT_LE(surface.at_least(beside), apart * 1.01);
-  EXPECT_GT(surface.at_least(beside), apart * 0.8);
+  EXPECT_LE(surface.at_least(beside, scratch), apart * 1.01);
+  EXPECT_GT(surface.at_least(beside, scratch), apart * 0.8);
   // Looked at from the other sheet, the same.
-  surface.look_from(across, 1.0);
-  EXPECT_GE(surface.at_least(from), 1.0);
+  surface.look_from(across, 1.0, scratch);
+  EXPECT_GE(surface.at_least(from, scratch), 1.0);
+}
+
+// One scratch lent to looks along two surfaces in turn, the smaller first
+// (a thread's, shape after shape): every answer is what a look with a
+// scratch of its own gives, to the bit.
+TEST(SurfaceNeighbours, AScratchLentToTwoSurfacesInTurnAnswersAsItsOwn) {
+  const SurfaceMesh once = folded_strip(), twice = folded_strip(2);
+  ASSERT_LT(once.vertex_count(), twice.vertex_count());
+  const std::unique_ptr<GeodesicSolver> once_solver = make_geodesic_solver(once, GeodesicMethod::fast_marching),
+                                        twice_solver = make_geodesic_solver(twice, GeodesicMethod::fast_marching);
+  const SurfaceNeighbours along_once(once, *once_solver), along_twice(twice, *twice_solver);
+  const NearestSurfacePoint near_once(once), near_twice(twice);
+  std::vector<SurfaceLocation> on_once, on_twice;
+  for (double x = 0.5; x < kLength; x += 0.5) {
+    for (const double z : {0.0, 2 * kBend, 4 * kBend}) {
+      on_once.push_back(*near_once.find({x, 1, z}));
+      on_twice.push_back(*near_twice.find({x, 1, z}));
+    }
+  }
+  LookScratch lent;
+  for (int turn = 0; turn < 2; ++turn) {
+    for (std::size_t from = 0; from < on_once.size(); from += 5) {
+      for (const auto& [surface, at] : {std::pair(&along_once, &on_once), std::pair(&along_twice, &on_twice)}) {
+        LookScratch own;
+        surface->look_from((*at)[from], 1.0, own);
+        surface->look_from((*at)[from], 1.0, lent);
+        for (const SurfaceLocation& to : *at) EXPECT_EQ(surface->at_least(to, lent), surface->at_least(to, own));
+      }
+    }
+  }
 }
 
 TEST(SurfacePairs, KeepAnAnswerOnlyWhileTheMovesCannotChangeIt) {
@@ -38,19 +69,20 @@ TEST(SurfacePairs, KeepAnAnswerOnlyWhileTheMovesCannotChangeIt) {
   const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
   const NearestSurfacePoint nearest(mesh);
   SurfacePairs pairs(mesh, *solver);
+  LookScratch scratch;
   std::vector<SurfaceLocation> at{*nearest.find({1, 1, 0}), *nearest.find({1, 1, 2 * kBend}),
                                   *nearest.find({1.5, 1.2, 0})};
-  pairs.begin_step(at);
+  pairs.begin_step(at, scratch);
   EXPECT_FALSE(pairs.may_be_within(0, 1, 1.0));
   EXPECT_TRUE(pairs.may_be_within(0, 2, 1.0));
   // A little moved: the same answers.
   at = {*nearest.find({1.02, 1, 0}), *nearest.find({1.01, 1.01, 2 * kBend}), *nearest.find({1.52, 1.2, 0})};
-  pairs.begin_step(at);
+  pairs.begin_step(at, scratch);
   EXPECT_FALSE(pairs.may_be_within(0, 1, 1.0));
   EXPECT_TRUE(pairs.may_be_within(0, 2, 1.0));
   // The particle across the fold comes round to this sheet, beside the first.
   at[1] = *nearest.find({1.3, 0.8, 0});
-  pairs.begin_step(at);
+  pairs.begin_step(at, scratch);
   EXPECT_TRUE(pairs.may_be_within(0, 1, 1.0));
 }
 

@@ -85,17 +85,20 @@ void HolePull::for_each_point(Visit&& visit) const {
   }
 }
 
-std::vector<Vec3> HolePull::pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area) {
+std::vector<Vec3> HolePull::pull(const std::vector<SurfaceLocation>& particles, double reach, double cell_area,
+                                 SolverScratch& scratch) {
   std::vector<Vec3> pulls(particles.size());
   if (particles.empty()) return pulls;
   const std::vector<Vec3> at = places(particles);
   const PointCloud cloud{at};
   const PointCloudTree tree(3, cloud);
   const bool full = looked_from_.size() != particles.size();
+  const bool narrow = particles.size() <= std::size_t(std::numeric_limits<std::uint16_t>::max()) + 1;
   std::vector<double> moved(particles.size(), 0.0);
   if (full) {
-    regions_ = surface_voronoi(mesh_, solver_, particles, scratch_);
-    nearest_.assign(size_, 0);
+    regions_ = surface_voronoi(mesh_, solver_, particles, scratch);
+    nearest_narrow_.assign(narrow ? size_ : 0, 0);
+    nearest_.assign(narrow ? 0 : size_, 0);
     distance_.assign(size_, 0);
   } else {
     for (std::size_t i = 0; i < particles.size(); ++i) moved[i] = distance(at[i], looked_from_[i]);
@@ -103,11 +106,15 @@ std::vector<Vec3> HolePull::pull(const std::vector<SurfaceLocation>& particles, 
   std::size_t looked = 0;
   for_each_point([&](std::uint32_t s, std::uint32_t triangle, const Vec3& point, double area) {
     // Its particle is no farther than the one it had at the full look.
-    if (!full && double(distance_[s]) + moved[nearest_[s]] <= reach) return;
+    if (!full && double(distance_[s]) + moved[narrow ? nearest_narrow_[s] : nearest_[s]] <= reach) return;
     ++looked;
     const Nearest nearest = nearest_on_surface(mesh_, triangle, point, tree, at, regions_);
     if (full) {
-      nearest_[s] = nearest.particle;
+      if (narrow) {
+        nearest_narrow_[s] = std::uint16_t(nearest.particle);
+      } else {
+        nearest_[s] = nearest.particle;
+      }
       float rounded = float(nearest.away);
       if (double(rounded) < nearest.away) rounded = std::nextafter(rounded, std::numeric_limits<float>::infinity());
       distance_[s] = rounded;

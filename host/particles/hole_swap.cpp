@@ -30,7 +30,7 @@ struct Figures {
 };
 
 Figures figures(const SurfaceVoronoi& diagram, const std::vector<SurfaceLocation>& points,
-                SurfaceNeighbours& surface, const HoleSwapLimits& limits) {
+                const SurfaceNeighbours& surface, LookScratch& look, const HoleSwapLimits& limits) {
   Figures found;
   for (VertexId v = 0; v < diagram.distance.size(); ++v) {
     const double d = diagram.distance[v];
@@ -39,7 +39,7 @@ Figures figures(const SurfaceVoronoi& diagram, const std::vector<SurfaceLocation
       found.hole = v;
     }
   }
-  const ClosestPair closest = closest_surface_pair(points, surface, kPairReach * limits.spacing);
+  const ClosestPair closest = closest_surface_pair(points, surface, kPairReach * limits.spacing, look);
   found.smallest = closest.spacing;
   found.a = closest.a;
   found.b = closest.b;
@@ -75,12 +75,12 @@ struct Trial {
 
 class Swapper {
  public:
-  Swapper(const SurfaceMesh& mesh, const GeodesicSolver& solver, SurfaceNeighbours& surface,
+  Swapper(const SurfaceMesh& mesh, const GeodesicSolver& solver, const SurfaceNeighbours& surface, LookScratch& look,
           const HoleSwapLimits& limits)
-      : mesh_(mesh), solver_(solver), surface_(surface), walk_(mesh), limits_(limits) {}
+      : mesh_(mesh), solver_(solver), surface_(surface), look_(look), walk_(mesh), limits_(limits) {}
 
   Figures measure(const std::vector<SurfaceLocation>& points) {
-    return figures(surface_voronoi(mesh_, solver_, points, scratch_), points, surface_, limits_);
+    return figures(surface_voronoi(mesh_, solver_, points, scratch_), points, surface_, look_, limits_);
   }
 
   // `points` with particle `mover` taken out and put at the vertex farthest
@@ -114,7 +114,8 @@ class Swapper {
  private:
   const SurfaceMesh& mesh_;
   const GeodesicSolver& solver_;
-  SurfaceNeighbours& surface_;
+  const SurfaceNeighbours& surface_;
+  LookScratch& look_;
   const SurfaceWalk walk_;
   const HoleSwapLimits& limits_;
   SolverScratch scratch_;
@@ -122,16 +123,16 @@ class Swapper {
 
 }  // namespace
 
-HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& solver, SurfaceNeighbours& surface,
-                                std::vector<SurfaceLocation>& points, const HoleSwapLimits& limits) {
+HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& solver, const SurfaceNeighbours& surface,
+                                LookScratch& look, std::vector<SurfaceLocation>& points, const HoleSwapLimits& limits) {
   HoleSwapOutcome outcome;
   if (points.size() < 3) return outcome;
-  Swapper swapper(mesh, solver, surface, limits);
+  Swapper swapper(mesh, solver, surface, look, limits);
   SolverScratch scratch;
   for (;;) {
     const SurfaceVoronoi diagram = surface_voronoi(mesh, solver, points, scratch);
     const std::vector<SurfacePath> paths = diagram.neighbour_paths(mesh);
-    const Figures now = figures(diagram, points, surface, limits);
+    const Figures now = figures(diagram, points, surface, look, limits);
     outcome.smallest = now.smallest;
     outcome.cover = now.cover;
     const double short_now = shortfall(now, limits);

@@ -40,14 +40,15 @@ struct HoleSwapOutcome {
 // over `limits.cover`, and at most `limits.max_swaps` times. Each swap tries
 // as movers the particles within `limits.steps` of the widest hole's owner
 // and the two of the closest pair: each is taken out and put at the vertex
-// farthest from the rest among its neighbourhood's regions. The mover
-// kept is the one that leaves the least shortfall (the spacing's under its
+// farthest from the rest among its neighbourhood's regions. The mover kept
+// is the one that leaves the least shortfall (the spacing's under its
 // limit plus the hole's over its limit, each relative), where it lessens
-// the shortfall and makes neither figure worse than it was. The hole is the largest distance of the surface's Voronoi
-// diagram at the vertices (particles/surface_voronoi), the spacing as
-// closest_surface_pair tells it (`surface`, built for `mesh`), and the
-// neighbours those of the diagram. Deterministic: ties go to the lowest index.
-HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& solver, SurfaceNeighbours& surface,
-                                std::vector<SurfaceLocation>& points, const HoleSwapLimits& limits);
+// the shortfall and makes neither figure worse than it was. The hole is the
+// largest distance of the surface's Voronoi diagram at the vertices
+// (particles/surface_voronoi), whose neighbours are the movers' steps; the
+// spacing is as closest_surface_pair tells it (`surface`, built for `mesh`;
+// `look`, its marches' scratch). Deterministic: ties go to the lowest index.
+HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& solver, const SurfaceNeighbours& surface,
+                                LookScratch& look, std::vector<SurfaceLocation>& points, const HoleSwapLimits& limits);
 
 }  // namespace meshparticles

@@ -22,27 +22,35 @@
 
 namespace meshparticles {
 
+// The working memory of looks along a surface, clean between looks but for
+// the last look's answers: a thread's, lent to every shape it looks along in
+// turn (as the solver's scratch is), not one per shape held through a whole
+// refinement (correspondence/joint_refinement).
+struct LookScratch {
+  SolverScratch solver;
+  std::vector<std::pair<VertexId, float>> within;  // the last look's vertices
+  std::vector<float> distance;  // per vertex: the last look's distance, +inf beyond it
+  double marched = 0;           // the last look's radius
+};
+
 class SurfaceNeighbours {
  public:
   // `mesh` and `solver` (built for it) must outlive this.
   SurfaceNeighbours(const SurfaceMesh& mesh, const GeodesicSolver& solver);
 
   // Marches from `from` far enough to tell, for any point, whether it lies
-  // within `radius` along the surface.
-  void look_from(const SurfaceLocation& from, double radius);
+  // within `radius` along the surface; the answers stay in `scratch`.
+  void look_from(const SurfaceLocation& from, double radius, LookScratch& scratch) const;
 
   // A lower bound of the distance along the surface from the last look's
-  // point to `to`: `radius` or more where `to` is surely not within it.
-  double at_least(const SurfaceLocation& to) const;
+  // point (in `scratch`, a look along this surface) to `to`: `radius` or
+  // more where `to` is surely not within it.
+  double at_least(const SurfaceLocation& to, const LookScratch& scratch) const;
 
  private:
   const SurfaceMesh& mesh_;
   const GeodesicSolver& solver_;
   double longest_edge_ = 0;
-  double marched_ = 0;  // the last march's radius
-  SolverScratch scratch_;
-  std::vector<std::pair<VertexId, float>> within_;
-  std::vector<float> distance_;  // per vertex: the last march's distance, +inf beyond it
 };
 
 // The closest two of `at` along the surface, as far as looks tell: each
@@ -53,7 +61,8 @@ struct ClosestPair {
   double spacing = 0;
   std::uint32_t a = 0, b = 0;  // a < b where `spacing` < `reach`
 };
-ClosestPair closest_surface_pair(const std::vector<SurfaceLocation>& at, SurfaceNeighbours& surface, double reach);
+ClosestPair closest_surface_pair(const std::vector<SurfaceLocation>& at, const SurfaceNeighbours& surface, double reach,
+                                 LookScratch& scratch);
 
 // The same question asked of a set of particles step after step, as they
 // move a little each step: what a look from particle i said of particle j
@@ -69,8 +78,9 @@ class SurfacePairs {
 
   SurfacePairs(const SurfaceMesh& mesh, const GeodesicSolver& solver) : look_(mesh, solver) {}
 
-  // A step over the particles `at` (which must outlive the step's questions).
-  void begin_step(const std::vector<SurfaceLocation>& at);
+  // A step over the particles `at`, its looks made in `scratch` (both must
+  // outlive the step's questions).
+  void begin_step(const std::vector<SurfaceLocation>& at, LookScratch& scratch);
 
   // Whether particle j may lie within `radius` of particle i along the
   // surface (`radius` the same at every step).
@@ -86,6 +96,7 @@ class SurfacePairs {
 
   SurfaceNeighbours look_;
   const std::vector<SurfaceLocation>* at_ = nullptr;
+  LookScratch* scratch_ = nullptr;  // the step's
   std::size_t step_ = 0;
   std::uint32_t looking_ = kNone;  // the particle look_ marched from this step
   std::vector<std::size_t> looked_step_;  // per particle: the step of its last look (+1; 0: never)
