@@ -20,8 +20,10 @@ constexpr double kLeastGain = 1e-9;
 // ones count as that far (enough to tell a gain from a loss near the limit).
 constexpr double kPairReach = 2;
 
-// What a set's diagram says of it: its widest hole (and the vertex there)
-// and its closest neighbours (and their shortest path).
+// A set's two figures: its widest hole on the diagram (and the vertex
+// there), and its closest pair along the surface (and which two those are;
+// 0 and 0 where no pair is within kPairReach spacings: particle 0 is then
+// only one more mover tried).
 struct Figures {
   double cover = 0;
   VertexId hole = 0;
