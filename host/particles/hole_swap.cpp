@@ -70,8 +70,10 @@ std::vector<std::uint32_t> within_steps(const std::vector<std::vector<std::uint3
   return reached;
 }
 
+// A set of places, its diagram and its figures.
 struct Trial {
   std::vector<SurfaceLocation> points;
+  SurfaceVoronoi diagram;
   Figures figures;
 };
 
@@ -81,8 +83,11 @@ class Swapper {
           const HoleSwapLimits& limits)
       : mesh_(mesh), solver_(solver), surface_(surface), look_(look), walk_(mesh), limits_(limits) {}
 
-  Figures measure(const std::vector<SurfaceLocation>& points) {
-    return figures(surface_voronoi(mesh_, solver_, points, scratch_), points, surface_, look_, limits_);
+  Trial measured(std::vector<SurfaceLocation> points) {
+    Trial trial{std::move(points), {}, {}};
+    trial.diagram = surface_voronoi(mesh_, solver_, trial.points, scratch_);
+    trial.figures = figures(trial.diagram, trial.points, surface_, look_, limits_);
+    return trial;
   }
 
   // `points` with particle `mover` taken out and put at the vertex farthest
@@ -107,10 +112,9 @@ class Swapper {
       target = v;
     }
     if (!target || farthest < closest) return std::nullopt;
-    Trial trial{points, {}};
-    trial.points[mover] = walk_.at_vertex(*target);
-    trial.figures = measure(trial.points);
-    return trial;
+    std::vector<SurfaceLocation> there = points;
+    there[mover] = walk_.at_vertex(*target);
+    return measured(std::move(there));
   }
 
  private:
@@ -130,23 +134,20 @@ HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& s
   HoleSwapOutcome outcome;
   if (points.size() < 3) return outcome;
   Swapper swapper(mesh, solver, surface, look, limits);
-  SolverScratch scratch;
+  Trial now = swapper.measured(std::move(points));  // each swap's start: the last one kept
   for (;;) {
-    const SurfaceVoronoi diagram = surface_voronoi(mesh, solver, points, scratch);
-    const std::vector<SurfacePath> paths = diagram.neighbour_paths(mesh);
-    const Figures now = figures(diagram, points, surface, look, limits);
-    outcome.smallest = now.smallest;
-    outcome.cover = now.cover;
-    const double short_now = shortfall(now, limits);
+    outcome.smallest = now.figures.smallest;
+    outcome.cover = now.figures.cover;
+    const double short_now = shortfall(now.figures, limits);
     if (outcome.swaps == limits.max_swaps || short_now <= 0) break;
-    std::vector<std::vector<std::uint32_t>> neighbours(points.size());
-    for (const SurfacePath& path : paths) {
+    std::vector<std::vector<std::uint32_t>> neighbours(now.points.size());
+    for (const SurfacePath& path : now.diagram.neighbour_paths(mesh)) {
       neighbours[path.a].push_back(path.b);
       neighbours[path.b].push_back(path.a);
     }
-    std::vector<std::uint32_t> movers = within_steps(neighbours, diagram.owner[now.hole], limits.steps);
-    movers.push_back(now.a);
-    movers.push_back(now.b);
+    std::vector<std::uint32_t> movers = within_steps(neighbours, now.diagram.owner[now.figures.hole], limits.steps);
+    movers.push_back(now.figures.a);
+    movers.push_back(now.figures.b);
     std::sort(movers.begin(), movers.end());
     movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
     std::optional<Trial> best;
@@ -154,11 +155,10 @@ HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& s
     for (const std::uint32_t mover : movers) {
       std::vector<std::uint32_t> neighbourhood = within_steps(neighbours, mover, limits.steps);
       neighbourhood.erase(neighbourhood.begin());  // the mover's own region is no place to go
-      std::optional<Trial> trial =
-          swapper.moved(points, mover, neighbourhood, now.smallest);
+      std::optional<Trial> trial = swapper.moved(now.points, mover, neighbourhood, now.figures.smallest);
       if (!trial) continue;
       const Figures& then = trial->figures;
-      if (then.smallest < now.smallest || then.cover > now.cover) continue;
+      if (then.smallest < now.figures.smallest || then.cover > now.figures.cover) continue;
       const double short_then = shortfall(then, limits);
       if (short_then < short_best) {
         short_best = short_then;
@@ -166,9 +166,10 @@ HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& s
       }
     }
     if (!best) break;
-    points = std::move(best->points);
+    now = std::move(*best);
     ++outcome.swaps;
   }
+  points = std::move(now.points);
   return outcome;
 }
 
