@@ -9,37 +9,22 @@
 #include "geodesics/solver_factory.hpp"
 #include "mesh/nearest_surface_point.hpp"
 #include "particles/hole_swap.hpp"
+#include "square_grid.hpp"
 
 namespace meshparticles::testing {
 namespace {
 
-// The unit square in z = 0, a grid of `cells` x `cells` squares, each cut in two.
-SurfaceMesh square_grid(int cells) {
-  std::vector<Vec3> positions;
-  for (int j = 0; j <= cells; ++j) {
-    for (int i = 0; i <= cells; ++i) positions.push_back({double(i) / cells, double(j) / cells, 0});
-  }
-  std::vector<Triangle> triangles;
-  const auto at = [&](int i, int j) { return VertexId(j * (cells + 1) + i); };
-  for (int j = 0; j < cells; ++j) {
-    for (int i = 0; i < cells; ++i) {
-      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  }
-  return SurfaceMesh(std::move(positions), std::move(triangles));
-}
-
-// Particles at the centres of a 5 x 5 grid of cells 0.2 wide (0.2 apart,
+// Particles at the centres of a `cells` x `cells` grid (5 x 5: 0.2 apart,
 // no point of the square farther than 0.141 from one), less the middle
 // one where `hole`, and with `extra` added last.
-std::vector<SurfaceLocation> grid_particles(const SurfaceMesh& mesh, bool hole, const std::vector<Vec3>& extra) {
+std::vector<SurfaceLocation> grid_particles(const SurfaceMesh& mesh, bool hole, const std::vector<Vec3>& extra,
+                                            int cells = 5) {
   const NearestSurfacePoint nearest(mesh);
   std::vector<SurfaceLocation> at;
-  for (int i = 0; i < 5; ++i) {
-    for (int j = 0; j < 5; ++j) {
-      if (hole && i == 2 && j == 2) continue;
-      at.push_back(*nearest.find({0.1 + 0.2 * i, 0.1 + 0.2 * j, 0}));
+  for (int i = 0; i < cells; ++i) {
+    for (int j = 0; j < cells; ++j) {
+      if (hole && 2 * i + 1 == cells && 2 * j + 1 == cells) continue;
+      at.push_back(*nearest.find({(i + 0.5) / cells, (j + 0.5) / cells, 0}));
     }
   }
   for (const Vec3& p : extra) at.push_back(*nearest.find(p));
@@ -51,6 +36,7 @@ HoleSwapLimits limits(std::size_t swaps) {
   wanted.max_swaps = swaps;
   wanted.spacing = 0.15;
   wanted.cover = 0.16;
+  wanted.hole_step = 0.01;
   return wanted;
 }
 
@@ -75,6 +61,37 @@ TEST(HoleSwap, ACrowdedParticleGoesIntoTheHoleBesideIt) {
     EXPECT_LT(distance(after[i].at, {0.5, 0.5, 0}), 1e-12) << i;
   }
   EXPECT_EQ(moved, 1u);
+}
+
+// A crowd at a corner and a hole in the middle, more than the local
+// swaps' steps apart: a particle of the crowd is carried into the hole,
+// each particle on the way taking the next one's place, so that none moves
+// farther than a neighbour's place (a grid spacing and a half).
+TEST(HoleSwap, ACrowdFarFromTheHoleIsCarriedIntoItStepByStep) {
+  const SurfaceMesh square = square_grid(72);
+  const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
+  const SurfaceNeighbours surface(square, *solver);
+  LookScratch look;
+  const double spacing = 1.0 / 9;
+  const std::vector<SurfaceLocation> before = grid_particles(square, true, {{1.0 * spacing, 0.2 * spacing, 0}}, 9);
+  std::vector<SurfaceLocation> after = before;
+  HoleSwapLimits wanted;
+  wanted.max_swaps = 8;
+  wanted.spacing = 0.75 * spacing;
+  wanted.cover = 0.8 * spacing;
+  wanted.hole_step = 0.005;
+  const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, look, after, wanted);
+  EXPECT_EQ(outcome.swaps, 1u);
+  EXPECT_GE(outcome.smallest, wanted.spacing);
+  EXPECT_LE(outcome.cover, wanted.cover);
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    const double move = distance(before[i].at, after[i].at);
+    if (move == 0) continue;
+    ++moved;
+    EXPECT_LT(move, 1.5 * spacing) << i;
+  }
+  EXPECT_GE(moved, 4u);  // the corner is four steps or more from the middle
 }
 
 // A set within both limits is left as it is, and so is any set when no

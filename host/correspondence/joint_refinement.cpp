@@ -22,6 +22,7 @@
 #include "particles/particle_params.hpp"
 #include "particles/surface_neighbours.hpp"
 #include "particles/surface_voronoi.hpp"
+#include "particles/widest_hole.hpp"
 #include "shape_model/corresponding_points.hpp"
 #include "shape_model/procrustes.hpp"
 
@@ -81,11 +82,14 @@ constexpr double kHeldOffTheOthers = 2;
 constexpr std::size_t kGapSweeps = 8;
 constexpr double kGapMinGain = 0.01;
 constexpr double kGapStallGain = 0.001;
-// Then at most kHoleSwaps particles carried from a crowd into a hole within
-// kSwapSteps neighbours (particles/hole_swap), while the shape's closest
-// pair is under even enough or its widest hole over kSwapHole times the
-// template's own run's (the target is 1.15x the shape's own run's).
-constexpr std::size_t kHoleSwaps = 8;
+// Then particles taken from a crowd into a hole (particles/hole_swap):
+// one a kParticlesPerSwap of them at most (at least kLeastSwaps), while the
+// shape's closest pair is under even enough or its widest hole over
+// kSwapHole times the template's own run's (the target is 1.15x
+// the shape's own run's). A crowd left by the transfer grows with n: at
+// n = 1,024 one of FAUST's poses took 90 to part its pairs (rho 0.54 to 0.72).
+constexpr std::size_t kParticlesPerSwap = 8;
+constexpr std::size_t kLeastSwaps = 8;
 constexpr std::size_t kSwapSteps = 2;
 constexpr double kSwapHole = 1.05;
 
@@ -422,6 +426,14 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
   for (const std::size_t k : share.owned()) shapes[k].at = std::move(packed[k]);
 }
 
+double widest_hole_spacings(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles) {
+  const double spacing = hexagonal_spacing(mesh.area(), particles.size());
+  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
+  SolverScratch scratch;
+  const SurfaceVoronoi diagram = surface_voronoi(mesh, *solver, particles, scratch);
+  return widest_hole(mesh, diagram, particles, kHeldCoverSampleStep * spacing).away / spacing;
+}
+
 void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<std::vector<SurfaceLocation>>& transferred,
                        std::size_t particles, double template_hole, const JointRefinementOptions& options,
                        ShapeShare& share, JointRefinementRecord& record) {
@@ -487,8 +499,12 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
       shapes[k].at = std::move(gapped.points);
       sweeps = gapped.sweeps.size();
     }
-    const HoleSwapLimits swap_limits{kHoleSwaps, options.even_enough * spacings[k],
-                                     kSwapHole * template_hole * spacings[k], kSwapSteps};
+    HoleSwapLimits swap_limits;
+    swap_limits.max_swaps = std::max(kLeastSwaps, particles / kParticlesPerSwap);
+    swap_limits.spacing = options.even_enough * spacings[k];
+    swap_limits.cover = kSwapHole * template_hole * spacings[k];
+    swap_limits.hole_step = kHeldCoverSampleStep * spacings[k];
+    swap_limits.steps = kSwapSteps;
     const std::size_t swaps = swap_into_holes(mesh, *surface.solver, surface.neighbours, look, shapes[k].at, swap_limits).swaps;
     kept[k] = {share_kept, double(sweeps), double(swaps)};
   });

@@ -87,6 +87,11 @@ void iterate_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles,
 void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, const JointRefinementOptions& options,
                   ShapeShare& share, JointRefinementRecord& record, bool quiet);
 
+// The widest hole `particles` leave on `mesh` (particles/widest_hole), in
+// hexagonal spacings, as hold_back_evening's swaps measure each shape's
+// (the template's: what they hold every shape's holes to).
+double widest_hole_spacings(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles);
+
 // Each owned shape evened out no further than it needs. Evening each shape
 // on its own moves particle i differently on every shape: on the ellipsoid
 // families at n = 1,024 that, not the transfer, made most of its spread
@@ -100,10 +105,10 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
 // evened shape's: where the transfer was wrong (a shape a few degrees
 // turned), the refinement's correction is kept. The refinement's places
 // where no share is. A shape still closer than even enough, or with a hole
-// over kSwapHole times `template_hole` (the template's own run's widest, in
-// its spacings, as the diagram at the vertices measures it), then takes up
-// to kHoleSwaps particles from its crowds into its holes. With no
-// iterations (`options.iterations` 0) the transfer's places stay.
+// over kSwapHole times `template_hole` (widest_hole_spacings of the
+// template's own run), then takes particles from its crowds into its holes
+// (one for each kParticlesPerSwap particles at most). With no iterations
+// (`options.iterations` 0) the transfer's places stay.
 void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<std::vector<SurfaceLocation>>& transferred,
                        std::size_t particles, double template_hole, const JointRefinementOptions& options,
                        ShapeShare& share, JointRefinementRecord& record);

@@ -62,15 +62,6 @@ DistributionQuality evenness(const std::filesystem::path& file, const SurfaceMes
   return measure_point_sets(mesh, request).sets.front().quality;
 }
 
-// The widest hole `particles` leave on `mesh`, in hexagonal spacings, as
-// the geodesic Voronoi diagram at the vertices measures it (the template's:
-// what hold_back_evening holds every shape's holes to).
-double widest_hole(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles) {
-  const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
-  SolverScratch scratch;
-  return surface_voronoi(mesh, *solver, particles, scratch).cover() / hexagonal_spacing(mesh.area(), particles.size());
-}
-
 // A shape aligned onto the template, and the template's particles carried
 // onto its surface (the deformed template's, each to the nearest point of
 // the surface, found exactly in the shape's own coordinates: a similarity
@@ -360,7 +351,7 @@ PopulationCorrespondence correspond_population(const PopulationRequest& request,
   });
   refinement_stage("packed", particles, particle_count, paths, share, checkpoint, population.refinement, [&] {
     pack_jointly(particles, particle_count, request.refinement, share, population.refinement, request.quiet);
-    hold_back_evening(particles, transferred, particle_count, widest_hole(template_mesh, template_particles),
+    hold_back_evening(particles, transferred, particle_count, widest_hole_spacings(template_mesh, template_particles),
                       request.refinement, share, population.refinement);
   });
 

@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "mesh/surface_walk.hpp"
-#include "particles/surface_neighbours.hpp"
 #include "particles/surface_voronoi.hpp"
+#include "particles/widest_hole.hpp"
 
 namespace meshparticles {
 
@@ -20,27 +20,22 @@ constexpr double kLeastGain = 1e-9;
 // ones count as that far (enough to tell a gain from a loss near the limit).
 constexpr double kPairReach = 2;
 
-// A set's two figures: its widest hole on the diagram (and the vertex
-// there), and its closest pair along the surface (and which two those are;
-// 0 and 0 where no pair is within kPairReach spacings: particle 0 is then
-// only one more mover tried).
+// A set's two figures: its widest hole (a point of the surface between the
+// vertices too, and its particle) and its closest pair along the surface
+// (and which two those are; 0 and 0 where no pair is within kPairReach
+// spacings: particle 0 is then only one more mover tried).
 struct Figures {
   double cover = 0;
-  VertexId hole = 0;
+  WidestHole hole;
   double smallest = std::numeric_limits<double>::infinity();
   std::uint32_t a = 0, b = 0;
 };
 
-Figures figures(const SurfaceVoronoi& diagram, const std::vector<SurfaceLocation>& points,
+Figures figures(const SurfaceMesh& mesh, const SurfaceVoronoi& diagram, const std::vector<SurfaceLocation>& points,
                 const SurfaceNeighbours& surface, LookScratch& look, const HoleSwapLimits& limits) {
   Figures found;
-  for (VertexId v = 0; v < diagram.distance.size(); ++v) {
-    const double d = diagram.distance[v];
-    if (std::isfinite(d) && d > found.cover) {
-      found.cover = d;
-      found.hole = v;
-    }
-  }
+  found.hole = widest_hole(mesh, diagram, points, limits.hole_step);
+  found.cover = found.hole.away;
   const ClosestPair closest = closest_surface_pair(points, surface, kPairReach * limits.spacing, look);
   found.smallest = closest.spacing;
   found.a = closest.a;
@@ -70,6 +65,33 @@ std::vector<std::uint32_t> within_steps(const std::vector<std::vector<std::uint3
   return reached;
 }
 
+// The particles on a shortest path from `from` to `to` on the neighbour
+// graph, both ends included; empty where none joins them. Ties go to the
+// lowest index.
+std::vector<std::uint32_t> shortest_path(const std::vector<std::vector<std::uint32_t>>& neighbours, std::uint32_t from,
+                                         std::uint32_t to) {
+  constexpr std::uint32_t kUnreached = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> towards(neighbours.size(), kUnreached);  // a reached one's next step to `to`
+  towards[to] = to;
+  std::vector<std::uint32_t> ring{to};
+  while (!ring.empty() && towards[from] == kUnreached) {
+    std::vector<std::uint32_t> next;
+    for (const std::uint32_t k : ring) {
+      for (const std::uint32_t j : neighbours[k]) {
+        if (towards[j] != kUnreached) continue;
+        towards[j] = k;
+        next.push_back(j);
+      }
+    }
+    std::sort(next.begin(), next.end());
+    ring = std::move(next);
+  }
+  if (towards[from] == kUnreached) return {};
+  std::vector<std::uint32_t> path{from};
+  while (path.back() != to) path.push_back(towards[path.back()]);
+  return path;
+}
+
 // A set of places, its diagram and its figures.
 struct Trial {
   std::vector<SurfaceLocation> points;
@@ -86,7 +108,7 @@ class Swapper {
   Trial measured(std::vector<SurfaceLocation> points) {
     Trial trial{std::move(points), {}, {}};
     trial.diagram = surface_voronoi(mesh_, solver_, trial.points, scratch_);
-    trial.figures = figures(trial.diagram, trial.points, surface_, look_, limits_);
+    trial.figures = figures(mesh_, trial.diagram, trial.points, surface_, look_, limits_);
     return trial;
   }
 
@@ -114,6 +136,19 @@ class Swapper {
     if (!target || farthest < closest) return std::nullopt;
     std::vector<SurfaceLocation> there = points;
     there[mover] = walk_.at_vertex(*target);
+    return measured(std::move(there));
+  }
+
+  // `points` less the place of `path`'s first particle and with `hole` (a
+  // point of the last one's region) added: each particle on the path takes
+  // the next one's place and the last goes into the hole. As a set, the
+  // first particle put into the hole however far off; carried so, each
+  // moves by about a spacing and stays near where it is on other shapes.
+  Trial carried(const std::vector<SurfaceLocation>& points, const std::vector<std::uint32_t>& path,
+                const SurfaceLocation& hole) {
+    std::vector<SurfaceLocation> there = points;
+    for (std::size_t j = 0; j + 1 < path.size(); ++j) there[path[j]] = points[path[j + 1]];
+    there[path.back()] = hole;
     return measured(std::move(there));
   }
 
@@ -145,25 +180,33 @@ HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& s
       neighbours[path.a].push_back(path.b);
       neighbours[path.b].push_back(path.a);
     }
-    std::vector<std::uint32_t> movers = within_steps(neighbours, now.diagram.owner[now.figures.hole], limits.steps);
-    movers.push_back(now.figures.a);
-    movers.push_back(now.figures.b);
-    std::sort(movers.begin(), movers.end());
-    movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
+    const std::uint32_t hole_owner = now.figures.hole.owner;
     std::optional<Trial> best;
     double short_best = short_now - kLeastGain;
-    for (const std::uint32_t mover : movers) {
-      std::vector<std::uint32_t> neighbourhood = within_steps(neighbours, mover, limits.steps);
-      neighbourhood.erase(neighbourhood.begin());  // the mover's own region is no place to go
-      std::optional<Trial> trial = swapper.moved(now.points, mover, neighbourhood, now.figures.smallest);
-      if (!trial) continue;
-      const Figures& then = trial->figures;
-      if (then.smallest < now.figures.smallest || then.cover > now.figures.cover) continue;
+    const auto consider = [&](Trial trial) {
+      const Figures& then = trial.figures;
+      if (then.smallest < now.figures.smallest || then.cover > std::max(now.figures.cover, limits.cover)) return;
       const double short_then = shortfall(then, limits);
       if (short_then < short_best) {
         short_best = short_then;
         best = std::move(trial);
       }
+    };
+    std::vector<std::uint32_t> movers = within_steps(neighbours, hole_owner, limits.steps);
+    movers.push_back(now.figures.a);
+    movers.push_back(now.figures.b);
+    std::sort(movers.begin(), movers.end());
+    movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
+    for (const std::uint32_t mover : movers) {
+      std::vector<std::uint32_t> neighbourhood = within_steps(neighbours, mover, limits.steps);
+      neighbourhood.erase(neighbourhood.begin());  // the mover's own region is no place to go
+      std::optional<Trial> trial = swapper.moved(now.points, mover, neighbourhood, now.figures.smallest);
+      if (trial) consider(std::move(*trial));
+    }
+    // The closest pair's particles carried into the widest hole, however far.
+    for (const std::uint32_t mover : {now.figures.a, now.figures.b}) {
+      const std::vector<std::uint32_t> path = shortest_path(neighbours, mover, hole_owner);
+      if (!path.empty()) consider(swapper.carried(now.points, path, now.figures.hole.at));
     }
     if (!best) break;
     now = std::move(*best);

@@ -1,8 +1,9 @@
 #pragma once
 // A particle taken from a crowded place and put down in the widest empty
-// place near it: the farthest-point move (Schlömer et al. 2011: remove a
-// point, put it back at the centre of its neighbourhood's largest hole),
-// made along the surface and only within a few neighbours of where it was.
+// place: the farthest-point move (Schlömer et al. 2011: remove a point, put
+// it back at the centre of the largest hole), made along the surface, near
+// where it was or, for a hole far from the crowd, carried there a
+// neighbour's place at a time.
 //
 // Pushes and pulls move a particle a fraction of a spacing at a time and
 // stop where the forces balance: a palm holding one particle too many
@@ -23,6 +24,7 @@ struct HoleSwapLimits {
   std::size_t max_swaps = 0;
   double spacing = 0;  // the smallest spacing wanted (mesh units): a pair closer is a crowd
   double cover = 0;    // the widest hole wanted (mesh units): one wider is a hole
+  double hole_step = 0;  // holes are looked for at points about this far apart (mesh units; particles/widest_hole)
   // A particle may go only into the regions of the particles within this
   // many steps of it on the surface's neighbour graph (its Voronoi
   // neighbours, theirs, ...): the swap stays local.
@@ -38,16 +40,22 @@ struct HoleSwapOutcome {
 // Swaps `points` (points of `mesh`'s triangles; `solver` built for `mesh`)
 // while the smallest spacing is under `limits.spacing` or the widest hole
 // over `limits.cover`, and at most `limits.max_swaps` times. Each swap tries
-// as movers the particles within `limits.steps` of the widest hole's owner
-// and the two of the closest pair: each is taken out and put at the vertex
-// farthest from the rest among its neighbourhood's regions. The mover kept
-// is the one that leaves the least shortfall (the spacing's under its
-// limit plus the hole's over its limit, each relative), where it lessens
-// the shortfall and makes neither figure worse than it was. The hole is the
-// largest distance of the surface's Voronoi diagram at the vertices
-// (particles/surface_voronoi), whose neighbours are the movers' steps; the
-// spacing is as closest_surface_pair tells it (`surface`, built for `mesh`;
-// `look`, its marches' scratch). Deterministic: ties go to the lowest index.
+// - as movers the particles within `limits.steps` of the widest hole's
+//   owner and the two of the closest pair: each taken out and put at the
+//   vertex farthest from the rest among its neighbourhood's regions;
+// - each of the closest pair carried into the widest hole however far it
+//   is, along a shortest path of neighbours to the hole's owner: each on
+//   the path takes the next one's place, the owner goes into the hole (a
+//   crowd the transfer left on a palm, its hole up an arm).
+// The trial kept is the one that leaves the least shortfall (the spacing's
+// under its limit plus the hole's over its limit, each relative), where it
+// lessens the shortfall, makes the spacing no smaller and the hole no wider
+// than it was or than its limit, whichever is more. The hole is
+// particles/widest_hole's (at points `limits.hole_step` apart), the steps
+// the neighbours of the surface's Voronoi diagram at the vertices
+// (particles/surface_voronoi); the spacing is as closest_surface_pair tells
+// it (`surface`, built for `mesh`; `look`, its marches' scratch).
+// Deterministic: ties go to the lowest index, the local moves before the carried.
 HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& solver, const SurfaceNeighbours& surface,
                                 LookScratch& look, std::vector<SurfaceLocation>& points, const HoleSwapLimits& limits);
 
