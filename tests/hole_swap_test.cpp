@@ -63,35 +63,44 @@ TEST(HoleSwap, ACrowdedParticleGoesIntoTheHoleBesideIt) {
   EXPECT_EQ(moved, 1u);
 }
 
-// A crowd at a corner and a hole in the middle, more than the local
-// swaps' steps apart: a particle of the crowd is carried into the hole,
-// each particle on the way taking the next one's place, so that none moves
-// farther than a neighbour's place (a grid spacing and a half).
+// A crowd at a corner and a hole in the middle, no local swap allowed (no
+// steps): with carrying allowed, a particle of the crowd is carried into
+// the hole, each on the way taking the next one's place, so that none
+// moves farther than a neighbour's place (a grid spacing and a half);
+// without, nothing moves.
 TEST(HoleSwap, ACrowdFarFromTheHoleIsCarriedIntoItStepByStep) {
-  const SurfaceMesh square = square_grid(72);
+  const SurfaceMesh square = square_grid(9);
   const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
   const SurfaceNeighbours surface(square, *solver);
   LookScratch look;
   const double spacing = 1.0 / 9;
-  const std::vector<SurfaceLocation> before = grid_particles(square, true, {{1.0 * spacing, 0.2 * spacing, 0}}, 9);
-  std::vector<SurfaceLocation> after = before;
+  const std::vector<SurfaceLocation> before = grid_particles(square, true, {{0.02, 0.02, 0}}, 9);
   HoleSwapLimits wanted;
   wanted.max_swaps = 8;
-  wanted.spacing = 0.75 * spacing;
-  wanted.cover = 0.8 * spacing;
+  wanted.spacing = 0.95 * spacing;
+  wanted.cover = 2 * spacing;  // only the crowd falls short
   wanted.hole_step = 0.005;
-  const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, look, after, wanted);
-  EXPECT_EQ(outcome.swaps, 1u);
-  EXPECT_GE(outcome.smallest, wanted.spacing);
-  EXPECT_LE(outcome.cover, wanted.cover);
-  std::size_t moved = 0;
-  for (std::size_t i = 0; i < before.size(); ++i) {
-    const double move = distance(before[i].at, after[i].at);
-    if (move == 0) continue;
-    ++moved;
-    EXPECT_LT(move, 1.5 * spacing) << i;
+  wanted.steps = 0;
+  for (const bool carry : {false, true}) {
+    wanted.carry_below = carry ? wanted.spacing : 0;
+    std::vector<SurfaceLocation> after = before;
+    const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, look, after, wanted);
+    if (!carry) {
+      EXPECT_EQ(outcome.swaps, 0u);
+      continue;
+    }
+    EXPECT_EQ(outcome.swaps, 1u);
+    EXPECT_GE(outcome.smallest, wanted.spacing);
+    EXPECT_LT(outcome.cover, 0.85 * spacing);  // the middle, a spacing from the nearest, is filled
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < before.size(); ++i) {
+      const double move = distance(before[i].at, after[i].at);
+      if (move == 0) continue;
+      ++moved;
+      EXPECT_LT(move, 1.5 * spacing) << i;
+    }
+    EXPECT_GE(moved, 4u);  // the corner is four steps or more from the middle
   }
-  EXPECT_GE(moved, 4u);  // the corner is four steps or more from the middle
 }
 
 // A set within both limits is left as it is, and so is any set when no

@@ -89,6 +89,11 @@ constexpr double kGapStallGain = 0.001;
 // the shape's own run's). A crowd left by the transfer grows with n: at
 // n = 1,024 one of FAUST's poses took 90 to part its pairs (rho 0.54 to 0.72).
 constexpr std::size_t kParticlesPerSwap = 8;
+// A crowd is carried into a hole far off only where its pair is closer than
+// this (in the shape's hexagonal spacings; the rho target) and no
+// local swap helps: carried at every chance, FAUST's people at n = 256
+// spread 0.31 / 0.52, not 0.28 / 0.41.
+constexpr double kCarryBelow = 0.7;
 constexpr std::size_t kLeastSwaps = 8;
 constexpr std::size_t kSwapSteps = 2;
 constexpr double kSwapHole = 1.05;
@@ -504,6 +509,7 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
     swap_limits.spacing = options.even_enough * spacings[k];
     swap_limits.cover = kSwapHole * template_hole * spacings[k];
     swap_limits.hole_step = kHeldCoverSampleStep * spacings[k];
+    swap_limits.carry_below = kCarryBelow * spacings[k];
     swap_limits.steps = kSwapSteps;
     const std::size_t swaps = swap_into_holes(mesh, *surface.solver, surface.neighbours, look, shapes[k].at, swap_limits).swaps;
     kept[k] = {share_kept, double(sweeps), double(swaps)};

@@ -203,8 +203,11 @@ HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& s
       std::optional<Trial> trial = swapper.moved(now.points, mover, neighbourhood, now.figures.smallest);
       if (trial) consider(std::move(*trial));
     }
-    // The closest pair's particles carried into the widest hole, however far.
+    // Where no local move helps and the pair is closer than `carry_below`,
+    // its particles carried into the widest hole, however far.
+    const bool carry = !best && now.figures.smallest < limits.carry_below;
     for (const std::uint32_t mover : {now.figures.a, now.figures.b}) {
+      if (!carry) break;
       const std::vector<std::uint32_t> path = shortest_path(neighbours, mover, hole_owner);
       if (!path.empty()) consider(swapper.carried(now.points, path, now.figures.hole.at));
     }

@@ -25,6 +25,10 @@ struct HoleSwapLimits {
   double spacing = 0;  // the smallest spacing wanted (mesh units): a pair closer is a crowd
   double cover = 0;    // the widest hole wanted (mesh units): one wider is a hole
   double hole_step = 0;  // holes are looked for at points about this far apart (mesh units; particles/widest_hole)
+  // A pair closer than this (mesh units) may be carried into a hole far off
+  // where no local move helps: a carried particle's neighbours each move by
+  // a spacing, and particle i then lies elsewhere than on the other shapes.
+  double carry_below = 0;
   // A particle may go only into the regions of the particles within this
   // many steps of it on the surface's neighbour graph (its Voronoi
   // neighbours, theirs, ...): the swap stays local.
@@ -43,10 +47,12 @@ struct HoleSwapOutcome {
 // - as movers the particles within `limits.steps` of the widest hole's
 //   owner and the two of the closest pair: each taken out and put at the
 //   vertex farthest from the rest among its neighbourhood's regions;
-// - each of the closest pair carried into the widest hole however far it
-//   is, along a shortest path of neighbours to the hole's owner: each on
-//   the path takes the next one's place, the owner goes into the hole (a
-//   crowd the transfer left on a palm, its hole up an arm).
+// - where none of those helps and the pair is closer than
+//   `limits.carry_below`, each of the closest pair carried into the widest
+//   hole however far it is, along a shortest path of neighbours to the
+//   hole's owner: each on the path takes the next one's place, the owner
+//   goes into the hole (a crowd the transfer left on a palm, its hole up
+//   an arm).
 // The trial kept is the one that leaves the least shortfall (the spacing's
 // under its limit plus the hole's over its limit, each relative), where it
 // lessens the shortfall, makes the spacing no smaller and the hole no wider
@@ -55,7 +61,7 @@ struct HoleSwapOutcome {
 // the neighbours of the surface's Voronoi diagram at the vertices
 // (particles/surface_voronoi); the spacing is as closest_surface_pair tells
 // it (`surface`, built for `mesh`; `look`, its marches' scratch).
-// Deterministic: ties go to the lowest index, the local moves before the carried.
+// Deterministic: ties go to the lowest index.
 HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& solver, const SurfaceNeighbours& surface,
                                 LookScratch& look, std::vector<SurfaceLocation>& points, const HoleSwapLimits& limits);
 
