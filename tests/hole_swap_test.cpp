@@ -69,7 +69,7 @@ TEST(HoleSwap, ACrowdedParticleGoesIntoTheHoleBesideIt) {
 // moves farther than a neighbour's place (a grid spacing and a half);
 // without, nothing moves.
 TEST(HoleSwap, ACrowdFarFromTheHoleIsCarriedIntoItStepByStep) {
-  const SurfaceMesh square = square_grid(9);
+  const SurfaceMesh square = square_grid(36);
   const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
   const SurfaceNeighbours surface(square, *solver);
   LookScratch look;

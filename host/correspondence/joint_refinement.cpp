@@ -436,7 +436,7 @@ double widest_hole_spacings(const SurfaceMesh& mesh, const std::vector<SurfaceLo
   const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
   SolverScratch scratch;
   const SurfaceVoronoi diagram = surface_voronoi(mesh, *solver, particles, scratch);
-  return widest_hole(mesh, diagram, particles, kHeldCoverSampleStep * spacing).away / spacing;
+  return std::max(widest_hole(mesh, diagram, particles, kHeldCoverSampleStep * spacing).away, diagram.cover()) / spacing;
 }
 
 void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<std::vector<SurfaceLocation>>& transferred,

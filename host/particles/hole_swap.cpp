@@ -21,7 +21,9 @@ constexpr double kLeastGain = 1e-9;
 constexpr double kPairReach = 2;
 
 // A set's two figures: its widest hole (a point of the surface between the
-// vertices too, and its particle) and its closest pair along the surface
+// vertices too, and its particle; its width never under the diagram's at
+// the vertices, which round a curved part read wider than straight lines
+// stretched less the marching's excess) and its closest pair along the surface
 // (and which two those are; 0 and 0 where no pair is within kPairReach
 // spacings: particle 0 is then only one more mover tried).
 struct Figures {
@@ -35,7 +37,7 @@ Figures figures(const SurfaceMesh& mesh, const SurfaceVoronoi& diagram, const st
                 const SurfaceNeighbours& surface, LookScratch& look, const HoleSwapLimits& limits) {
   Figures found;
   found.hole = widest_hole(mesh, diagram, points, limits.hole_step);
-  found.cover = found.hole.away;
+  found.cover = std::max(found.hole.away, diagram.cover());  // never under what the vertices say
   const ClosestPair closest = closest_surface_pair(points, surface, kPairReach * limits.spacing, look);
   found.smallest = closest.spacing;
   found.a = closest.a;
