@@ -87,7 +87,7 @@ constexpr double kGapStallGain = 0.001;
 // shape's closest pair is under even enough or its widest hole over
 // kSwapHole times the template's own run's (the target is 1.15x
 // the shape's own run's). A crowd left by the transfer grows with n: at
-// n = 1,024 one of FAUST's poses took 90 to part its pairs (rho 0.54 to 0.72).
+// n = 1,024 one of FAUST's poses took 98 to part its pairs (rho least 0.54 to 0.70).
 constexpr std::size_t kParticlesPerSwap = 8;
 // A crowd is carried into a hole far off only where its pair is closer than
 // this (in the shape's hexagonal spacings; the rho target) and no
