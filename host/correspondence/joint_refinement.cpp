@@ -89,12 +89,12 @@ constexpr double kGapStallGain = 0.001;
 // the shape's own run's). A crowd left by the transfer grows with n: at
 // n = 1,024 one of FAUST's poses took 98 to part its pairs (rho least 0.54 to 0.70).
 constexpr std::size_t kParticlesPerSwap = 8;
+constexpr std::size_t kLeastSwaps = 8;
 // A crowd is carried into a hole far off only where its pair is closer than
 // this (in the shape's hexagonal spacings; the rho target) and no
 // local swap helps: carried at every chance, FAUST's people at n = 256
 // spread 0.31 / 0.52, not 0.28 / 0.41.
 constexpr double kCarryBelow = 0.7;
-constexpr std::size_t kLeastSwaps = 8;
 constexpr std::size_t kSwapSteps = 2;
 constexpr double kSwapHole = 1.05;
 
