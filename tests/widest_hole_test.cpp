@@ -10,6 +10,7 @@
 
 #include "geodesics/solver_factory.hpp"
 #include "mesh/nearest_surface_point.hpp"
+#include "mesh/vertex_triangles.hpp"
 #include "particles/surface_voronoi.hpp"
 #include "particles/widest_hole.hpp"
 #include "square_grid.hpp"
@@ -37,6 +38,7 @@ double straight_cover(const std::vector<SurfaceLocation>& points, double step) {
 // a sample step of the widest by brute force.
 TEST(WidestHole, OnAPlaneItIsTheStraightCoverBetweenTheVertices) {
   const SurfaceMesh square = square_grid(10);
+  const VertexTriangles rings = vertex_triangles(square.triangles(), square.vertex_count());
   const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
   const NearestSurfacePoint nearest(square);
   std::uint64_t state = 7;
@@ -52,7 +54,7 @@ TEST(WidestHole, OnAPlaneItIsTheStraightCoverBetweenTheVertices) {
     }
     SolverScratch scratch;
     const SurfaceVoronoi diagram = surface_voronoi(square, *solver, points, scratch);
-    const WidestHole hole = widest_hole(square, diagram, points, 0.01);
+    const WidestHole hole = widest_hole(square, rings, diagram, points, 0.01);
     EXPECT_NEAR(hole.away, straight_cover(points, 0.002), 0.006) << set;
     ASSERT_LT(hole.owner, points.size());
     EXPECT_NEAR(distance(hole.at.at, points[hole.owner].at), hole.away, 1e-3) << set;
@@ -65,6 +67,7 @@ TEST(WidestHole, OnAPlaneItIsTheStraightCoverBetweenTheVertices) {
 // every vertex and one at every triangle's centroid).
 TEST(WidestHole, APointOwningNoVertexStillFillsItsHole) {
   const SurfaceMesh square = square_grid(2);
+  const VertexTriangles rings = vertex_triangles(square.triangles(), square.vertex_count());
   const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
   const NearestSurfacePoint nearest(square);
   std::vector<SurfaceLocation> points;
@@ -77,7 +80,7 @@ TEST(WidestHole, APointOwningNoVertexStillFillsItsHole) {
   SolverScratch scratch;
   const SurfaceVoronoi diagram = surface_voronoi(square, *solver, points, scratch);
   for (const std::uint32_t owner : diagram.owner) EXPECT_LT(owner, at_vertices);
-  const WidestHole hole = widest_hole(square, diagram, points, 0.01);
+  const WidestHole hole = widest_hole(square, rings, diagram, points, 0.01);
   EXPECT_NEAR(hole.away, straight_cover(points, 0.002), 0.006);
 }
 

@@ -436,7 +436,8 @@ double widest_hole_spacings(const SurfaceMesh& mesh, const std::vector<SurfaceLo
   const std::unique_ptr<GeodesicSolver> solver = make_geodesic_solver(mesh, GeodesicMethod::fast_marching);
   SolverScratch scratch;
   const SurfaceVoronoi diagram = surface_voronoi(mesh, *solver, particles, scratch);
-  return std::max(widest_hole(mesh, diagram, particles, kHeldCoverSampleStep * spacing).away, diagram.cover()) / spacing;
+  const VertexTriangles rings = vertex_triangles(mesh.triangles(), mesh.vertex_count());
+  return hole_width(widest_hole(mesh, rings, diagram, particles, kHeldCoverSampleStep * spacing), diagram) / spacing;
 }
 
 void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<std::vector<SurfaceLocation>>& transferred,

@@ -87,9 +87,8 @@ void iterate_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles,
 void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, const JointRefinementOptions& options,
                   ShapeShare& share, JointRefinementRecord& record, bool quiet);
 
-// The widest hole `particles` leave on `mesh` (particles/widest_hole, or
-// the diagram at the vertices where that reads wider), in hexagonal
-// spacings, as hold_back_evening's swaps measure each shape's (the
+// The widest hole `particles` leave on `mesh` (particles/widest_hole, as
+// wide as hole_width takes it), in hexagonal spacings, as hold_back_evening's swaps measure each shape's (the
 // template's: what they hold every shape's holes to).
 double widest_hole_spacings(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& particles);
 

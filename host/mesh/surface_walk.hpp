@@ -24,6 +24,8 @@ class SurfaceWalk {
   SurfaceLocation at_vertex(VertexId v) const;
   // The first triangle holding vertex v.
   std::uint32_t first_triangle(VertexId v) const { return around_.around(v).front(); }
+  // The triangles around each vertex.
+  const VertexTriangles& triangles_around() const { return around_; }
   Vec3 normal(std::uint32_t triangle) const { return normals_[triangle]; }  // unit (zero if degenerate)
   // The unit direction of the triangle's first edge (zero if it has no length).
   Vec3 first_edge_direction(std::uint32_t triangle) const {

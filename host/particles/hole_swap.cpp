@@ -21,11 +21,10 @@ constexpr double kLeastGain = 1e-9;
 constexpr double kPairReach = 2;
 
 // A set's two figures: its widest hole (a point of the surface between the
-// vertices too, and its particle; its width never under the diagram's at
-// the vertices, which round a curved part read wider than straight lines
-// stretched less the marching's excess) and its closest pair along the surface
-// (and which two those are; 0 and 0 where no pair is within kPairReach
-// spacings: particle 0 is then only one more mover tried).
+// vertices too, and its particle; its width as hole_width takes it) and its
+// closest pair along the surface (and which two those are; 0 and 0 where no
+// pair is within kPairReach spacings: particle 0 is then only one more
+// mover tried).
 struct Figures {
   double cover = 0;
   WidestHole hole;
@@ -33,11 +32,12 @@ struct Figures {
   std::uint32_t a = 0, b = 0;
 };
 
-Figures figures(const SurfaceMesh& mesh, const SurfaceVoronoi& diagram, const std::vector<SurfaceLocation>& points,
-                const SurfaceNeighbours& surface, LookScratch& look, const HoleSwapLimits& limits) {
+Figures figures(const SurfaceMesh& mesh, const VertexTriangles& rings, const SurfaceVoronoi& diagram,
+                const std::vector<SurfaceLocation>& points, const SurfaceNeighbours& surface, LookScratch& look,
+                const HoleSwapLimits& limits) {
   Figures found;
-  found.hole = widest_hole(mesh, diagram, points, limits.hole_step);
-  found.cover = std::max(found.hole.away, diagram.cover());  // never under what the vertices say
+  found.hole = widest_hole(mesh, rings, diagram, points, limits.hole_step);
+  found.cover = hole_width(found.hole, diagram);
   const ClosestPair closest = closest_surface_pair(points, surface, kPairReach * limits.spacing, look);
   found.smallest = closest.spacing;
   found.a = closest.a;
@@ -110,7 +110,7 @@ class Swapper {
   Trial measured(std::vector<SurfaceLocation> points) {
     Trial trial{std::move(points), {}, {}};
     trial.diagram = surface_voronoi(mesh_, solver_, trial.points, scratch_);
-    trial.figures = figures(mesh_, trial.diagram, trial.points, surface_, look_, limits_);
+    trial.figures = figures(mesh_, walk_.triangles_around(), trial.diagram, trial.points, surface_, look_, limits_);
     return trial;
   }
 

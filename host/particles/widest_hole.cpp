@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "geodesics/point_source_update.hpp"
-#include "mesh/vertex_triangles.hpp"
 
 namespace meshparticles {
 
@@ -111,8 +110,8 @@ PointDistance distance_at(const SurfaceMesh& mesh, const Triangle& corners, cons
 
 }  // namespace
 
-WidestHole widest_hole(const SurfaceMesh& mesh, const SurfaceVoronoi& diagram, std::span<const SurfaceLocation> points,
-                       double step) {
+WidestHole widest_hole(const SurfaceMesh& mesh, const VertexTriangles& rings, const SurfaceVoronoi& diagram,
+                       std::span<const SurfaceLocation> points, double step) {
   const auto& positions = mesh.positions();
   const auto& triangles = mesh.triangles();
   // The room each triangle leaves for a hole: no point of it is measured
@@ -139,7 +138,6 @@ WidestHole widest_hole(const SurfaceMesh& mesh, const SurfaceVoronoi& diagram, s
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return room[a] > room[b] || (room[a] == room[b] && a < b);
   });
-  const VertexTriangles rings = vertex_triangles(triangles, mesh.vertex_count());
   std::vector<std::vector<std::uint32_t>> around(mesh.vertex_count());  // the points in each vertex's triangles
   for (std::uint32_t k = 0; k < points.size(); ++k) {
     for (const VertexId c : triangles[points[k].triangle]) around[c].push_back(k);

@@ -8,11 +8,13 @@
 // holes a fifth of a spacing wider than the vertices showed. Nor does a
 // straight line do (particles/hole_pull): across a finger thinner than a
 // spacing it is far shorter than the way round.
+#include <algorithm>
 #include <cstdint>
 #include <span>
 
 #include "mesh/surface_location.hpp"
 #include "mesh/surface_mesh.hpp"
+#include "mesh/vertex_triangles.hpp"
 #include "particles/surface_voronoi.hpp"
 
 namespace meshparticles {
@@ -23,7 +25,8 @@ struct WidestHole {
   double away = 0;                                 // how far, along the surface
 };
 
-// `diagram` is that of `points`. Sampled at each triangle's points about
+// `diagram` is that of `points`, `rings` the triangles around each of
+// `mesh`'s vertices (mesh/vertex_triangles; SurfaceWalk holds them). Sampled at each triangle's points about
 // `step` apart (a barycentric grid, corners and edges too). A point's
 // distance is the least of: fast marching's update from two corners one
 // point holds (its source unfolded into the triangle's plane,
@@ -37,7 +40,15 @@ struct WidestHole {
 // whose corners leave room for a point farther than the farthest found so
 // far are sampled: a few around each hole. Ties go to the first triangle,
 // then its first point; a diagram of no points has none (away 0).
-WidestHole widest_hole(const SurfaceMesh& mesh, const SurfaceVoronoi& diagram, std::span<const SurfaceLocation> points,
-                       double step);
+WidestHole widest_hole(const SurfaceMesh& mesh, const VertexTriangles& rings, const SurfaceVoronoi& diagram,
+                       std::span<const SurfaceLocation> points, double step);
+
+// How wide a hole is taken to be: `hole`'s width, or the diagram's at the
+// vertices where that reads wider (straight lines stretched less the
+// marching's excess read a curved part's holes short: FAUST's poses with
+// their arms overhead went to cover 1.17x their own run's at n = 512).
+inline double hole_width(const WidestHole& hole, const SurfaceVoronoi& diagram) {
+  return std::max(hole.away, diagram.cover());
+}
 
 }  // namespace meshparticles
