@@ -50,21 +50,42 @@ double shortfall(const Figures& set, const HoleSwapLimits& limits) {
   return std::max(0.0, 1 - set.smallest / limits.spacing) + std::max(0.0, set.cover / limits.cover - 1);
 }
 
-// The particles within `steps` steps of `from` on the neighbour graph, `from` too.
-std::vector<std::uint32_t> within_steps(const std::vector<std::vector<std::uint32_t>>& neighbours, std::uint32_t from,
-                                        std::size_t steps) {
-  std::vector<std::uint32_t> reached{from};
+constexpr std::uint32_t kUnreached = std::numeric_limits<std::uint32_t>::max();
+
+// A breadth-first walk of the neighbour graph from `from`, each ring in
+// index order, out to `steps` steps or until `goal` is reached: the
+// particles reached, in that order, and each one's step back towards
+// `from` (kUnreached for the rest).
+struct Walk {
+  std::vector<std::uint32_t> reached;
+  std::vector<std::uint32_t> back;
+};
+
+Walk walk_from(const std::vector<std::vector<std::uint32_t>>& neighbours, std::uint32_t from, std::size_t steps,
+               std::uint32_t goal = kUnreached) {
+  Walk walk{{from}, std::vector<std::uint32_t>(neighbours.size(), kUnreached)};
+  walk.back[from] = from;
   std::size_t ring_begin = 0;
-  for (std::size_t step = 0; step < steps; ++step) {
-    const std::size_t ring_end = reached.size();
+  for (std::size_t step = 0; step < steps && (goal == kUnreached || walk.back[goal] == kUnreached); ++step) {
+    const std::size_t ring_end = walk.reached.size();
+    if (ring_begin == ring_end) break;
     for (std::size_t k = ring_begin; k < ring_end; ++k) {
-      for (const std::uint32_t next : neighbours[reached[k]]) {
-        if (std::find(reached.begin(), reached.end(), next) == reached.end()) reached.push_back(next);
+      for (const std::uint32_t next : neighbours[walk.reached[k]]) {
+        if (walk.back[next] != kUnreached) continue;
+        walk.back[next] = walk.reached[k];
+        walk.reached.push_back(next);
       }
     }
+    std::sort(walk.reached.begin() + std::ptrdiff_t(ring_end), walk.reached.end());
     ring_begin = ring_end;
   }
-  return reached;
+  return walk;
+}
+
+// The particles within `steps` steps of `from` on the neighbour graph, `from` first.
+std::vector<std::uint32_t> within_steps(const std::vector<std::vector<std::uint32_t>>& neighbours, std::uint32_t from,
+                                        std::size_t steps) {
+  return walk_from(neighbours, from, steps).reached;
 }
 
 // The particles on a shortest path from `from` to `to` on the neighbour
@@ -72,25 +93,10 @@ std::vector<std::uint32_t> within_steps(const std::vector<std::vector<std::uint3
 // lowest index.
 std::vector<std::uint32_t> shortest_path(const std::vector<std::vector<std::uint32_t>>& neighbours, std::uint32_t from,
                                          std::uint32_t to) {
-  constexpr std::uint32_t kUnreached = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> towards(neighbours.size(), kUnreached);  // a reached one's next step to `to`
-  towards[to] = to;
-  std::vector<std::uint32_t> ring{to};
-  while (!ring.empty() && towards[from] == kUnreached) {
-    std::vector<std::uint32_t> next;
-    for (const std::uint32_t k : ring) {
-      for (const std::uint32_t j : neighbours[k]) {
-        if (towards[j] != kUnreached) continue;
-        towards[j] = k;
-        next.push_back(j);
-      }
-    }
-    std::sort(next.begin(), next.end());
-    ring = std::move(next);
-  }
-  if (towards[from] == kUnreached) return {};
+  const Walk walk = walk_from(neighbours, to, neighbours.size(), from);
+  if (walk.back[from] == kUnreached) return {};
   std::vector<std::uint32_t> path{from};
-  while (path.back() != to) path.push_back(towards[path.back()]);
+  while (path.back() != to) path.push_back(walk.back[path.back()]);
   return path;
 }
 
