@@ -213,11 +213,11 @@ HoleSwapOutcome swap_into_holes(const SurfaceMesh& mesh, const GeodesicSolver& s
     }
     // Where no local move helps and the pair is closer than `carry_below`,
     // its particles carried into the widest hole, however far.
-    const bool carry = !best && now.figures.smallest < limits.carry_below;
-    for (const std::uint32_t mover : {now.figures.a, now.figures.b}) {
-      if (!carry) break;
-      const std::vector<std::uint32_t> path = shortest_path(neighbours, mover, hole_owner);
-      if (!path.empty()) consider(swapper.carried(now.points, path, now.figures.hole.at));
+    if (!best && now.figures.smallest < limits.carry_below) {
+      for (const std::uint32_t mover : {now.figures.a, now.figures.b}) {
+        const std::vector<std::uint32_t> path = shortest_path(neighbours, mover, hole_owner);
+        if (!path.empty()) consider(swapper.carried(now.points, path, now.figures.hole.at));
+      }
     }
     if (!best) break;
     now = std::move(*best);
