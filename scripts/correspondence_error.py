@@ -157,6 +157,9 @@ def main():
         turned = max(result["per_shape"], key=lambda shape: shape["turn_degrees"])
         line += f"; most turned: {Path(turned['file']).name}, {turned['turn_degrees']:.0f} degrees"
     print(line)
+    if "between_shapes_root_area" in result:
+        print(f"in the reference's square root of area: {result['from_centroid_root_area']:.4f} from particle i's "
+              f"centroid, {result['between_shapes_root_area']:.4f} between two shapes (mean)")
     if args.json:
         args.json.write_text(json.dumps(result, indent=2) + "\n")
 
