@@ -222,6 +222,35 @@ TEST(Relaxation, SeparatesParticlesOnOnePoint) {
 INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphere.off", "torus.off", "atrium.off"),
                          stem);
 
+// The pushes, the pairs and the covers run on threads in pieces of 256
+// particles (and of vertices): enough particles for several pieces give
+// the same bits on 1, 2 and 8 threads, every round's spacing too.
+TEST(Relaxation, AnyNumberOfThreadsGivesTheSameBits) {
+  const SurfaceMesh mesh = refine_by_midpoints(committed("atrium.off"), 1).mesh;
+  constexpr std::size_t kParticles = 1000;
+  const auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
+  const double d_hex = hexagonal_spacing(mesh.area(), kParticles);
+  const double cover_limit = 1.1 * straight_cover(mesh, start);
+  const auto relax = [&](unsigned threads) {
+    return relax_spacing(mesh, start, d_hex, 40, {cover_limit}, 0, true, 0, true, threads);
+  };
+  const RelaxationOutcome one = relax(1);
+  ASSERT_GT(one.candidates.front().round, 0u);
+  for (const unsigned threads : {2u, 8u}) {
+    const RelaxationOutcome many = relax(threads);
+    EXPECT_EQ(one.round_spacings, many.round_spacings) << threads << " threads";
+    EXPECT_EQ(one.start_cover, many.start_cover) << threads << " threads";
+    EXPECT_EQ(one.candidates.front().cover, many.candidates.front().cover) << threads << " threads";
+    const auto& a = one.candidates.front().points;
+    const auto& b = many.candidates.front().points;
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].triangle, b[i].triangle) << threads << " threads, " << i;
+      EXPECT_EQ(a[i].weights, b[i].weights) << threads << " threads, " << i;
+    }
+  }
+}
+
 // The relaxation stops where it will keep nothing. On turbine at n = 256
 // the even-density rounds squeeze a pair far under the sweeps' straight
 // spacing (0.47 of it: stopped after round 25); on elephant at 256 they do

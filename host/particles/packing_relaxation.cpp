@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
+#include "common/parallel_for.hpp"
 #include "mesh/point_cloud_tree.hpp"
 
 namespace meshparticles {
@@ -69,9 +71,25 @@ std::vector<std::uint32_t> morton_order(const SurfaceMesh& mesh, const std::vect
   return order;
 }
 
+// A piece of the work shared among threads, in particles or pairs: large
+// enough that taking one costs little, small enough to balance two to 64
+// threads at a few thousand particles.
+constexpr std::size_t kPushPieceSize = 256;
+
+std::size_t push_pieces(std::size_t count) { return (count + kPushPieceSize - 1) / kPushPieceSize; }
+
+// work(piece, from, to) for each piece of 0 .. count - 1, on `threads` threads.
+void for_each_push_piece(std::size_t count, unsigned threads,
+                         const std::function<void(std::size_t, std::size_t, std::size_t)>& work) {
+  for_each_with_slot(push_pieces(count), threads, [&](std::size_t piece, unsigned) {
+    work(piece, piece * kPushPieceSize, std::min(count, (piece + 1) * kPushPieceSize));
+  });
+}
+
 }  // namespace
 
-PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start) : walk_(mesh) {
+PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start, unsigned threads)
+    : walk_(mesh), threads_(std::max(1u, threads)) {
   std::vector<SurfaceLocation> locations;
   for (const VertexId v : start) {
     SurfaceLocation location;
@@ -82,7 +100,9 @@ PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<
   hold(mesh, locations);
 }
 
-PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start) : walk_(mesh) {
+PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start,
+                                     unsigned threads)
+    : walk_(mesh), threads_(std::max(1u, threads)) {
   hold(mesh, start);
 }
 
@@ -103,13 +123,21 @@ void PackingRelaxation::hold(const SurfaceMesh& mesh, const std::vector<SurfaceL
 
 double PackingRelaxation::smallest_spacing(double reach) {
   if (!(moved_ * 2 < (reach_ - reach))) build_neighbours(std::max(reach, reach_));
-  double smallest = std::numeric_limits<double>::infinity();
-  for (const auto& [i, j] : pairs_) smallest = std::min(smallest, distance(particles_[i].at, particles_[j].at));
-  return smallest;
+  std::vector<double> smallest(push_pieces(pairs_.size()), std::numeric_limits<double>::infinity());
+  for_each_push_piece(pairs_.size(), threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) {
+      const auto [i, j] = pairs_[k];
+      smallest[piece] = std::min(smallest[piece], distance(particles_[i].at, particles_[j].at));
+    }
+  });
+  return smallest.empty() ? std::numeric_limits<double>::infinity()
+                          : *std::min_element(smallest.begin(), smallest.end());
 }
 
 bool PackingRelaxation::push(double radius, const std::vector<Vec3>& nudge) {
   if (!(moved_ * 2 < reach_ - radius)) build_neighbours(kNeighbourReach * radius);
+  // Each particle's push, summed over the pairs in their order on this
+  // thread (a few percent of a push; the moves below are most of it).
   std::vector<Vec3> shift(particles_.size());
   bool any = false;
   for (const auto& [i, j] : pairs_) {
@@ -126,26 +154,28 @@ bool PackingRelaxation::push(double radius, const std::vector<Vec3>& nudge) {
     any = true;
   }
   if (!any && nudge.empty()) return false;
-  double largest = 0;
-  for (std::size_t i = 0; i < particles_.size(); ++i) {
-    Particle& p = particles_[i];
-    const Vec3 n = walk_.normal(p.triangle);
-    Vec3 step = kStepShare * shift[i] + kMomentum * p.velocity;
-    if (!nudge.empty()) step = step + nudge[order_[i]];
-    step = step - dot(step, n) * n;
-    const double length = norm(step);
-    if (length > radius / 4) step = (radius / 4 / length) * step;  // no jump past a neighbour
-    p.velocity = step;
-    if (length > 0) {
-      const SurfaceLocation moved = walk_.walk(p.triangle, p.at + step);
-      p.triangle = moved.triangle;
-      p.at = moved.at;
+  std::vector<double> largest(push_pieces(particles_.size()), 0.0);
+  for_each_push_piece(particles_.size(), threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) {
+      Particle& p = particles_[i];
+      const Vec3 n = walk_.normal(p.triangle);
+      Vec3 step = kStepShare * shift[i] + kMomentum * p.velocity;
+      if (!nudge.empty()) step = step + nudge[order_[i]];
+      step = step - dot(step, n) * n;
+      const double length = norm(step);
+      if (length > radius / 4) step = (radius / 4 / length) * step;  // no jump past a neighbour
+      p.velocity = step;
+      if (length > 0) {
+        const SurfaceLocation moved = walk_.walk(p.triangle, p.at + step);
+        p.triangle = moved.triangle;
+        p.at = moved.at;
+      }
+      // Every particle's, moved this push or not: one that moved earlier
+      // and stopped may still be the farthest from where the pairs were found.
+      largest[piece] = std::max(largest[piece], distance(p.at, at_build_[i]));
     }
-    // Every particle's, moved this push or not: one that moved earlier
-    // and stopped may still be the farthest from where the pairs were found.
-    largest = std::max(largest, distance(p.at, at_build_[i]));
-  }
-  moved_ = largest;
+  });
+  moved_ = largest.empty() ? 0.0 : *std::max_element(largest.begin(), largest.end());
   return any;
 }
 
@@ -181,20 +211,24 @@ void PackingRelaxation::build_neighbours(double reach) {
   const std::vector<Vec3> at = positions();
   const PointCloud cloud{at};
   const PointCloudTree tree(3, cloud);
-  pairs_.clear();
-  std::vector<std::pair<std::uint32_t, double>> near;
-  const nanoflann::SearchParams unsorted(32, 0.0f, false);
-  for (std::uint32_t i = 0; i < at.size(); ++i) {
-    const double query[3] = {at[i].x, at[i].y, at[i].z};
-    tree.radiusSearch(query, reach * reach, near, unsorted);
-    std::sort(near.begin(), near.end());
-    const Vec3 ni = walk_.normal(particles_[i].triangle);
-    for (const auto& [j, squared] : near) {
-      if (j <= i) continue;
-      if (dot(ni, walk_.normal(particles_[j].triangle)) < kFacingCosine) continue;
-      pairs_.emplace_back(i, j);
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(push_pieces(at.size()));
+  for_each_push_piece(at.size(), threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
+    std::vector<std::pair<std::uint32_t, double>> near;
+    const nanoflann::SearchParams unsorted(32, 0.0f, false);
+    for (std::uint32_t i = std::uint32_t(from); i < to; ++i) {
+      const double query[3] = {at[i].x, at[i].y, at[i].z};
+      tree.radiusSearch(query, reach * reach, near, unsorted);
+      std::sort(near.begin(), near.end());
+      const Vec3 ni = walk_.normal(particles_[i].triangle);
+      for (const auto& [j, squared] : near) {
+        if (j <= i) continue;
+        if (dot(ni, walk_.normal(particles_[j].triangle)) < kFacingCosine) continue;
+        found[piece].emplace_back(i, j);
+      }
     }
-  }
+  });
+  pairs_.clear();
+  for (const auto& piece : found) pairs_.insert(pairs_.end(), piece.begin(), piece.end());
   reach_ = reach;
   moved_ = 0;
   at_build_ = at;

@@ -31,9 +31,12 @@ class PackingRelaxation {
   // each other (opposite sides of a thin sheet, 120 degrees and more apart).
   static constexpr double kFacingCosine = -0.5;
 
-  // Particles on the vertices `start`, or at surface points.
-  PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start);
-  PackingRelaxation(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start);
+  // Particles on the vertices `start`, or at surface points. Each push's
+  // moves, the smallest spacing and the rebuilds of the pairs run on
+  // `threads` threads in fixed pieces; the pushes are summed over the pairs
+  // in their order on the calling thread: the same bits for any number.
+  PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start, unsigned threads = 1);
+  PackingRelaxation(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start, unsigned threads = 1);
 
   // The smallest spacing over facing pairs within `reach` (infinite where none).
   double smallest_spacing(double reach);
@@ -69,7 +72,8 @@ class PackingRelaxation {
   SurfaceWalk walk_;
   std::vector<std::uint32_t> order_;  // held particle k is the caller's particle order_[k]
   std::vector<Particle> particles_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
+  unsigned threads_ = 1;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  // i < j, in index order
   double reach_ = 0;  // of the pairs
   double moved_ = 0;  // the farthest any particle is from where it was when the pairs were found
   // (the pairs hold every pair closer than reach_ - 2 moved_)

@@ -82,11 +82,12 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 // kHopelessAfter rounds, or none has come yet and the even-density rounds
 // squeezed a pair far under the start's spacing (squeezed) or the growing
 // radius could not pass it by then (out_of_reach; neither where not
-// `stop_early`, which tests use to see the rounds they skip). Deterministic:
-// the same mesh and start give the same bits. Unless `quiet`, a progress line.
+// `stop_early`, which tests use to see the rounds they skip). On `threads`
+// threads (0: every core). Deterministic: the same mesh and start give the
+// same bits, whatever the threads. Unless `quiet`, a progress line.
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
                                 std::size_t max_rounds, const std::vector<double>& cover_limits,
                                 double start_geodesic_cover, bool quiet, double start_geodesic_spacing = 0,
-                                bool stop_early = true);
+                                bool stop_early = true, unsigned threads = 1);
 
 }  // namespace meshparticles

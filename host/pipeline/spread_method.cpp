@@ -228,7 +228,8 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
     // set, decided before the first round, not after the last.
     const double swept_spacing = details.sweeps.empty() ? 0.0 : details.sweeps.back().min_spacing;
     return relax_spacing(surface, swept_positions, d_hex, relax_rounds,
-                         {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet, swept_spacing);
+                         {cover_limit, cover_limit / kStraightCoverMargin}, swept_cover, request.quiet, swept_spacing,
+                         /*stop_early=*/true, request.distances.geodesics.threads);
   });
   RelaxationOutcome& relaxation = details.relaxation;
   std::vector<float> kept_to_nearest;  // the kept candidate's, for the measurement
