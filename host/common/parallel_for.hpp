@@ -42,6 +42,22 @@ inline void for_each_with_slot(std::size_t count, unsigned threads,
   if (failure) std::rethrow_exception(failure);
 }
 
+// How many pieces of `piece_size` indices 0 .. count - 1 is cut into.
+inline std::size_t piece_count(std::size_t count, std::size_t piece_size) {
+  return (count + piece_size - 1) / piece_size;
+}
+
+// Runs work(piece, from, to) for each piece of `piece_size` consecutive
+// indices of 0 .. count - 1 (the last may be shorter) on at most `threads`
+// threads. The pieces do not depend on the threads: results kept per piece
+// and combined in piece order are the same for any number of them.
+inline void for_each_piece(std::size_t count, std::size_t piece_size, unsigned threads,
+                           const std::function<void(std::size_t, std::size_t, std::size_t)>& work) {
+  for_each_with_slot(piece_count(count, piece_size), threads, [&](std::size_t piece, unsigned) {
+    work(piece, piece * piece_size, std::min(count, (piece + 1) * piece_size));
+  });
+}
+
 // Runs work(k) for every k of `indices` as for_each_with_slot does.
 inline void for_each_index(const std::vector<std::size_t>& indices, unsigned threads,
                            const std::function<void(std::size_t)>& work) {

@@ -5,12 +5,16 @@
 // way out ends the program (std::terminate). Here a refused thread ends the
 // starting, the caller does the shares that did not start, and every thread
 // that did start is joined however the scope ends.
+#include <algorithm>
 #include <functional>
 #include <system_error>
 #include <thread>
 #include <vector>
 
 namespace meshparticles {
+
+// `threads`, or every core where it is 0 (what --threads 0 asks for).
+inline unsigned cores_or(unsigned threads) { return threads ? threads : std::max(1u, std::thread::hardware_concurrency()); }
 
 class WorkerThreads {
  public:

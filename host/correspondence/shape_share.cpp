@@ -3,15 +3,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdlib>
-#include <thread>
+
+#include "common/worker_threads.hpp"
 
 namespace meshparticles {
-
-namespace {
-
-unsigned cores_or(unsigned threads) { return threads ? threads : std::max(1u, std::thread::hardware_concurrency()); }
-
-}  // namespace
 
 ShapeShare::ShapeShare(std::size_t shapes, unsigned threads) : ShapeShare(shapes, 0, 1, threads) {}
 

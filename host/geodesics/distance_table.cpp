@@ -73,7 +73,7 @@ DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, 
       done = n;
     }
   };
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = cores_or(threads);
   threads = unsigned(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
 
   ProgressLine progress("geodesics (" + method_name(method) + ", " + std::to_string(threads) + " threads)", n, quiet);

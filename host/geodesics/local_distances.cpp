@@ -7,7 +7,6 @@
 #include <condition_variable>
 #include <exception>
 #include <limits>
-#include <thread>
 
 #include "common/elapsed.hpp"
 #include "common/progress.hpp"
@@ -195,7 +194,7 @@ LocalDistances::Solved LocalDistances::solve_now(std::span<const VertexId> verti
 }
 
 unsigned LocalDistances::threads() const {
-  return settings_.threads ? settings_.threads : std::max(1u, std::thread::hardware_concurrency());
+  return cores_or(settings_.threads);
 }
 
 void LocalDistances::request(std::span<const VertexId> vertices) const {

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include "common/elapsed.hpp"
 #include "common/parallel_for.hpp"
@@ -573,7 +572,7 @@ class Evening {
 
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
                         const EveningLimits& limits, unsigned threads, bool quiet, DeviceSurfaceVoronoi* device) {
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = cores_or(threads);
   // Each thread marches with scratch arrays over the whole mesh: no more
   // threads than a quarter of the usable memory holds (--threads 1024 on
   // a working mesh of 4M vertices would ask 70 GB).

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 
 #include "common/parallel_for.hpp"
@@ -74,17 +73,7 @@ std::vector<std::uint32_t> morton_order(const SurfaceMesh& mesh, const std::vect
 // A piece of the work shared among threads, in particles or pairs: large
 // enough that taking one costs little, small enough to balance two to 64
 // threads at a few thousand particles.
-constexpr std::size_t kPushPieceSize = 256;
-
-std::size_t push_pieces(std::size_t count) { return (count + kPushPieceSize - 1) / kPushPieceSize; }
-
-// work(piece, from, to) for each piece of 0 .. count - 1, on `threads` threads.
-void for_each_push_piece(std::size_t count, unsigned threads,
-                         const std::function<void(std::size_t, std::size_t, std::size_t)>& work) {
-  for_each_with_slot(push_pieces(count), threads, [&](std::size_t piece, unsigned) {
-    work(piece, piece * kPushPieceSize, std::min(count, (piece + 1) * kPushPieceSize));
-  });
-}
+constexpr std::size_t kPushPiece = 256;
 
 }  // namespace
 
@@ -123,8 +112,8 @@ void PackingRelaxation::hold(const SurfaceMesh& mesh, const std::vector<SurfaceL
 
 double PackingRelaxation::smallest_spacing(double reach) {
   if (!(moved_ * 2 < (reach_ - reach))) build_neighbours(std::max(reach, reach_));
-  std::vector<double> smallest(push_pieces(pairs_.size()), std::numeric_limits<double>::infinity());
-  for_each_push_piece(pairs_.size(), threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
+  std::vector<double> smallest(piece_count(pairs_.size(), kPushPiece), std::numeric_limits<double>::infinity());
+  for_each_piece(pairs_.size(), kPushPiece, threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
       const auto [i, j] = pairs_[k];
       smallest[piece] = std::min(smallest[piece], distance(particles_[i].at, particles_[j].at));
@@ -154,8 +143,8 @@ bool PackingRelaxation::push(double radius, const std::vector<Vec3>& nudge) {
     any = true;
   }
   if (!any && nudge.empty()) return false;
-  std::vector<double> largest(push_pieces(particles_.size()), 0.0);
-  for_each_push_piece(particles_.size(), threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
+  std::vector<double> largest(piece_count(particles_.size(), kPushPiece), 0.0);
+  for_each_piece(particles_.size(), kPushPiece, threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
     for (std::size_t i = from; i < to; ++i) {
       Particle& p = particles_[i];
       const Vec3 n = walk_.normal(p.triangle);
@@ -211,8 +200,8 @@ void PackingRelaxation::build_neighbours(double reach) {
   const std::vector<Vec3> at = positions();
   const PointCloud cloud{at};
   const PointCloudTree tree(3, cloud);
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(push_pieces(at.size()));
-  for_each_push_piece(at.size(), threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(piece_count(at.size(), kPushPiece));
+  for_each_piece(at.size(), kPushPiece, threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
     std::vector<std::pair<std::uint32_t, double>> near;
     const nanoflann::SearchParams unsorted(32, 0.0f, false);
     for (std::uint32_t i = std::uint32_t(from); i < to; ++i) {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <thread>
 
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
@@ -89,13 +88,11 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& vertex_n
   };
   // The vertices in pieces, each piece's largest: the largest of all, whatever the threads.
   constexpr std::size_t kCoverPiece = 4096;
-  const std::size_t vertices = mesh.vertex_count();
-  std::vector<double> cover((vertices + kCoverPiece - 1) / kCoverPiece, 0.0);
-  for_each_with_slot(cover.size(), threads, [&](std::size_t piece, unsigned) {
+  std::vector<double> cover(piece_count(mesh.vertex_count(), kCoverPiece), 0.0);
+  for_each_piece(mesh.vertex_count(), kCoverPiece, threads, [&](std::size_t piece, std::size_t from, std::size_t to) {
     std::uint32_t nearest[kNearest];
     double squared[kNearest];
-    const std::size_t end = std::min(vertices, (piece + 1) * kCoverPiece);
-    for (VertexId v = VertexId(piece * kCoverPiece); v < end; ++v) {
+    for (VertexId v = VertexId(from); v < to; ++v) {
       const double query[3] = {positions[v].x, positions[v].y, positions[v].z};
       tree.knnSearch(query, 1, nearest, squared);
       double to_nearest = std::sqrt(squared[0]);
@@ -143,7 +140,7 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
                                 double start_geodesic_cover, bool quiet, double start_geodesic_spacing,
                                 bool stop_early, unsigned threads) {
   const auto started = std::chrono::steady_clock::now();
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = cores_or(threads);
   PackingRelaxation relaxation(mesh, start, threads);
   RelaxationOutcome outcome;
   const double reach = 2 * d_hex;
