@@ -88,12 +88,12 @@ def spread(population, folder, files):
         off_map = max(off_map, float(distance.max()))
     places = stacked(places)
     n = places.shape[1]
-    spacing = math.sqrt(2 * area(reference_points, reference_triangles) / (math.sqrt(3) * n))
+    root_area = math.sqrt(area(reference_points, reference_triangles))
+    spacing = root_area * math.sqrt(2 / (math.sqrt(3) * n))
     offset = np.linalg.norm(places - places.mean(axis=0), axis=2) / spacing
     per_particle = offset.mean(axis=0)
     # What papers publish: the mean error between two shapes (geodesic there, straight here) over
     # √A; about 1.4 times the mean distance from the centroid for errors independent per shape.
-    root_area = math.sqrt(area(reference_points, reference_triangles))
     apart = [np.linalg.norm(places[a] - places[b], axis=1).mean()
              for a in range(len(places)) for b in range(a + 1, len(places))]
     return {"shapes": len(files), "particles": n, "median": float(np.median(per_particle)),
