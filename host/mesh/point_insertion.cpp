@@ -24,14 +24,12 @@ class Inserter {
       : input_(input),
         input_around_(vertex_triangles(input.triangles(), input.vertex_count())),
         original_(mesh.mesh.triangles()),
+        original_around_(vertex_triangles(original_, mesh.mesh.vertex_count())),
         positions_(mesh.mesh.positions()),
         triangles_(mesh.mesh.triangles()),
         on_input_(mesh.on_input),
         origin_(triangles_.size()) {
-    for (std::uint32_t t = 0; t < triangles_.size(); ++t) {
-      origin_[t] = t;
-      for (int k = 0; k < 3; ++k) edges_[edge_key(triangles_[t][k], triangles_[t][(k + 1) % 3])].push_back(t);
-    }
+    for (std::uint32_t t = 0; t < triangles_.size(); ++t) origin_[t] = t;
   }
 
   VertexId insert(const SurfaceLocation& point, double snap) {
@@ -132,15 +130,29 @@ class Inserter {
     entry->second.push_back(piece);
     origin_.push_back(origin_[of]);
   }
+  // The triangles holding edge a-b now, in the order of its list. An edge
+  // is listed here the first time an insertion reads or changes it, from
+  // the mesh's own triangles (in increasing order), which no insertion has
+  // changed around it before: the few edges a run's points touch, not the
+  // millions of a fine working mesh.
+  std::vector<std::uint32_t>& holding(VertexId a, VertexId b) {
+    const auto [entry, created] = edges_.try_emplace(edge_key(a, b));
+    const auto original_vertices = original_around_.offsets.size() - 1;
+    if (created && a < original_vertices && b < original_vertices) {
+      for (const std::uint32_t t : original_around_.around(a)) {
+        if (std::find(original_[t].begin(), original_[t].end(), b) != original_[t].end()) entry->second.push_back(t);
+      }
+    }
+    return entry->second;
+  }
   void replace_on_edge(VertexId a, VertexId b, std::uint32_t old_triangle, std::uint32_t new_triangle) {
-    auto& list = edges_[edge_key(a, b)];
+    auto& list = holding(a, b);
     std::replace(list.begin(), list.end(), old_triangle, new_triangle);
   }
 
   VertexId split_edge(VertexId a, VertexId b, double along) {
     const VertexId p = new_vertex({a, b, a}, {1 - along, along, 0});
-    const std::vector<std::uint32_t> sharing = edges_[edge_key(a, b)];
-    edges_.erase(edge_key(a, b));
+    const std::vector<std::uint32_t> sharing = std::exchange(holding(a, b), {});  // gone: split
     for (const std::uint32_t s : sharing) {
       const Triangle t = triangles_[s];
       int i = 0;
@@ -151,10 +163,10 @@ class Inserter {
       triangles_.push_back({p, to, opposite});
       add_piece(s, added);
       replace_on_edge(to, opposite, s, added);
-      edges_[edge_key(from, p)].push_back(s);
-      edges_[edge_key(p, to)].push_back(added);
-      edges_[edge_key(p, opposite)].push_back(s);
-      edges_[edge_key(p, opposite)].push_back(added);
+      holding(from, p).push_back(s);
+      holding(p, to).push_back(added);
+      holding(p, opposite).push_back(s);
+      holding(p, opposite).push_back(added);
     }
     return p;
   }
@@ -170,21 +182,22 @@ class Inserter {
     add_piece(u, third);
     replace_on_edge(t[1], t[2], u, second);
     replace_on_edge(t[2], t[0], u, third);
-    edges_[edge_key(t[0], p)] = {u, third};
-    edges_[edge_key(t[1], p)] = {u, second};
-    edges_[edge_key(t[2], p)] = {second, third};
+    holding(t[0], p) = {u, third};
+    holding(t[1], p) = {u, second};
+    holding(t[2], p) = {second, third};
     return p;
   }
 
   const SurfaceMesh& input_;
   const VertexTriangles input_around_;
   const std::vector<Triangle>& original_;
+  const VertexTriangles original_around_;
   std::vector<Vec3> positions_;
   std::vector<Triangle> triangles_;
   std::vector<SurfaceLocation> on_input_;
   std::vector<std::uint32_t> origin_;  // per triangle: the triangle of the mesh it is a piece of
   std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> pieces_;  // split triangles: their pieces
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edges_;   // edge: the triangles holding it
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edges_;   // edges touched: the triangles holding each
 };
 
 }  // namespace
