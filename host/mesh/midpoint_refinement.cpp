@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <functional>
-#include <unordered_map>
+
+#include "mesh/vertex_triangles.hpp"
 
 namespace meshparticles {
 
@@ -45,10 +46,6 @@ struct Piece {
   std::array<Weights, 3> weights;  // per corner
 };
 
-std::uint64_t split_edge_key(VertexId a, VertexId b) {
-  return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-}
-
 // The input cut into pieces, round after round: each round splits the
 // edges it is told to at their midpoints, and each piece with one, two or
 // three split edges into two, three or four (a conforming mesh, since
@@ -68,25 +65,22 @@ class Refiner {
   const std::vector<Vec3>& positions() const { return positions_; }
 
   // The distinct edges of the pieces for which `split` holds.
-  std::size_t count_edges(const std::function<bool(VertexId, VertexId)>& split) const {
-    std::unordered_map<std::uint64_t, bool> seen;
-    seen.reserve(pieces_.size() * 3 / 2 + 1);
+  std::size_t count_edges(const std::function<bool(VertexId, VertexId)>& split) {
+    const std::vector<std::uint32_t>& first = first_slots();
     std::size_t count = 0;
-    for (const Piece& piece : pieces_) {
-      for (int k = 0; k < 3; ++k) {
-        const VertexId a = piece.corners[(k + 1) % 3], b = piece.corners[(k + 2) % 3];
-        if (seen.try_emplace(split_edge_key(a, b), true).second && split(a, b)) ++count;
-      }
+    for (std::uint32_t slot = 0; slot < first.size(); ++slot) {
+      if (first[slot] == slot && split(edge_start(slot), edge_end(slot))) ++count;
     }
     return count;
   }
 
   void split_round(const std::function<bool(VertexId, VertexId)>& split) {
-    std::unordered_map<std::uint64_t, VertexId> midpoint_of_edge;
-    midpoint_of_edge.reserve(pieces_.size() * 3 / 2 + 1);
+    const std::vector<std::uint32_t>& first = first_slots();
+    std::vector<VertexId> midpoint_at(first.size());  // per slot whose edge is split
     std::vector<Piece> finer;
     finer.reserve(pieces_.size() * 4);
-    for (const Piece& piece : pieces_) {
+    for (std::uint32_t i = 0; i < pieces_.size(); ++i) {
+      const Piece& piece = pieces_[i];
       // The midpoint of the edge opposite corner k, if that edge is split.
       std::array<VertexId, 3> mid{};
       std::array<Weights, 3> mid_weights{};
@@ -96,11 +90,13 @@ class Refiner {
         cut[k] = split(piece.corners[a], piece.corners[b]);
         if (!cut[k]) continue;
         for (int c = 0; c < 3; ++c) mid_weights[k][c] = 0.5 * (piece.weights[a][c] + piece.weights[b][c]);
-        mid[k] = midpoint(piece, piece.corners[a], piece.corners[b], mid_weights[k], midpoint_of_edge);
+        const std::uint32_t slot = 3 * i + k;
+        mid[k] = midpoint_at[slot] = first[slot] == slot ? midpoint(piece, mid_weights[k]) : midpoint_at[first[slot]];
       }
       cut_piece(piece, cut, mid, mid_weights, finer);
     }
     pieces_.swap(finer);
+    first_slot_.clear();
   }
 
   RefinedMesh finish(unsigned rounds) {
@@ -110,17 +106,45 @@ class Refiner {
   }
 
  private:
-  VertexId midpoint(const Piece& piece, VertexId a, VertexId b, const Weights& weights,
-                    std::unordered_map<std::uint64_t, VertexId>& midpoint_of_edge) {
-    const auto [it, created] = midpoint_of_edge.try_emplace(split_edge_key(a, b), VertexId(positions_.size()));
-    if (!created) return it->second;
+  // An edge of the pieces is named by a slot, 3 x piece + the corner
+  // opposite it. The edge's first slot (the first piece holding it, as
+  // pieces are visited in order) decides for it and makes its midpoint.
+  VertexId edge_start(std::uint32_t slot) const { return pieces_[slot / 3].corners[(slot % 3 + 1) % 3]; }
+  VertexId edge_end(std::uint32_t slot) const { return pieces_[slot / 3].corners[(slot % 3 + 2) % 3]; }
+
+  // Per slot, its edge's first slot: the first piece around one end that
+  // holds the other (pieces around a vertex in increasing order), not a map
+  // of the millions of edges of a fine mesh.
+  const std::vector<std::uint32_t>& first_slots() {
+    if (!first_slot_.empty() || pieces_.empty()) return first_slot_;
+    std::vector<Triangle> corners(pieces_.size());
+    std::transform(pieces_.begin(), pieces_.end(), corners.begin(), [](const Piece& p) { return p.corners; });
+    const VertexTriangles around = vertex_triangles(corners, positions_.size());
+    first_slot_.resize(3 * pieces_.size());
+    for (std::uint32_t slot = 0; slot < first_slot_.size(); ++slot) {
+      const VertexId a = edge_start(slot), b = edge_end(slot);
+      for (const std::uint32_t t : around.around(a)) {
+        const Triangle& c = corners[t];
+        const auto at = std::find(c.begin(), c.end(), b) - c.begin();
+        if (at == 3) continue;
+        // The corner of piece t that is neither end.
+        const auto opposite = 3 - at - (std::find(c.begin(), c.end(), a) - c.begin());
+        first_slot_[slot] = 3 * t + std::uint32_t(opposite);
+        break;
+      }
+    }
+    return first_slot_;
+  }
+
+  // A new vertex at `weights` of the input triangle `piece` lies in.
+  VertexId midpoint(const Piece& piece, const Weights& weights) {
     // Placed by its weights, so that position and weights agree exactly.
     const Triangle& corners = input_.triangles()[piece.input_triangle];
     Vec3 at{0, 0, 0};
     for (int c = 0; c < 3; ++c) at = at + weights[c] * input_.positions()[corners[c]];
     positions_.push_back(at);
     on_input_.push_back({piece.input_triangle, weights, at});
-    return it->second;
+    return VertexId(positions_.size() - 1);
   }
 
   // The pieces of `piece` once the edges marked in `cut` are split; every
@@ -168,6 +192,7 @@ class Refiner {
   std::vector<Vec3> positions_;
   std::vector<SurfaceLocation> on_input_;
   std::vector<Piece> pieces_;
+  std::vector<std::uint32_t> first_slot_;  // of pieces_ (empty: not found yet)
 };
 
 }  // namespace
