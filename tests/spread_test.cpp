@@ -217,6 +217,12 @@ TEST_P(SpreadImproves, OnTheFarthestStart) {
   for (std::size_t k = 1; k < spread.sweeps.size(); ++k) {
     EXPECT_GE(spread.sweeps[k].min_spacing, (1 - 1e-2) * spread.sweeps[k - 1].min_spacing) << "sweep " << k;
   }
+  // Every particle decides in the first sweep; a later one asks only those
+  // whose surroundings changed, so the last asks fewer than all.
+  ASSERT_GE(spread.sweeps.size(), 3u);
+  EXPECT_EQ(spread.sweeps.front().visited, kParticles);
+  EXPECT_LT(spread.sweeps.back().visited, kParticles / 2);
+  for (const SweepRecord& sweep : spread.sweeps) EXPECT_LE(sweep.moved, sweep.visited);
   const SpreadOutcome again = optimize_farthest_points(working.mesh, *solver, start, 100, min_gain, stall_gain, true);
   EXPECT_EQ(again.positions, spread.positions);
 }

@@ -3,7 +3,8 @@
 // optimized point sets with maximized minimum distance", 2011) on the
 // vertices of a mesh: each particle in turn is taken away and put back on
 // the vertex farthest from all the others, if that is farther from them
-// than where it was. A sweep visits every particle once, in index order.
+// than where it was. A sweep visits the particles in index order (after
+// the first, only those whose surroundings changed: see the .cpp).
 // A mover lands farther from every other particle than it was from its
 // nearest, so the smallest spacing of the set never shrinks while the
 // close pairs are pulled apart: the particles spread evenly, which is what
@@ -18,6 +19,7 @@
 namespace meshparticles {
 
 struct SweepRecord {
+  std::size_t visited = 0;  // the particles that decided again (see optimize_farthest_points)
   std::size_t moved = 0;
   double ms = 0;
   // Each particle's distance to its nearest other particle when it decided

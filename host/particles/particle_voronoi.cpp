@@ -27,13 +27,18 @@ std::optional<VertexId> ParticleVoronoi::vertex_of(std::uint32_t particle) const
 void ParticleVoronoi::assign(std::span<const VertexId> vertices, std::span<const std::uint32_t> owners) {
   for (std::size_t k = 0; k < vertices.size(); ++k) {
     const VertexId v = vertices[k];
-    if (owner_[v] != kNoParticle) --region_size_[owner_[v]];
+    if (owner_[v] != kNoParticle) {
+      --region_size_[owner_[v]];
+      reshaped_.push_back(owner_[v]);
+    }
     owner_[v] = owners[k];
     ++region_size_[owners[k]];
+    reshaped_.push_back(owners[k]);
   }
 }
 
 void ParticleVoronoi::insert(std::uint32_t particle, VertexId v) {
+  reshaped_.clear();
   vertex_[particle] = v;
   solver_.lower_nearest(v, nearest_, scratch_, lowered_);
   lowered_owners_.assign(lowered_.size(), particle);
@@ -70,6 +75,7 @@ std::vector<VertexId> ParticleVoronoi::region_of(std::uint32_t particle, VertexI
 }
 
 void ParticleVoronoi::remove(std::uint32_t particle) {
+  reshaped_.clear();
   const VertexId at = vertex_[particle];
   const std::vector<VertexId> region = region_of(particle, at);
   for (const VertexId v : region) {

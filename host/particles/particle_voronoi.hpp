@@ -46,6 +46,9 @@ class ParticleVoronoi {
   std::optional<VertexId> farthest() const { return farthest_.farthest(); }
   // The vertices a present particle owns, its vertex first.
   std::vector<VertexId> region(std::uint32_t particle) { return region_of(particle, vertex_[particle]); }
+  // The particles whose regions the last insert or remove changed (gained
+  // or lost vertices), with repeats.
+  std::span<const std::uint32_t> reshaped() const { return reshaped_; }
 
  private:
   std::vector<VertexId> region_of(std::uint32_t particle, VertexId at);
@@ -61,7 +64,7 @@ class ParticleVoronoi {
   FarthestVertex farthest_;
   SolverScratch scratch_;
   std::vector<VertexId> lowered_, rim_;
-  std::vector<std::uint32_t> lowered_owners_, rim_owners_;
+  std::vector<std::uint32_t> lowered_owners_, rim_owners_, reshaped_;
 };
 
 }  // namespace meshparticles

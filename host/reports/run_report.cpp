@@ -116,7 +116,8 @@ nlohmann::json seconds_json(const RunTimes& seconds) {
 nlohmann::json sweeps_json(const std::vector<SweepRecord>& sweeps, double d_hex) {
   nlohmann::json records = nlohmann::json::array();
   for (const SweepRecord& sweep : sweeps) {
-    records.push_back({{"moved", sweep.moved},
+    records.push_back({{"visited", sweep.visited},
+                       {"moved", sweep.moved},
                        {"ms", sweep.ms},
                        {"min_spacing", sweep.min_spacing / d_hex},
                        {"mean_spacing", sweep.mean_spacing / d_hex}});
