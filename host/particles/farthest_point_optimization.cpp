@@ -26,7 +26,7 @@ std::uint64_t positions_hash(const std::vector<VertexId>& positions) {
 
 SpreadOutcome optimize_farthest_points(const SurfaceMesh& mesh, const GeodesicSolver& solver,
                                        const std::vector<VertexId>& start, std::size_t max_sweeps, double min_gain,
-                                       double stall_gain, bool quiet) {
+                                       double stall_gain, bool quiet, std::unique_ptr<ParticleVoronoi> diagram) {
   SpreadOutcome outcome;
   outcome.positions = start;
   const auto count = std::uint32_t(start.size());
@@ -34,8 +34,11 @@ SpreadOutcome optimize_farthest_points(const SurfaceMesh& mesh, const GeodesicSo
     outcome.converged = count < 2;
     return outcome;
   }
-  ParticleVoronoi voronoi(mesh, solver, count);
-  for (std::uint32_t p = 0; p < count; ++p) voronoi.insert(p, start[p]);
+  if (!diagram) {
+    diagram = std::make_unique<ParticleVoronoi>(mesh, solver, count);
+    for (std::uint32_t p = 0; p < count; ++p) diagram->insert(p, start[p]);
+  }
+  ParticleVoronoi& voronoi = *diagram;
   ProgressLine progress("spread", max_sweeps, quiet);
   std::unordered_set<std::uint64_t> seen = {positions_hash(outcome.positions)};
   // Every particle decides in the first sweep; after it, only one whose

@@ -11,10 +11,12 @@
 // a user of this program wants, rather than lowering an energy
 // (docs/ALGORITHM.md, "The default: spread").
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "geodesics/geodesic_solver.hpp"
 #include "mesh/surface_mesh.hpp"
+#include "particles/particle_voronoi.hpp"
 
 namespace meshparticles {
 
@@ -49,8 +51,11 @@ struct SpreadOutcome {
 // regions were marched, and gains within that noise would let a few
 // particles trade places forever. Deterministic: the same mesh, start and
 // solver give the same bits. Unless `quiet`, a progress line per sweep.
+// `diagram`: the Voronoi diagram of `start` (particle k on start[k]) by
+// `solver`, as the farthest start leaves it; null to build it here.
 SpreadOutcome optimize_farthest_points(const SurfaceMesh& mesh, const GeodesicSolver& solver,
                                        const std::vector<VertexId>& start, std::size_t max_sweeps, double min_gain,
-                                       double stall_gain, bool quiet);
+                                       double stall_gain, bool quiet,
+                                       std::unique_ptr<ParticleVoronoi> diagram = nullptr);
 
 }  // namespace meshparticles

@@ -7,7 +7,6 @@
 #include "common/progress.hpp"
 #include "common/random.hpp"
 #include "geodesics/solver_factory.hpp"
-#include "particles/farthest_vertex.hpp"
 
 namespace meshparticles {
 
@@ -24,45 +23,46 @@ std::vector<VertexId> distinct_random_vertices(std::size_t vertex_count, std::si
 }
 
 // Each new sample is the vertex farthest from all samples so far (ties: the
-// smaller id). Another component is infinitely far, so each gets a sample
-// before any gets a second.
-std::vector<VertexId> farthest_point_samples(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::size_t count,
-                                             VertexId first, bool quiet) {
-  SolverScratch scratch;
-  std::vector<float> nearest(mesh.vertex_count(), std::numeric_limits<float>::infinity());
-  FarthestVertex farthest(nearest);
-  std::vector<VertexId> samples, lowered;
+// smaller id), found in the geodesic Voronoi diagram of the samples, sample
+// k as particle k. Another component is infinitely far, so each gets a
+// sample before any gets a second.
+Placement farthest_point_samples(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::size_t count,
+                                 VertexId first, bool quiet) {
+  Placement placement;
+  placement.diagram = std::make_unique<ParticleVoronoi>(mesh, solver, count);
+  ParticleVoronoi& diagram = *placement.diagram;
+  std::vector<VertexId>& samples = placement.vertices;
   samples.reserve(count);
   ProgressLine progress("farthest-point start", count, quiet || count < 2000);
   VertexId next = first;
   while (true) {
+    diagram.insert(std::uint32_t(samples.size()), next);
     samples.push_back(next);
-    farthest.take(next);
     if (samples.size() == count) break;
-    solver.lower_nearest(next, nearest, scratch, lowered);
-    farthest.lowered(lowered);
-    next = *farthest.farthest();  // count <= vertices: one is left
+    next = *diagram.farthest();  // count <= vertices: one is left
     progress.update(samples.size());
   }
   progress.finish();
-  return samples;
+  return placement;
 }
 
 // `solver`: the farthest start's, or null to make one (v0 and random need none).
-std::vector<VertexId> place(const SurfaceMesh& mesh, const GeodesicSolver* solver, const PlacementRequest& request,
-                            bool quiet) {
+Placement place(const SurfaceMesh& mesh, const GeodesicSolver* solver, const PlacementRequest& request, bool quiet) {
   const std::size_t vertex_count = mesh.vertex_count();
   switch (request.init) {
     case Init::v0:
-      return std::vector<VertexId>(request.particle_count, request.start_vertex.value_or(0));
+      return {std::vector<VertexId>(request.particle_count, request.start_vertex.value_or(0)), nullptr};
     case Init::random:
-      return distinct_random_vertices(vertex_count, request.particle_count, request.seed);
+      return {distinct_random_vertices(vertex_count, request.particle_count, request.seed), nullptr};
     case Init::farthest: {
       const VertexId first = request.start_vertex ? *request.start_vertex
                                                   : VertexId(SplitMix64(request.seed).below(vertex_count));
       if (solver) return farthest_point_samples(mesh, *solver, request.particle_count, first, quiet);
-      return farthest_point_samples(mesh, *make_geodesic_solver(mesh, request.method), request.particle_count, first,
-                                    quiet);
+      // The diagram would outlive the solver made here: not kept.
+      return {farthest_point_samples(mesh, *make_geodesic_solver(mesh, request.method), request.particle_count, first,
+                                     quiet)
+                  .vertices,
+              nullptr};
     }
   }
   return {};
@@ -71,11 +71,16 @@ std::vector<VertexId> place(const SurfaceMesh& mesh, const GeodesicSolver* solve
 }  // namespace
 
 std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const PlacementRequest& request, bool quiet) {
-  return place(mesh, nullptr, request, quiet);
+  return place(mesh, nullptr, request, quiet).vertices;
 }
 
 std::vector<VertexId> place_particles(const SurfaceMesh& mesh, const GeodesicSolver& solver,
                                       const PlacementRequest& request, bool quiet) {
+  return place(mesh, &solver, request, quiet).vertices;
+}
+
+Placement place_particles_with_diagram(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                                       const PlacementRequest& request, bool quiet) {
   return place(mesh, &solver, request, quiet);
 }
 

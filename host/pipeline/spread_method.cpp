@@ -200,9 +200,10 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   // The input's vertices keep their ids on the working mesh.
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   SpreadOutcome spread = naming_memory_failures(label, "spreading the particles", [&] {
-    result.start = place_particles(surface, *solver, plan.placement, request.quiet);
+    Placement start = place_particles_with_diagram(surface, *solver, plan.placement, request.quiet);
+    result.start = std::move(start.vertices);
     return optimize_farthest_points(surface, *solver, result.start, request.max_iterations, kSpreadMinGain * d_hex,
-                                    kSpreadStallGain * d_hex, request.quiet);
+                                    kSpreadStallGain * d_hex, request.quiet, std::move(start.diagram));
   });
   details.sweeps = std::move(spread.sweeps);
   result.outcome.positions = std::move(spread.positions);
