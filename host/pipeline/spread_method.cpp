@@ -84,17 +84,19 @@ namespace {
 // positions are vertices of) and the quality there.
 // `to_nearest`: distance_to_nearest_particle of the positions on `working`
 // where the caller has it already.
+// `prepared`: the store for `working` (cover_distances'), if made already.
 void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& working, const std::string& label,
-                    std::vector<float> to_nearest = {}) {
+                    std::vector<float> to_nearest = {}, ObtainedDistances prepared = {}) {
   const RunRequest& request = result.plan.request;
   result.spread->working = working;
   const SurfaceMesh& measured = working->mesh;
   result.distance_to_nearest = std::move(to_nearest);
   const auto measure_through = [&](const DistancesPlan& store) {
     const auto geodesics_started = std::chrono::steady_clock::now();
-    const ObtainedDistances distances = naming_memory_failures(label, "computing distances", [&] {
-      return obtain_distances(measured, result.plan.geodesics, store);
-    });
+    const ObtainedDistances distances =
+        prepared.store ? std::move(prepared) : naming_memory_failures(label, "computing distances", [&] {
+          return obtain_distances(measured, result.plan.geodesics, store);
+        });
     result.distances.kind = distances.kind;
     result.distances.table_source = distances.source;
     result.seconds.geodesics += seconds_since(geodesics_started);
@@ -127,6 +129,20 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
     const DistancesRequest wider{result.plan.geodesics, StoreKind::local, kSpreadWideQualityCutoff};
     measure_through(plan_distances(measured, wider, request.particles, false));
   }
+}
+
+// The distance from each vertex of `measured` to its nearest particle (a
+// candidate's cover). Where the measurement's balls march as the cover
+// does, on their solver (its set-up is a pass over the mesh), their store
+// left in `store` for the measurement of the candidate kept (its set-up
+// then counted in the particles' time, where the cover check needs it).
+std::vector<float> cover_distances(const RunPlan& plan, const SurfaceMesh& measured,
+                                   const std::vector<VertexId>& positions, ObtainedDistances& store) {
+  if (plan.distances.kind != StoreKind::local || plan.geodesics.method != plan.march_method) {
+    return distance_to_nearest_particle(measured, plan.march_method, positions);
+  }
+  store = obtain_distances(measured, plan.geodesics, plan.distances);
+  return distance_to_nearest_particle(store.store->local_balls()->solver(), measured, positions);
 }
 
 // spread's evening step (particles/local_farthest_points) from the
@@ -219,7 +235,6 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   // each inserted into the working mesh and its cover measured, the first
   // that passes kept (else the sweeps' vertices).
   const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);
-  const GeodesicMethod method = result.plan.march_method;
   const double cover_limit =
       relax_rounds == 0 ? 0.0 : kSpreadCoverShare * geodesic_cover(*solver, surface, result.start);
   const std::vector<VertexId> swept_positions = result.outcome.positions;
@@ -234,20 +249,24 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   });
   RelaxationOutcome& relaxation = details.relaxation;
   std::vector<float> kept_to_nearest;  // the kept candidate's, for the measurement
+  ObtainedDistances kept_store;        // and its store, where cover_distances made one
   for (std::size_t k = 0; k < relaxation.candidates.size() && relaxation.kept == relaxation.candidates.size(); ++k) {
     const RelaxationCandidate& candidate = relaxation.candidates[k];
     if (candidate.round == 0 || (k > 0 && candidate.round == relaxation.candidates[k - 1].round)) continue;
     InsertedPoints inserted = insert_points(*swept, mesh, candidate.points);
+    auto inserted_mesh = std::make_shared<RefinedMesh>(std::move(inserted.refined));
     std::vector<VertexId> positions = std::move(inserted.vertices);
-    std::vector<float> to_nearest = distance_to_nearest_particle(inserted.refined.mesh, method, positions);
+    ObtainedDistances store;
+    std::vector<float> to_nearest = cover_distances(result.plan, inserted_mesh->mesh, positions, store);
     if (largest_finite(to_nearest) > cover_limit) {
       relaxation.passed_over_for_cover = true;
       continue;
     }
     relaxation.kept = k;
     kept_to_nearest = std::move(to_nearest);
+    kept_store = std::move(store);
     result.outcome.positions = std::move(positions);
-    working = std::make_shared<RefinedMesh>(std::move(inserted.refined));
+    working = std::move(inserted_mesh);
   }
   // Straight lines misjudged the surface (pairs on two sides of a thin part
   // that do not push each other, but are close around its tip): the
@@ -255,7 +274,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   bool measured = false;
   if (relaxation.kept < relaxation.candidates.size() && !details.sweeps.empty()) {
     result.seconds.particles += seconds_since(particles_started);
-    measure_spread(result, working, label, std::move(kept_to_nearest));
+    measure_spread(result, working, label, std::move(kept_to_nearest), std::move(kept_store));
     particles_started = std::chrono::steady_clock::now();
     measured = true;
     if (result.quality.nn_min && *result.quality.nn_min < (1 - kSpreadMinGain) * details.sweeps.back().min_spacing) {
