@@ -65,9 +65,10 @@ SpreadOutcome optimize_farthest_points(const SurfaceMesh& mesh, const GeodesicSo
     double spacing_sum = 0;
     std::size_t spaced = 0;
     for (std::uint32_t p = 0; p < count; ++p) {
-      if (pending[p] || farthest_distance() > farthest_seen[p]) {
+      const float farthest_now = farthest_distance();
+      if (pending[p] || farthest_now > farthest_seen[p]) {
         pending[p] = 0;
-        farthest_seen[p] = farthest_distance();
+        farthest_seen[p] = farthest_now;
         ++record.visited;
         const VertexId here = *voronoi.vertex_of(p);
         voronoi.remove(p);

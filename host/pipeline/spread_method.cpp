@@ -84,6 +84,17 @@ namespace {
 // positions are vertices of) and the quality there.
 // `to_nearest`: distance_to_nearest_particle of the positions on `working`
 // where the caller has it already.
+// The distance from each vertex of `measured` to its nearest particle
+// (the cover), marched on `balls`' solver where it marches as the cover
+// does (a solver's set-up is a pass over the mesh, a tenth of the
+// measurement), else on one made for it.
+std::vector<float> nearest_particle_distances(const RunPlan& plan, const SurfaceMesh& measured,
+                                              const std::vector<VertexId>& positions, const LocalDistances* balls) {
+  return balls && plan.geodesics.method == plan.march_method
+             ? distance_to_nearest_particle(balls->solver(), measured, positions)
+             : distance_to_nearest_particle(measured, plan.march_method, positions);
+}
+
 // `prepared`: the store for `working` (cover_distances'), if made already.
 void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& working, const std::string& label,
                     std::vector<float> to_nearest = {}, ObtainedDistances prepared = {}) {
@@ -104,13 +115,8 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
     const auto quality_started = std::chrono::steady_clock::now();
     naming_memory_failures(label, "measuring the result", [&] {
       if (result.distance_to_nearest.empty()) {
-        // The cover (unless the caller has it) marched on the balls' solver
-        // where both march alike: a solver's set-up is a pass over the
-        // mesh, a tenth of the measurement.
-        result.distance_to_nearest =
-            balls && result.plan.geodesics.method == result.plan.march_method
-                ? distance_to_nearest_particle(balls->solver(), measured, result.outcome.positions)
-                : distance_to_nearest_particle(measured, result.plan.march_method, result.outcome.positions);
+        // The cover, unless the caller has it.
+        result.distance_to_nearest = nearest_particle_distances(result.plan, measured, result.outcome.positions, balls);
       }
       result.quality = measure_quality(measured, *distances.store, result.outcome.positions, result.plan.energy,
                                        result.distance_to_nearest, request.quiet);
@@ -131,18 +137,16 @@ void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& worki
   }
 }
 
-// The distance from each vertex of `measured` to its nearest particle (a
-// candidate's cover). Where the measurement's balls march as the cover
-// does, on their solver (its set-up is a pass over the mesh), their store
-// left in `store` for the measurement of the candidate kept (its set-up
-// then counted in the particles' time, where the cover check needs it).
+// A relaxed candidate's nearest_particle_distances. Where the measurement's
+// balls would march them, their store is made now and left in `store`
+// for the measurement of the candidate kept (its set-up then counted in
+// the particles' time, where the cover check needs it).
 std::vector<float> cover_distances(const RunPlan& plan, const SurfaceMesh& measured,
                                    const std::vector<VertexId>& positions, ObtainedDistances& store) {
-  if (plan.distances.kind != StoreKind::local || plan.geodesics.method != plan.march_method) {
-    return distance_to_nearest_particle(measured, plan.march_method, positions);
+  if (plan.distances.kind == StoreKind::local && plan.geodesics.method == plan.march_method) {
+    store = obtain_distances(measured, plan.geodesics, plan.distances);
   }
-  store = obtain_distances(measured, plan.geodesics, plan.distances);
-  return distance_to_nearest_particle(store.store->local_balls()->solver(), measured, positions);
+  return nearest_particle_distances(plan, measured, positions, store.store ? store.store->local_balls() : nullptr);
 }
 
 // spread's evening step (particles/local_farthest_points) from the
