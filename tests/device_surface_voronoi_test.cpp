@@ -293,10 +293,12 @@ TEST_P(DeviceEvening, EvensAsTheHostDoes) {
     // Where a near-tie of the two diagrams falls the other way, a neighbour
     // list differs, one move with it, and the sweeps after it go their own
     // ways (measured: torus at 256, 6 vertices a particle, 549 moves against
-    // 586 and 146 of 256 particles in the same place): the set is as even,
-    // not the same. Bounds about twice the worst measured.
+    // 586 and 146 of 256 particles in the same place; from 0.15.0, whose
+    // moves also read where two regions' shortest path crosses their
+    // border, 699 against 706 and 105): the set is as even, not the same.
+    // Bounds about twice the worst measured.
     EXPECT_NEAR(double(device_moves), double(host_moves), 0.15 * double(host_moves));
-    EXPECT_GE(same_place, n / 2);
+    EXPECT_GE(same_place, n / 4);
     EXPECT_NEAR(*d.nn_min, *h.nn_min, 0.02 * *h.nn_min);
     EXPECT_NEAR(*d.nn_cv, *h.nn_cv, 0.2 * *h.nn_cv + 0.005);
     EXPECT_NEAR(on_device.cover, host.cover, 0.06 * host.cover);

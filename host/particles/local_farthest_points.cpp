@@ -54,6 +54,7 @@ constexpr std::uint64_t kScratchBytesPerVertex = 1 + 4 + 4 + 8;
 struct Neighbour {
   std::uint32_t particle = 0;
   double stretch = 1;  // the distance estimated is stretch x the straight line
+  Vec3 crossing{};     // near lists only: where the shortest path between the two regions crosses their border
 };
 
 // Per particle, the particles within kReachSteps steps of the diagram's
@@ -96,8 +97,8 @@ NeighbourLists neighbour_lists(const SurfaceMesh& mesh, const SurfaceVoronoi& ce
   for (const SurfacePath& path : cells.neighbour_paths(mesh)) {
     const double straight = distance(points[path.a].at, points[path.b].at);
     const double stretch = straight > 0 ? std::max(1.0, path.length / straight - kPathSlack) : 1.0;
-    lists.near[path.a].push_back({path.b, stretch});
-    lists.near[path.b].push_back({path.a, stretch});
+    lists.near[path.a].push_back({path.b, stretch, path.crossing});
+    lists.near[path.b].push_back({path.a, stretch, path.crossing});
     paths[path.a].emplace_back(path.b, path.length);
     paths[path.b].emplace_back(path.a, path.length);
   }
@@ -199,6 +200,25 @@ bool circumcentre(const double* a, const double* b, const double* c, double& x, 
   return true;
 }
 
+// Where neighbour `q` stands in the tangent plane (e1, e2) at `p`: at its
+// straight distance, in the direction of `crossing`, where the shortest
+// path to it leaves p's region. Its projection would do on a flat part;
+// where the surface bends away within a spacing (a thin part, a tight
+// curve) the projection is short and can point the wrong way, and the
+// circles' centres miss the widest gap (0.15.0; 45 corpus runs: rho median
+// 0.830 -> 0.840, higher on 21, lower on 2). At the path's length instead
+// of the straight one, a strip folded back on itself lost 5% of its
+// smallest spacing.
+std::array<double, 2> unrolled(const Vec3& p, const Vec3& e1, const Vec3& e2, const Vec3& q, const Vec3& crossing) {
+  const Vec3 to = q - p;
+  const Vec3 out = crossing - p;
+  const double x = dot(out, e1), y = dot(out, e2);
+  const double across = std::hypot(x, y);
+  if (across == 0) return {dot(to, e1), dot(to, e2)};  // the crossing is at p: its projection
+  const double scale = norm(to) / across;
+  return {x * scale, y * scale};
+}
+
 // The point of the surface where i's estimated gap is widest, of the
 // centres of the circles through three of its plain neighbours in its
 // tangent plane (in the plane, the corners of the Voronoi diagram of its
@@ -214,8 +234,7 @@ SurfaceLocation widest_centre(const SurfaceWalk& walk, const SurfaceLocation& p,
   std::vector<std::array<double, 2>> plane;
   for (const Neighbour& k : lists.near[i]) {
     if (k.stretch > kFoldStretch) continue;  // across a fold: no straight centre with it
-    const Vec3 to = points[k.particle].at - p.at;
-    plane.push_back({dot(to, e1), dot(to, e2)});
+    plane.push_back(unrolled(p.at, e1, e2, points[k.particle].at, k.crossing));
   }
   SurfaceLocation best = p;
   for (std::size_t a = 0; a < plane.size(); ++a) {

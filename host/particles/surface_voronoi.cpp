@@ -2,13 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace meshparticles {
 
 double SurfaceVoronoi::cover() const { return largest_finite(distance); }
 
 std::vector<SurfacePath> SurfaceVoronoi::neighbour_paths(const SurfaceMesh& mesh) const {
-  std::vector<SurfacePath> paths;
+  // Every edge two regions share, once (from its end in the region of the
+  // lower index), with the path through it.
+  struct Through {
+    SurfacePath path;
+    VertexId v, w;  // v in a's region, w in b's
+  };
+  std::vector<Through> through;
   const auto& positions = mesh.positions();
   for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
     const std::uint32_t p = owner[v];
@@ -17,15 +24,19 @@ std::vector<SurfacePath> SurfaceVoronoi::neighbour_paths(const SurfaceMesh& mesh
       const std::uint32_t q = owner[w];
       if (q == kNoPoint || q <= p) continue;
       const double edge = meshparticles::distance(positions[v], positions[w]);
-      paths.push_back({p, q, double(distance[v]) + edge + double(distance[w])});
+      through.push_back({{p, q, double(distance[v]) + edge + double(distance[w]), 0.5 * (positions[v] + positions[w])},
+                         v, w});
     }
   }
-  std::sort(paths.begin(), paths.end(), [](const SurfacePath& x, const SurfacePath& y) {
-    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.length < y.length;
+  // The shortest per pair; of equal ones, the first edge by its ends: the
+  // same crossing on any machine.
+  std::sort(through.begin(), through.end(), [](const Through& x, const Through& y) {
+    return std::tie(x.path.a, x.path.b, x.path.length, x.v, x.w) < std::tie(y.path.a, y.path.b, y.path.length, y.v, y.w);
   });
-  paths.erase(std::unique(paths.begin(), paths.end(),
-                          [](const SurfacePath& x, const SurfacePath& y) { return x.a == y.a && x.b == y.b; }),
-              paths.end());
+  std::vector<SurfacePath> paths;
+  for (const Through& t : through) {
+    if (paths.empty() || paths.back().a != t.path.a || paths.back().b != t.path.b) paths.push_back(t.path);
+  }
   return paths;
 }
 

@@ -32,6 +32,7 @@ inline constexpr double kPathSlack = 0.1;
 struct SurfacePath {
   std::uint32_t a = 0, b = 0;  // a < b
   double length = 0;
+  Vec3 crossing;  // the middle of that edge
 };
 
 struct SurfaceVoronoi {
