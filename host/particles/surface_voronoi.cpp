@@ -31,7 +31,8 @@ std::vector<SurfacePath> SurfaceVoronoi::neighbour_paths(const SurfaceMesh& mesh
   // The shortest per pair; of equal ones, the first edge by its ends: the
   // same crossing on any machine.
   std::sort(through.begin(), through.end(), [](const Through& x, const Through& y) {
-    return std::tie(x.path.a, x.path.b, x.path.length, x.v, x.w) < std::tie(y.path.a, y.path.b, y.path.length, y.v, y.w);
+    return std::tie(x.path.a, x.path.b, x.path.length, x.v, x.w) <
+           std::tie(y.path.a, y.path.b, y.path.length, y.v, y.w);
   });
   std::vector<SurfacePath> paths;
   for (const Through& t : through) {
