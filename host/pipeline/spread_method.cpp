@@ -80,10 +80,6 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
 
 namespace {
 
-// spread's measurement: the distances of `working` (the mesh the
-// positions are vertices of) and the quality there.
-// `to_nearest`: distance_to_nearest_particle of the positions on `working`
-// where the caller has it already.
 // The distance from each vertex of `measured` to its nearest particle
 // (the cover), marched on `balls`' solver where it marches as the cover
 // does (a solver's set-up is a pass over the mesh, a tenth of the
@@ -95,6 +91,10 @@ std::vector<float> nearest_particle_distances(const RunPlan& plan, const Surface
              : distance_to_nearest_particle(measured, plan.march_method, positions);
 }
 
+// spread's measurement: the distances of `working` (the mesh the
+// positions are vertices of) and the quality there.
+// `to_nearest`: distance_to_nearest_particle of the positions on `working`
+// where the caller has it already.
 // `prepared`: the store for `working` (cover_distances'), if made already.
 void measure_spread(RunResult& result, const std::shared_ptr<RefinedMesh>& working, const std::string& label,
                     std::vector<float> to_nearest = {}, ObtainedDistances prepared = {}) {
