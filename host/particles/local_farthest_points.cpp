@@ -378,7 +378,7 @@ class Evening {
       }
     }
     record.moved = std::size_t(std::count(moved.begin(), moved.end(), 1));
-    find_neighbours();
+    find_neighbours(&moved);
     summarize(moved, record);
     record.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     return record;
@@ -417,10 +417,20 @@ class Evening {
     return true;
   }
 
-  // The diagram of the particles where they are, and their neighbours in it.
-  void find_neighbours() {
+  // The diagram of the particles where they are, and their neighbours in
+  // it. On the host, after a sweep, the last diagram brought up to date
+  // where particles `moved` (update_surface_voronoi): later sweeps move a
+  // few of them (man at n = 4,096: 3,415 in the first, 190 in the tenth),
+  // and anew each diagram was two fifths of the evening there.
+  void find_neighbours(const std::vector<char>* moved = nullptr) {
     const auto started = std::chrono::steady_clock::now();
-    cells_ = device_ ? device_->diagram(points_) : surface_voronoi(mesh_, solver_, points_, scratch_);
+    if (device_) {
+      cells_ = device_->diagram(points_);
+    } else if (moved) {
+      update_surface_voronoi(mesh_, solver_, points_, *moved, cells_, scratch_);
+    } else {
+      cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
+    }
     diagrams_.seconds += seconds_since(started);
     ++diagrams_.count;
     lists_ = neighbour_lists(mesh_, cells_, points_, threads_);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 namespace meshparticles {
@@ -73,6 +74,45 @@ SurfaceVoronoi surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& so
   }
   for (std::size_t k = 0; k < lowered.size(); ++k) voronoi.owner[lowered[k]] = lowered_owners[k];
   return voronoi;
+}
+
+void update_surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                            std::span<const SurfaceLocation> points, std::span<const char> moved,
+                            SurfaceVoronoi& cells, SolverScratch& scratch) {
+  std::vector<VertexId> emptied;
+  for (VertexId v = 0; v < cells.owner.size(); ++v) {
+    if (cells.owner[v] == SurfaceVoronoi::kNoPoint || !moved[cells.owner[v]]) continue;
+    cells.distance[v] = std::numeric_limits<float>::infinity();
+    cells.owner[v] = SurfaceVoronoi::kNoPoint;
+    emptied.push_back(v);
+  }
+  std::vector<VertexId> sources;
+  std::vector<std::uint32_t> source_owners;
+  for (const VertexId v : emptied) {
+    for (const VertexId w : mesh.one_ring(v)) {
+      if (cells.owner[w] == SurfaceVoronoi::kNoPoint) continue;
+      sources.push_back(w);
+      source_owners.push_back(cells.owner[w]);
+    }
+  }
+  // The moved points' corners, as seeded_surface_voronoi seeds them: the
+  // nearest point's where several points' triangles share one.
+  for (std::uint32_t i = 0; i < points.size(); ++i) {
+    if (!moved[i]) continue;
+    for (const VertexId c : mesh.triangles()[points[i].triangle]) {
+      const float d = float(distance(points[i].at, mesh.positions()[c]));
+      if (d >= cells.distance[c] && cells.owner[c] != SurfaceVoronoi::kNoPoint) continue;
+      cells.distance[c] = d;
+      cells.owner[c] = i;
+      sources.push_back(c);
+      source_owners.push_back(i);
+    }
+  }
+  if (sources.empty()) return;
+  std::vector<VertexId> lowered;
+  std::vector<std::uint32_t> lowered_owners;
+  solver.lower_nearest_from(sources, source_owners, cells.distance, scratch, lowered, lowered_owners);
+  for (std::size_t k = 0; k < lowered.size(); ++k) cells.owner[lowered[k]] = lowered_owners[k];
 }
 
 }  // namespace meshparticles

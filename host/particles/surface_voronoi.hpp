@@ -60,4 +60,16 @@ SurfaceVoronoi seeded_surface_voronoi(const SurfaceMesh& mesh, std::span<const S
 SurfaceVoronoi surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
                                std::span<const SurfaceLocation> points, SolverScratch& scratch);
 
+// Brings `cells`, the diagram of `points` before those flagged in `moved`
+// moved, up to date: the regions the moved points held are emptied and
+// filled again from their rims (each rim vertex from its own point, at its
+// distance), and each moved point seeds its new triangle's corners where
+// it is nearer, in one march that lowers wherever it finds a nearer point.
+// At a cost in proportion to those regions, not the mesh: what
+// surface_voronoi gives anew, up to the order fast marching accepts
+// vertices in along the borders.
+void update_surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                            std::span<const SurfaceLocation> points, std::span<const char> moved,
+                            SurfaceVoronoi& cells, SolverScratch& scratch);
+
 }  // namespace meshparticles
