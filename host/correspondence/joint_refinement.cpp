@@ -95,6 +95,12 @@ constexpr std::size_t kLeastSwaps = 8;
 // local swap helps: carried at every chance, FAUST's people at n = 256
 // spread 0.31 / 0.52, not 0.28 / 0.41.
 constexpr double kCarryBelow = 0.7;
+// ... or where the shape's widest hole is over this many times the
+// template's own run's (the target ratio, 1.15x): FAUST's poses at
+// n = 256 after 0.15.0's evening, tr_reg_007 held a hole of 0.95 spacings
+// (1.28x the template's) after 3 swaps, its closest pair 0.79 apart, and
+// no local move narrowed it (cover 1.20x its own run's; carried, 1.06x).
+constexpr double kCarryAbove = 1.15;
 constexpr std::size_t kSwapSteps = 2;
 constexpr double kSwapHole = 1.05;
 
@@ -511,6 +517,7 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
     swap_limits.cover = kSwapHole * template_hole * spacings[k];
     swap_limits.hole_step = kHeldCoverSampleStep * spacings[k];
     swap_limits.carry_below = kCarryBelow * spacings[k];
+    swap_limits.carry_above = kCarryAbove * template_hole * spacings[k];
     swap_limits.steps = kSwapSteps;
     const std::size_t swaps = swap_into_holes(mesh, *surface.solver, surface.neighbours, look, shapes[k].at, swap_limits).swaps;
     kept[k] = {share_kept, double(sweeps), double(swaps)};

@@ -11,6 +11,7 @@
 // balance, its closest pair and its widest hole a spacing or two apart.
 // One particle carried from the one to the other ends both.
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "geodesics/geodesic_solver.hpp"
@@ -29,6 +30,11 @@ struct HoleSwapLimits {
   // where no local move helps: a carried particle's neighbours each move by
   // a spacing, and particle i then lies elsewhere than on the other shapes.
   double carry_below = 0;
+  // ... or where the widest hole is wider than this (mesh units): with no
+  // pair closer than carry_below, a hole about a spacing wide takes no local
+  // move (the particle taken out leaves as wide a hole where it was), and a
+  // crowd the evening had spread thin is then carried from all the same.
+  double carry_above = std::numeric_limits<double>::infinity();
   // A particle may go only into the regions of the particles within this
   // many steps of it on the surface's neighbour graph (its Voronoi
   // neighbours, theirs, ...): the swap stays local.
@@ -48,7 +54,8 @@ struct HoleSwapOutcome {
 //   owner and the two of the closest pair: each taken out and put at the
 //   vertex farthest from the rest among its neighbourhood's regions;
 // - where none of those helps and the pair is closer than
-//   `limits.carry_below`, each of the closest pair carried into the widest
+//   `limits.carry_below` or the hole wider than `limits.carry_above`, each
+//   of the closest pair carried into the widest
 //   hole however far it is, along a shortest path of neighbours to the
 //   hole's owner: each on the path takes the next one's place, the owner
 //   goes into the hole (a crowd the transfer left on a palm, its hole up
@@ -57,7 +64,9 @@ struct HoleSwapOutcome {
 // under its limit plus the hole's over its limit, each relative), where it
 // lessens the shortfall, makes the spacing no smaller and the hole no wider
 // than it was or than its limit, whichever is more. The hole is
-// particles/widest_hole's (at points `limits.hole_step` apart), the steps
+// particles/widest_hole's (at points `limits.hole_step` apart), or where
+// the diagram at the vertices reads wider (hole_width takes the wider) that
+// vertex: the swaps aim where the width they are judged by is. The steps
 // the neighbours of the surface's Voronoi diagram at the vertices
 // (particles/surface_voronoi); the spacing is as closest_surface_pair tells
 // it (`surface`, built for `mesh`; `look`, its marches' scratch).
