@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -100,6 +101,35 @@ TEST(HoleSwap, ACrowdFarFromTheHoleIsCarriedIntoItStepByStep) {
       EXPECT_LT(move, 1.5 * spacing) << i;
     }
     EXPECT_GE(moved, 4u);  // the corner is four steps or more from the middle
+  }
+}
+
+// The same crowd spread thinner than `carry_below` (0.45 spacings from its
+// neighbour, the limit 0.3): carried only where the hole is wider than
+// `carry_above` (a spacing against 0.9 of one; FAUST's tr_reg_007 at
+// n = 256 kept a hole 1.28x its template's this way).
+TEST(HoleSwap, AHoleWiderThanCarryAboveTakesACarryWithNoCrowd) {
+  const SurfaceMesh square = square_grid(36);
+  const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
+  const SurfaceNeighbours surface(square, *solver);
+  LookScratch look;
+  const double spacing = 1.0 / 9;
+  const std::vector<SurfaceLocation> before = grid_particles(square, true, {{0.02, 0.02, 0}}, 9);
+  HoleSwapLimits wanted;
+  wanted.max_swaps = 8;
+  wanted.spacing = 0.95 * spacing;
+  wanted.cover = 2 * spacing;
+  wanted.hole_step = 0.005;
+  wanted.steps = 0;
+  wanted.carry_below = 0.3 * spacing;
+  for (const bool carry : {false, true}) {
+    wanted.carry_above = carry ? 0.9 * spacing : std::numeric_limits<double>::infinity();
+    std::vector<SurfaceLocation> after = before;
+    const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, look, after, wanted);
+    EXPECT_EQ(outcome.swaps, carry ? 1u : 0u) << carry;
+    if (carry) {
+      EXPECT_LT(outcome.cover, 0.85 * spacing);
+    }
   }
 }
 
