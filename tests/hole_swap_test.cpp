@@ -64,11 +64,15 @@ TEST(HoleSwap, ACrowdedParticleGoesIntoTheHoleBesideIt) {
   EXPECT_EQ(moved, 1u);
 }
 
-// A crowd at a corner and a hole in the middle, no local swap allowed (no
-// steps): with carrying allowed, a particle of the crowd is carried into
-// the hole, each on the way taking the next one's place, so that none
-// moves farther than a neighbour's place (a grid spacing and a half);
-// without, nothing moves.
+// A crowd at a corner (a pair 0.45 spacings apart) and a hole in the
+// middle (a spacing wide), no local swap allowed (no steps): where the
+// pair is under `carry_below` (a spacing) or the hole wider than
+// `carry_above` (0.9 of one; FAUST's tr_reg_007 at n = 256 kept a hole
+// 1.28x its template's with no pair under carry_below), a particle of the
+// crowd is carried into the hole, each on the way taking the next one's
+// place, so that none moves farther than a neighbour's place (a grid
+// spacing and a half); otherwise (carry_below 0.3, no carry_above) nothing
+// moves.
 TEST(HoleSwap, ACrowdFarFromTheHoleIsCarriedIntoItStepByStep) {
   const SurfaceMesh square = square_grid(36);
   const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
@@ -82,11 +86,14 @@ TEST(HoleSwap, ACrowdFarFromTheHoleIsCarriedIntoItStepByStep) {
   wanted.cover = 2 * spacing;  // only the crowd falls short
   wanted.hole_step = 0.005;
   wanted.steps = 0;
-  for (const bool carry : {false, true}) {
-    wanted.carry_below = carry ? wanted.spacing : 0;
+  enum class Carry { never, for_the_pair, for_the_hole };
+  for (const Carry carry : {Carry::never, Carry::for_the_pair, Carry::for_the_hole}) {
+    SCOPED_TRACE(int(carry));
+    wanted.carry_below = carry == Carry::for_the_pair ? wanted.spacing : 0.3 * spacing;
+    wanted.carry_above = carry == Carry::for_the_hole ? 0.9 * spacing : std::numeric_limits<double>::infinity();
     std::vector<SurfaceLocation> after = before;
     const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, look, after, wanted);
-    if (!carry) {
+    if (carry == Carry::never) {
       EXPECT_EQ(outcome.swaps, 0u);
       continue;
     }
@@ -101,35 +108,6 @@ TEST(HoleSwap, ACrowdFarFromTheHoleIsCarriedIntoItStepByStep) {
       EXPECT_LT(move, 1.5 * spacing) << i;
     }
     EXPECT_GE(moved, 4u);  // the corner is four steps or more from the middle
-  }
-}
-
-// The same crowd spread thinner than `carry_below` (0.45 spacings from its
-// neighbour, the limit 0.3): carried only where the hole is wider than
-// `carry_above` (a spacing against 0.9 of one; FAUST's tr_reg_007 at
-// n = 256 kept a hole 1.28x its template's this way).
-TEST(HoleSwap, AHoleWiderThanCarryAboveTakesACarryWithNoCrowd) {
-  const SurfaceMesh square = square_grid(36);
-  const auto solver = make_geodesic_solver(square, GeodesicMethod::fast_marching);
-  const SurfaceNeighbours surface(square, *solver);
-  LookScratch look;
-  const double spacing = 1.0 / 9;
-  const std::vector<SurfaceLocation> before = grid_particles(square, true, {{0.02, 0.02, 0}}, 9);
-  HoleSwapLimits wanted;
-  wanted.max_swaps = 8;
-  wanted.spacing = 0.95 * spacing;
-  wanted.cover = 2 * spacing;
-  wanted.hole_step = 0.005;
-  wanted.steps = 0;
-  wanted.carry_below = 0.3 * spacing;
-  for (const bool carry : {false, true}) {
-    wanted.carry_above = carry ? 0.9 * spacing : std::numeric_limits<double>::infinity();
-    std::vector<SurfaceLocation> after = before;
-    const HoleSwapOutcome outcome = swap_into_holes(square, *solver, surface, look, after, wanted);
-    EXPECT_EQ(outcome.swaps, carry ? 1u : 0u) << carry;
-    if (carry) {
-      EXPECT_LT(outcome.cover, 0.85 * spacing);
-    }
   }
 }
 
