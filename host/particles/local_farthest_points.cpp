@@ -161,9 +161,9 @@ class CornerIndex {
 // up to `radius` (returned where none is nearer). A particle is reached
 // through its triangle's corners, at d(corner) + |corner - particle|, so
 // only corners nearer than `radius` can bring one nearer: the march stops
-// there (to radius plus the farthest a particle is from its corners, as
-// to 0.15.0, it gave the same particles on the corpus runs and took a
-// third of the evening's marching for nothing).
+// there. (To 0.15.0 it went on by the farthest a particle sits from its
+// corners: a third of the evening's marching for nothing. The particles
+// differ only where fast marching accepts a vertex out of order.)
 class SurfaceGap {
  public:
   SurfaceGap(const SurfaceMesh& mesh, const GeodesicSolver& solver) : mesh_(mesh), solver_(solver) {}

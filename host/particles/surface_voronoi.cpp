@@ -88,13 +88,6 @@ void update_surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solve
   }
   std::vector<VertexId> sources;
   std::vector<std::uint32_t> source_owners;
-  for (const VertexId v : emptied) {
-    for (const VertexId w : mesh.one_ring(v)) {
-      if (cells.owner[w] == SurfaceVoronoi::kNoPoint) continue;
-      sources.push_back(w);
-      source_owners.push_back(cells.owner[w]);
-    }
-  }
   // The moved points' corners, as seeded_surface_voronoi seeds them: the
   // nearest point's where several points' triangles share one.
   for (std::uint32_t i = 0; i < points.size(); ++i) {
@@ -106,6 +99,15 @@ void update_surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solve
       cells.owner[c] = i;
       sources.push_back(c);
       source_owners.push_back(i);
+    }
+  }
+  // Then the rims, each vertex from the point that holds it now (a corner
+  // just seeded: its new point).
+  for (const VertexId v : emptied) {
+    for (const VertexId w : mesh.one_ring(v)) {
+      if (cells.owner[w] == SurfaceVoronoi::kNoPoint) continue;
+      sources.push_back(w);
+      source_owners.push_back(cells.owner[w]);
     }
   }
   if (sources.empty()) return;
