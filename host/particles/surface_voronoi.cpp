@@ -42,6 +42,22 @@ std::vector<SurfacePath> SurfaceVoronoi::neighbour_paths(const SurfaceMesh& mesh
   return paths;
 }
 
+namespace {
+
+// Point i's triangle's corner `c` at its straight distance from it, where
+// that is nearer than what `voronoi` holds there or c has no point yet (of
+// points equally near, the first seeded keeps it); whether i took it.
+bool seed_corner(const SurfaceMesh& mesh, std::span<const SurfaceLocation> points, std::uint32_t i, VertexId c,
+                 SurfaceVoronoi& voronoi) {
+  const float d = float(distance(points[i].at, mesh.positions()[c]));
+  if (d >= voronoi.distance[c] && voronoi.owner[c] != SurfaceVoronoi::kNoPoint) return false;
+  voronoi.distance[c] = d;
+  voronoi.owner[c] = i;
+  return true;
+}
+
+}  // namespace
+
 SurfaceVoronoi seeded_surface_voronoi(const SurfaceMesh& mesh, std::span<const SurfaceLocation> points,
                                       std::vector<VertexId>& seeds) {
   SurfaceVoronoi voronoi;
@@ -50,12 +66,8 @@ SurfaceVoronoi seeded_surface_voronoi(const SurfaceMesh& mesh, std::span<const S
   seeds.clear();
   for (std::uint32_t i = 0; i < points.size(); ++i) {
     for (const VertexId c : mesh.triangles()[points[i].triangle]) {
-      const float d = float(distance(points[i].at, mesh.positions()[c]));
       if (voronoi.owner[c] == SurfaceVoronoi::kNoPoint) seeds.push_back(c);
-      if (d < voronoi.distance[c] || voronoi.owner[c] == SurfaceVoronoi::kNoPoint) {
-        voronoi.distance[c] = d;
-        voronoi.owner[c] = i;
-      }
+      seed_corner(mesh, points, i, c, voronoi);
     }
   }
   return voronoi;
@@ -88,15 +100,11 @@ void update_surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solve
   }
   std::vector<VertexId> sources;
   std::vector<std::uint32_t> source_owners;
-  // The moved points' corners, as seeded_surface_voronoi seeds them: the
-  // nearest point's where several points' triangles share one.
+  // The moved points' corners, as seeded_surface_voronoi seeds them.
   for (std::uint32_t i = 0; i < points.size(); ++i) {
     if (!moved[i]) continue;
     for (const VertexId c : mesh.triangles()[points[i].triangle]) {
-      const float d = float(distance(points[i].at, mesh.positions()[c]));
-      if (d >= cells.distance[c] && cells.owner[c] != SurfaceVoronoi::kNoPoint) continue;
-      cells.distance[c] = d;
-      cells.owner[c] = i;
+      if (!seed_corner(mesh, points, i, c, cells)) continue;
       sources.push_back(c);
       source_owners.push_back(i);
     }
