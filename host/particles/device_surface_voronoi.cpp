@@ -176,14 +176,45 @@ SurfaceVoronoi DeviceSurfaceVoronoi::diagram(std::span<const SurfaceLocation> po
   const auto started = std::chrono::steady_clock::now();
   std::vector<VertexId> seeds;
   SurfaceVoronoi voronoi = seeded_surface_voronoi(mesh_, points, seeds);
+  if (!seeds.empty() && mesh_.vertex_count() > 0) converge(seeds, voronoi);
+  ++statistics_.diagrams;
+  statistics_.seconds += seconds_since(started);
+  return voronoi;
+}
+
+void DeviceSurfaceVoronoi::update(std::span<const SurfaceLocation> points, std::span<const char> moved,
+                                  SurfaceVoronoi& cells) {
+  const auto started = std::chrono::steady_clock::now();
+  const MovedPointsReseeded reseeded = reseed_moved_points(mesh_, points, moved, cells);
+  // The rounds start from the corners just seeded and from every vertex
+  // that kept its point and is read by an emptied one (the rims, and for
+  // virtual updates a little beyond): as if each had just changed.
+  std::vector<VertexId> changed = reseeded.corners;
+  if (!reseeded.emptied.empty()) {
+    std::vector<char> emptied(mesh_.vertex_count(), 0);
+    for (const VertexId v : reseeded.emptied) emptied[v] = 1;
+    for (VertexId w = 0; w < mesh_.vertex_count(); ++w) {
+      if (cells.owner[w] == SurfaceVoronoi::kNoPoint) continue;
+      for (std::uint32_t k = dependent_offsets_host_[w]; k < dependent_offsets_host_[w + 1]; ++k) {
+        if (!emptied[dependents_host_[k]]) continue;
+        changed.push_back(w);
+        break;
+      }
+    }
+  }
+  if (!changed.empty()) converge(changed, cells);
+  ++statistics_.diagrams;
+  statistics_.seconds += seconds_since(started);
+}
+
+void DeviceSurfaceVoronoi::converge(std::span<const VertexId> changed, SurfaceVoronoi& voronoi) {
   const std::size_t vertices = mesh_.vertex_count();
-  if (seeds.empty() || vertices == 0) return voronoi;
-  // Both buffers start as the seeds; round 0 computes the vertices that
-  // read a seed, from the seeds (stamped 1: changed before round 0).
+  // Both buffers start as `voronoi`; round 0 computes the vertices that
+  // read a changed one, from it (stamped 1: changed before round 0).
   std::vector<VertexState> states(vertices);
   for (std::size_t v = 0; v < vertices; ++v) states[v] = {voronoi.distance[v], voronoi.owner[v], 0, 0};
   std::fill(dirty_start_.begin(), dirty_start_.end(), cl_uchar(0));
-  for (const VertexId c : seeds) {
+  for (const VertexId c : changed) {
     states[c].stamp = 1;
     for (std::uint32_t k = dependent_offsets_host_[c]; k < dependent_offsets_host_[c + 1]; ++k) {
       dirty_start_[dependents_host_[k]] = 1;
@@ -199,7 +230,7 @@ SurfaceVoronoi DeviceSurfaceVoronoi::diagram(std::span<const SurfaceLocation> po
   const std::size_t most_rounds = 4 * vertices + 64;
   std::size_t round = 0;
   const std::size_t batch = kBatchRounds;
-  std::vector<cl_uint> changed(kBatchRounds);
+  std::vector<cl_uint> round_flags(kBatchRounds);
   const std::size_t global = (vertices + work_group_size_ - 1) / work_group_size_ * work_group_size_;
   for (bool converged = false; !converged;) {
     if (round > most_rounds) throw std::runtime_error("the device's Voronoi diagram did not converge");
@@ -214,9 +245,9 @@ SurfaceVoronoi DeviceSurfaceVoronoi::diagram(std::span<const SurfaceLocation> po
       kernel_.setArg(15, cl_uint(k));
       queue_.enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(work_group_size_));
     }
-    queue_.enqueueReadBuffer(round_changed_, CL_TRUE, 0, batch * sizeof(cl_uint), changed.data());
+    queue_.enqueueReadBuffer(round_changed_, CL_TRUE, 0, batch * sizeof(cl_uint), round_flags.data());
     ++statistics_.batches;
-    const auto rounds_changed = std::size_t(std::count(changed.begin(), changed.begin() + std::ptrdiff_t(batch), 1u));
+    const auto rounds_changed = std::size_t(std::count(round_flags.begin(), round_flags.begin() + std::ptrdiff_t(batch), 1u));
     statistics_.rounds += rounds_changed;
     converged = rounds_changed < batch;
   }
@@ -226,9 +257,6 @@ SurfaceVoronoi DeviceSurfaceVoronoi::diagram(std::span<const SurfaceLocation> po
     voronoi.distance[v] = states[v].distance;
     voronoi.owner[v] = states[v].owner;
   }
-  ++statistics_.diagrams;
-  statistics_.seconds += seconds_since(started);
-  return voronoi;
 }
 
 }  // namespace meshparticles

@@ -32,7 +32,7 @@ void check_device_voronoi_fits(const DeviceDescription& device, std::uint64_t ve
 class DeviceSurfaceVoronoi {
  public:
   struct Statistics {
-    std::size_t diagrams = 0;
+    std::size_t diagrams = 0;  // anew or updated
     std::size_t rounds = 0;    // rounds that changed something, over all diagrams
     std::size_t batches = 0;   // host waits: one per batch of rounds
     double seconds = 0;        // everything: seeding, uploads, rounds, reads
@@ -46,10 +46,23 @@ class DeviceSurfaceVoronoi {
   // surface_voronoi gives it.
   SurfaceVoronoi diagram(std::span<const SurfaceLocation> points);
 
+  // `cells`, the diagram of `points` before those flagged in `moved` moved,
+  // brought up to date as update_surface_voronoi does on the host: their
+  // regions emptied, their new corners seeded, and rounds from there (a
+  // few regions deep, where a diagram anew takes the mesh's width). The
+  // result is the diagram anew's to the method's accuracy: where an
+  // update's candidate misses its edge, rounds in another order may settle
+  // on another of two near values.
+  void update(std::span<const SurfaceLocation> points, std::span<const char> moved, SurfaceVoronoi& cells);
+
   const std::string& device_name() const { return device_name_; }
   const Statistics& statistics() const { return statistics_; }
 
  private:
+  // Rounds from `voronoi` until none changes anything, the vertices in
+  // `changed` taken as changed just before the first.
+  void converge(std::span<const VertexId> changed, SurfaceVoronoi& voronoi);
+
   const SurfaceMesh& mesh_;
   std::string device_name_;
   std::size_t work_group_size_ = 0;

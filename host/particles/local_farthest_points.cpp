@@ -418,16 +418,19 @@ class Evening {
   }
 
   // The diagram of the particles where they are, and their neighbours in
-  // it. On the host, after a sweep, the last diagram brought up to date
-  // where particles `moved` (update_surface_voronoi): later sweeps move a
-  // few of them (man at n = 4,096: 3,415 in the first, 190 in the tenth),
-  // and anew each diagram was two fifths of the evening there.
+  // it. After a sweep, the last diagram brought up to date where particles
+  // `moved` (update_surface_voronoi, or on the device its update): later
+  // sweeps move a few of them (man at n = 4,096: 3,415 in the first, 190
+  // in the tenth), and anew each diagram was two fifths of the evening
+  // there.
   void find_neighbours(const std::vector<char>* moved = nullptr) {
     const auto started = std::chrono::steady_clock::now();
-    if (device_) {
-      cells_ = device_->diagram(points_);
+    if (moved && device_) {
+      device_->update(points_, *moved, cells_);
     } else if (moved) {
       update_surface_voronoi(mesh_, solver_, points_, *moved, cells_, scratch_);
+    } else if (device_) {
+      cells_ = device_->diagram(points_);
     } else {
       cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
     }

@@ -88,30 +88,36 @@ SurfaceVoronoi surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& so
   return voronoi;
 }
 
-void update_surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
-                            std::span<const SurfaceLocation> points, std::span<const char> moved,
-                            SurfaceVoronoi& cells, SolverScratch& scratch) {
-  std::vector<VertexId> emptied;
+MovedPointsReseeded reseed_moved_points(const SurfaceMesh& mesh, std::span<const SurfaceLocation> points,
+                                        std::span<const char> moved, SurfaceVoronoi& cells) {
+  MovedPointsReseeded reseeded;
   for (VertexId v = 0; v < cells.owner.size(); ++v) {
     if (cells.owner[v] == SurfaceVoronoi::kNoPoint || !moved[cells.owner[v]]) continue;
     cells.distance[v] = std::numeric_limits<float>::infinity();
     cells.owner[v] = SurfaceVoronoi::kNoPoint;
-    emptied.push_back(v);
+    reseeded.emptied.push_back(v);
   }
-  std::vector<VertexId> sources;
-  std::vector<std::uint32_t> source_owners;
   // The moved points' corners, as seeded_surface_voronoi seeds them.
   for (std::uint32_t i = 0; i < points.size(); ++i) {
     if (!moved[i]) continue;
     for (const VertexId c : mesh.triangles()[points[i].triangle]) {
       if (!seed_corner(mesh, points, i, c, cells)) continue;
-      sources.push_back(c);
-      source_owners.push_back(i);
+      reseeded.corners.push_back(c);
+      reseeded.corner_points.push_back(i);
     }
   }
+  return reseeded;
+}
+
+void update_surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
+                            std::span<const SurfaceLocation> points, std::span<const char> moved,
+                            SurfaceVoronoi& cells, SolverScratch& scratch) {
+  MovedPointsReseeded reseeded = reseed_moved_points(mesh, points, moved, cells);
+  std::vector<VertexId>& sources = reseeded.corners;
+  std::vector<std::uint32_t>& source_owners = reseeded.corner_points;
   // Then the rims, each vertex from the point that holds it now (a corner
   // just seeded: its new point).
-  for (const VertexId v : emptied) {
+  for (const VertexId v : reseeded.emptied) {
     for (const VertexId w : mesh.one_ring(v)) {
       if (cells.owner[w] == SurfaceVoronoi::kNoPoint) continue;
       sources.push_back(w);

@@ -60,6 +60,21 @@ SurfaceVoronoi seeded_surface_voronoi(const SurfaceMesh& mesh, std::span<const S
 SurfaceVoronoi surface_voronoi(const SurfaceMesh& mesh, const GeodesicSolver& solver,
                                std::span<const SurfaceLocation> points, SolverScratch& scratch);
 
+// The first step of bringing a diagram up to date after points moved,
+// shared by the host (update_surface_voronoi) and the device
+// (DeviceSurfaceVoronoi::update): the regions of the points flagged in
+// `moved` emptied (+inf, no point), then each moved point's new triangle's
+// corners seeded where it is nearer, as seeded_surface_voronoi seeds them.
+struct MovedPointsReseeded {
+  std::vector<VertexId> emptied;
+  // Each corner a moved point took, in the order taken, with that point (a
+  // corner taken twice is listed twice, the later point the nearer).
+  std::vector<VertexId> corners;
+  std::vector<std::uint32_t> corner_points;
+};
+MovedPointsReseeded reseed_moved_points(const SurfaceMesh& mesh, std::span<const SurfaceLocation> points,
+                                        std::span<const char> moved, SurfaceVoronoi& cells);
+
 // Brings `cells`, the diagram of `points` before those flagged in `moved`
 // moved, up to date: the regions the moved points held are emptied and
 // filled again from their rims (each rim vertex from its own point, at its
