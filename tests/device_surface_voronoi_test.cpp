@@ -379,37 +379,60 @@ TEST_P(DeviceEvening, EvensAsTheHostDoes) {
 INSTANTIATE_TEST_SUITE_P(CommittedMeshes, DeviceEvening, ::testing::Values("sphere.off", "atrium.off", "torus.off"),
                          stem);
 
-// The whole run with --device (RunRequest::backend.device): on the committed
-// meshes spread keeps the relaxation and no evening runs (docs/ALGORITHM.md),
-// so a CGAL model where it does: bull at 1,024 (9 sweeps). The device's
-// diagrams, and the run's, are said; the particles are as even as the host's
-// (measured at 0.17.0: rho 0.825 and nn_cv 0.032 both, 2,181 and 2,164
-// moves).
-TEST(DeviceEvening, ARunWithDeviceIsAsEvenAsTheHostsRun) {
-  const std::optional<SurfaceMesh> bull = cgal_mesh("bull.off");
-  if (!bull) return;
-  const SurfaceMesh& mesh = *bull;
+// The whole run with --device (RunRequest::backend.device) against the
+// host path on three CGAL models at 64, 1,024 and 4,096 particles: on the
+// committed meshes spread keeps the relaxation and no evening runs
+// (docs/ALGORITHM.md), on these it runs but where the relaxation is kept
+// (then both paths are the same bits, the device unused). The two
+// diagrams differ where two regions meet (DeviceVoronoi above), so a
+// near-tie can list another neighbour and the sweeps after it go their own
+// ways: the same accepted moves within 6% (and 4) and particles as even
+// (measured at 0.17.0: moves within 2.2%, or 2 of 15 at n = 64; rho the
+// host's or higher; nn_cv within 0.6%; cover within 4.5%, man at 1,024).
+// With the device's diagrams left as the first sweep found them, 7.7% to
+// 21% fewer moves (1 to 16 at n = 64), and camel's rho 0.02 to 0.03 lower.
+class DeviceRun : public ::testing::TestWithParam<std::tuple<const char*, std::size_t>> {};
+
+TEST_P(DeviceRun, IsAsEvenAsTheHostsRun) {
+  const auto [model, particles] = GetParam();
+  const std::optional<SurfaceMesh> mesh = cgal_mesh(std::string(model) + ".off");
+  if (!mesh) return;
   RunRequest request;
-  request.mesh_label = "bull.off";
-  request.particles = 1024;
+  request.mesh_label = std::string(model) + ".off";
+  request.particles = particles;
   request.quiet = true;
-  const RunResult host = run_pipeline(mesh, request);
+  const RunResult host = run_pipeline(*mesh, request);
   request.backend.device = select_device("").index();
-  const RunResult device = run_pipeline(mesh, request);
-  ASSERT_TRUE(host.spread && host.spread->evening && device.spread && device.spread->evening);
+  const RunResult device = run_pipeline(*mesh, request);
+  ASSERT_TRUE(host.spread && device.spread);
+  ASSERT_EQ(host.spread->evening.has_value(), device.spread->evening.has_value());
+  if (!host.spread->evening) {
+    EXPECT_EQ(device.outcome.positions, host.outcome.positions);
+    std::cout << "[ info ] " << model << " n=" << particles << ": the relaxation kept, no evening\n";
+    return;
+  }
   EXPECT_TRUE(host.spread->evening->diagrams.device.empty());
   EXPECT_EQ(device.spread->evening->diagrams.device, select_device("").name);
   EXPECT_EQ(device.device, select_device("").name);
   std::size_t host_moves = 0, device_moves = 0;
   for (const auto& s : host.spread->evening->sweeps) host_moves += s.moved;
   for (const auto& s : device.spread->evening->sweeps) device_moves += s.moved;
-  EXPECT_NEAR(double(device_moves), double(host_moves), 0.15 * double(host_moves));
-  EXPECT_NEAR(*device.quality.rho, *host.quality.rho, 0.05);
-  EXPECT_NEAR(*device.quality.nn_cv, *host.quality.nn_cv, 0.3 * *host.quality.nn_cv);
-  std::cout << "[ info ] bull n=1024: moves " << host_moves << " / " << device_moves << ", rho " << *host.quality.rho
-            << " / " << *device.quality.rho << ", nn_cv " << *host.quality.nn_cv << " / " << *device.quality.nn_cv
+  EXPECT_NEAR(double(device_moves), double(host_moves), 0.06 * double(host_moves) + 4);
+  EXPECT_GE(*device.quality.rho, *host.quality.rho - 0.02);
+  EXPECT_LE(*device.quality.nn_cv, 1.25 * *host.quality.nn_cv);
+  EXPECT_LE(*device.quality.cover, 1.1 * *host.quality.cover);  // the evening's own limit: 1.1x the start's
+  std::cout << "[ info ] " << model << " n=" << particles << ": moves " << host_moves << " / " << device_moves
+            << ", rho " << *host.quality.rho << " / " << *device.quality.rho << ", nn_cv " << *host.quality.nn_cv
+            << " / " << *device.quality.nn_cv << ", cover " << *host.quality.cover << " / " << *device.quality.cover
             << "\n";
 }
+
+INSTANTIATE_TEST_SUITE_P(CgalModels, DeviceRun,
+                         ::testing::Combine(::testing::Values("bull", "camel", "man"),
+                                            ::testing::Values(std::size_t(64), std::size_t(1024), std::size_t(4096))),
+                         [](const auto& param_info) {
+                           return std::string(std::get<0>(param_info.param)) + "_" + std::to_string(std::get<1>(param_info.param));
+                         });
 
 }  // namespace
 }  // namespace meshparticles::testing
