@@ -7,36 +7,53 @@
 # measurement's (seconds.geodesics + seconds.quality, its balls included),
 # docs/PERFORMANCE.md ("spread's diagrams and measurement on the device").
 #
-#   scripts/bench_device_voronoi.sh [--device NAME] [--repeat K] OUT_DIR
+#   scripts/bench_device_voronoi.sh [--device NAME] [--repeat K] [--models "M ..."]
+#                                   [--sizes "N ..."] [--paths "P ..."] OUT_DIR
 #
 # NAME: what --device takes (default "Portable Computing Language"; "NVIDIA"
-# on a GPU machine). The cases: CGAL's bull (6,200 vertices; the evening runs there; found in
-# $MESHPARTICLES_CGAL_MESHES, default ~/.cache/meshparticles/cgal-data/data/meshes)
-# and `generate sphere --vertices 200000`, each at n = 1,024 and 4,096.
+# on a GPU machine). Models (default "bull camel man cheese sphere"): CGAL
+# meshes by name (found in $MESHPARTICLES_CGAL_MESHES, default
+# ~/.cache/meshparticles/cgal-data/data/meshes; the evening runs on them),
+# "sphere" for `generate sphere --vertices 200000` (no evening: the
+# relaxation is kept). Sizes default "1024 4096"; paths "host device
+# device-fim". Cases alternate the paths, repetition by repetition.
 # MESHPARTICLES (default build/meshparticles) is the program.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BIN="${MESHPARTICLES:-$ROOT/build/meshparticles}"
 CGAL="${MESHPARTICLES_CGAL_MESHES:-$HOME/.cache/meshparticles/cgal-data/data/meshes}"
 device="Portable Computing Language" repeat=1 out=""
+models="bull camel man cheese sphere" sizes="1024 4096" paths="host device device-fim"
+usage="usage: $0 [--device NAME] [--repeat K] [--models \"M ...\"] [--sizes \"N ...\"] [--paths \"P ...\"] OUT_DIR"
 while [ $# -gt 0 ]; do
   case "$1" in
     --device) device="$2"; shift 2 ;;
     --repeat) repeat="$2"; shift 2 ;;
-    -*) echo "usage: $0 [--device NAME] [--repeat K] OUT_DIR" >&2; exit 2 ;;
+    --models) models="$2"; shift 2 ;;
+    --sizes) sizes="$2"; shift 2 ;;
+    --paths) paths="$2"; shift 2 ;;
+    -*) echo "$usage" >&2; exit 2 ;;
     *) out="$1"; shift ;;
   esac
 done
-[ -n "$out" ] || { echo "usage: $0 [--device NAME] [--repeat K] OUT_DIR" >&2; exit 2; }
+[ -n "$out" ] || { echo "$usage" >&2; exit 2; }
 mkdir -p "$out"
-[ -f "$out/sphere_198812.off" ] || "$BIN" generate sphere --vertices 200000 --out-dir "$out" >/dev/null
-[ -f "$CGAL/bull.off" ] || { echo "no $CGAL/bull.off (set MESHPARTICLES_CGAL_MESHES)" >&2; exit 1; }
+meshes=()
+for model in $models; do
+  if [ "$model" = sphere ]; then
+    [ -f "$out/sphere_198812.off" ] || "$BIN" generate sphere --vertices 200000 --out-dir "$out" >/dev/null
+    meshes+=("$out/sphere_198812.off")
+  else
+    [ -f "$CGAL/$model.off" ] || { echo "no $CGAL/$model.off (set MESHPARTICLES_CGAL_MESHES)" >&2; exit 1; }
+    meshes+=("$CGAL/$model.off")
+  fi
+done
 printf '| mesh | n | path | wall s (best of %s) | diagrams | diagram s | evening moves | geodesics + quality s | balls on device | rho |\n|---|---|---|---|---|---|---|---|---|---|\n' "$repeat"
-for mesh in "$CGAL/bull.off" "$out/sphere_198812.off"; do
-  for n in 1024 4096; do
-    for path in host device device-fim; do
-      best=""
-      for ((k = 0; k < repeat; ++k)); do
+for mesh in "${meshes[@]}"; do
+  for n in $sizes; do
+    declare -A best=()
+    for ((k = 0; k < repeat; ++k)); do
+      for path in $paths; do
         run="$out/$(basename "$mesh" .off)_${n}_$path"
         extra=()
         [ "$path" = device ] && extra=(--device "$device")
@@ -45,12 +62,15 @@ for mesh in "$CGAL/bull.off" "$out/sphere_198812.off"; do
         start=$(date +%s.%N)
         "$BIN" run "$mesh" -n "$n" -q --out "$run" "${extra[@]}" >/dev/null
         wall=$(echo "$(date +%s.%N) - $start" | bc)
-        if [ -z "$best" ] || [ "$(echo "$wall < $best" | bc)" = 1 ]; then
-          best=$wall
+        if [ -z "${best[$path]:-}" ] || [ "$(echo "$wall < ${best[$path]}" | bc)" = 1 ]; then
+          best[$path]=$wall
           cp "$run/report.json" "$run.best.json"  # the fastest repetition's seconds
         fi
       done
-      python3 - "$run.best.json" "$(basename "$mesh" .off)" "$n" "$path" "$best" <<'PY'
+    done
+    for path in $paths; do
+      run="$out/$(basename "$mesh" .off)_${n}_$path"
+      python3 - "$run.best.json" "$(basename "$mesh" .off)" "$n" "$path" "${best[$path]}" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
 e = r.get("evening")
