@@ -255,7 +255,6 @@ TEST(DeviceVoronoi, ASecondSolverGivesTheSameBits) {
 void expect_update_matches(const SurfaceMesh& mesh, const std::string& name, std::size_t n) {
   SCOPED_TRACE(name + ", n = " + std::to_string(n));
   const EveningStart start = evening_start(mesh, n);
-  const SurfaceWalk walk(mesh);
   std::vector<SurfaceLocation> points = start.from;
   DeviceSurfaceVoronoi device(mesh, select_device(""));
   SurfaceVoronoi updated = device.diagram(points);
@@ -264,16 +263,7 @@ void expect_update_matches(const SurfaceMesh& mesh, const std::string& name, std
   EXPECT_EQ(updated.distance, before.distance);  // nothing moved: nothing changes
   EXPECT_EQ(updated.owner, before.owner);
 
-  std::vector<char> moved(points.size(), 0);
-  for (std::size_t i = 0; i < points.size(); i += 3) {
-    const Vec3 toward = points[(i + 1) % points.size()].at - points[i].at;
-    const double step = std::min(0.5 * start.d_hex, 0.5 * norm(toward));
-    points[i] = walk.walk(points[i].triangle, points[i].at + (step / norm(toward)) * toward);
-    moved[i] = 1;
-  }
-  const std::size_t far = n / 2 + 1;
-  points[1] = walk.walk(points[far].triangle, points[far].at + 0.4 * (points[far + 1].at - points[far].at));
-  moved[1] = 1;
+  const std::vector<char> moved = move_a_third_and_one_far(mesh, start.d_hex, points);
   const std::size_t rounds_before = device.statistics().rounds;
   device.update(points, moved, updated);
   const std::size_t update_rounds = device.statistics().rounds - rounds_before;

@@ -41,4 +41,23 @@ inline EveningStart evening_start(const SurfaceMesh& mesh, std::size_t particles
   return s;
 }
 
+// Moves for the diagrams' update tests: every third of `points` steps half a
+// spacing (at most half the way) toward the next, and point 1 jumps across
+// the mesh, beside the point halfway round the list. Which moved.
+inline std::vector<char> move_a_third_and_one_far(const SurfaceMesh& mesh, double d_hex,
+                                                  std::vector<SurfaceLocation>& points) {
+  const SurfaceWalk walk(mesh);
+  std::vector<char> moved(points.size(), 0);
+  for (std::size_t i = 0; i < points.size(); i += 3) {
+    const Vec3 toward = points[(i + 1) % points.size()].at - points[i].at;
+    const double step = std::min(0.5 * d_hex, 0.5 * norm(toward));
+    points[i] = walk.walk(points[i].triangle, points[i].at + (step / norm(toward)) * toward);
+    moved[i] = 1;
+  }
+  const std::size_t far = points.size() / 2 + 1;
+  points[1] = walk.walk(points[far].triangle, points[far].at + 0.4 * (points[far + 1].at - points[far].at));
+  moved[1] = 1;
+  return moved;
+}
+
 }  // namespace meshparticles::testing
