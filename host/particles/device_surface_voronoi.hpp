@@ -48,11 +48,12 @@ class DeviceSurfaceVoronoi {
 
   // `cells`, the diagram of `points` before those flagged in `moved` moved,
   // brought up to date as update_surface_voronoi does on the host: their
-  // regions emptied, their new corners seeded, and rounds from there (a
-  // few regions deep, where a diagram anew takes the mesh's width). The
-  // result is the diagram anew's to the method's accuracy: where an
-  // update's candidate misses its edge, rounds in another order may settle
-  // on another of two near values.
+  // regions emptied, their new corners seeded (reseed_moved_points), and
+  // rounds from those corners and the rims. As near the host's diagram as
+  // one anew (nearer, measured), not its bits: rounds go by edges, not by
+  // distance, so anew a front that crosses a vertex later taken by a nearer
+  // point leaves the vertices beyond it lower than that point's corners
+  // give, where the update starts with the unmoved regions settled.
   void update(std::span<const SurfaceLocation> points, std::span<const char> moved, SurfaceVoronoi& cells);
 
   const std::string& device_name() const { return device_name_; }
