@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/compressed_rows.hpp"
 #include "mesh/vertex_triangles.hpp"
 
 namespace meshparticles {
@@ -45,17 +46,6 @@ PlanarFrame frame_of(Point2 pc, Point2 px, Point2 py) {
 PlanarFrame frame_of_lengths(double xy, double xc, double yc) {
   const double c_x = (xc * xc - yc * yc + xy * xy) / (2 * xy);
   return {float(xy), float(c_x), float(-std::sqrt(std::max(0.0, xc * xc - c_x * c_x)))};
-}
-
-template <typename Record>
-void to_csr(std::vector<std::pair<VertexId, Record>>& by_trigger, std::size_t vertex_count,
-            std::vector<std::uint32_t>& offsets, std::vector<Record>& records) {
-  offsets.assign(vertex_count + 1, 0);
-  for (const auto& entry : by_trigger) ++offsets[entry.first + 1];
-  for (std::size_t v = 0; v < vertex_count; ++v) offsets[v + 1] += offsets[v];
-  records.resize(by_trigger.size());
-  std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
-  for (const auto& [trigger, record] : by_trigger) records[fill[trigger]++] = record;
 }
 
 // The triangles on edge pq, in increasing order: the first two, and how
@@ -141,8 +131,8 @@ TriangleStencils build_triangle_stencils(const SurfaceMesh& mesh) {
   }
 
   TriangleStencils result;
-  to_csr(triangle_records, mesh.vertex_count(), result.triangle_offsets, result.triangles);
-  to_csr(virtual_records, mesh.vertex_count(), result.virtual_offsets, result.virtual_updates);
+  to_compressed_rows(triangle_records, mesh.vertex_count(), result.triangle_offsets, result.triangles);
+  to_compressed_rows(virtual_records, mesh.vertex_count(), result.virtual_offsets, result.virtual_updates);
   return result;
 }
 
