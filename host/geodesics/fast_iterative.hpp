@@ -10,10 +10,12 @@
 // advance at once; it stops when no distance drops.
 //
 // The result is the greatest fixed point of the updates: where fast
-// marching's acceptance order is causal (acute meshes) the two agree, and
-// elsewhere they differ by what an update's order can change, a small
-// fraction of a percent (docs/GEODESICS.md). This host solver is the
-// oracle of the device's (device_balls.hpp), which runs the same rounds.
+// marching's acceptance order is causal (acute meshes) the two agree.
+// Elsewhere fast marching drops the updates that would lower a vertex it
+// has accepted, and fim keeps them: on slivers the two differ by up to a
+// fifth of a distance, fim the nearer the exact one (docs/GEODESICS.md,
+// "On real meshes"). This host solver is the oracle of the device's
+// (device_balls.hpp), which runs the same rounds.
 #include "geodesics/geodesic_solver.hpp"
 #include "geodesics/triangle_stencils.hpp"
 
