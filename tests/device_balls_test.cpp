@@ -94,15 +94,22 @@ INSTANTIATE_TEST_SUITE_P(CommittedMeshes, DeviceBalls,
                          ::testing::Values("sphere.off", "torus.off", "atrium.off", "two_pieces.off", "patch.off"),
                          [](const ::testing::TestParamInfo<std::string>& param) { return mesh_stem(param.param); });
 
+// On two threads, a few at a time, each told as it is done: every ball the
+// host method's own, whatever thread solved it.
 TEST(DeviceBalls, ABallPastTheTableIsSolvedOnTheHost) {
   const SurfaceMesh mesh = generate_mesh_at("sphere", 10000);
   const FastIterativeMethod host(mesh);
-  DeviceBallSolver device(mesh, host, select_device(""));
+  DeviceBallSolver device(mesh, host, select_device(""), 2);
   ASSERT_LT(device.slots(), mesh.vertex_count());
-  const std::vector<VertexId> sources{0, 17, 1234};
+  const std::vector<VertexId> sources{0, 17, 1234, 2000, 3001, 4002, 5003, 6004, 7005, 8006, 9007};
   const double radius = 10;  // the whole sphere
-  const std::vector<Ball> balls = device.solve_balls(sources, radius);
+  std::vector<std::size_t> told;
+  const std::vector<Ball> balls =
+      device.solve_balls(sources, radius, [&](std::size_t done) { told.push_back(done); });
   EXPECT_EQ(device.statistics().solved_on_host, sources.size());
+  ASSERT_GE(told.size(), 2u) << "told after the launch and after each few of the host's balls";
+  EXPECT_TRUE(std::is_sorted(told.begin(), told.end()));
+  EXPECT_EQ(told.back(), sources.size());
   SolverScratch scratch;
   for (std::size_t k = 0; k < sources.size(); ++k) {
     const Ball expected = host.solve_ball(sources[k], radius, scratch);

@@ -8,12 +8,13 @@
 
 namespace meshparticles {
 
-ProgressLine::ProgressLine(std::string label, std::size_t total, bool quiet)
+ProgressLine::ProgressLine(std::string label, std::size_t total, bool quiet, double shown_after)
     : label_(std::move(label)),
       total_(total),
       done_(total),
       quiet_(quiet),
       terminal_(::isatty(STDERR_FILENO) != 0),
+      shown_after_(shown_after),
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
@@ -27,8 +28,9 @@ void ProgressLine::update(std::size_t done, const std::string& detail) {
   if (quiet_ || !terminal_) return;
   const auto now = std::chrono::steady_clock::now();
   if (now - last_draw_ < std::chrono::milliseconds(200) && done < total_) return;
-  last_draw_ = now;
   const double elapsed = elapsed_seconds();
+  if (elapsed < shown_after_) return;
+  last_draw_ = now;
   const double eta = done > 0 ? elapsed * double(total_ - done) / double(done) : 0.0;
   std::fprintf(stderr, "\r%s: %zu/%zu  %s%selapsed %.1f s  ETA %.1f s   ", label_.c_str(), done, total_,
                detail.c_str(), detail.empty() ? "" : "  ", elapsed, eta);
@@ -36,7 +38,7 @@ void ProgressLine::update(std::size_t done, const std::string& detail) {
 }
 
 void ProgressLine::finish(const std::string& suffix) {
-  if (quiet_) return;
+  if (quiet_ || elapsed_seconds() < shown_after_) return;  // nothing was drawn
   if (terminal_) std::fputs("\r\033[K", stderr);
   std::fprintf(stderr, "%s: %zu done in %.2f s%s%s\n", label_.c_str(), done_, elapsed_seconds(),
                suffix.empty() ? "" : ", ", suffix.c_str());

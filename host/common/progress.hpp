@@ -10,7 +10,10 @@ namespace meshparticles {
 
 class ProgressLine {
  public:
-  ProgressLine(std::string label, std::size_t total, bool quiet);
+  // With `shown_after` seconds, nothing is shown (neither the line nor the
+  // summary) unless the work lasts that long: for work usually too quick
+  // to report that now and then is not.
+  ProgressLine(std::string label, std::size_t total, bool quiet, double shown_after = 0);
   // Reports that `done` of `total` units are finished; thread-compatible when
   // called from one thread at a time. Throws Interrupted when the process's
   // interruption check says stop (common/interruption.hpp).
@@ -26,6 +29,7 @@ class ProgressLine {
   std::size_t done_;  // the last count reported (work may end early)
   bool quiet_;
   bool terminal_;
+  double shown_after_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_draw_;
 };

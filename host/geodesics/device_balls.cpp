@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "common/elapsed.hpp"
+#include "common/parallel_for.hpp"
 #include "common/user_error.hpp"
 #include "opencl/program_cache.hpp"
 #include "opencl/read_only_buffer.hpp"
@@ -70,8 +71,8 @@ void check_device_balls_fit(const DeviceDescription& device, std::uint64_t verti
 }
 
 DeviceBallSolver::DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeMethod& host,
-                                   const DeviceDescription& device)
-    : host_(host), device_(device), slot_bits_(slot_bits_for(device)) {
+                                   const DeviceDescription& device, unsigned threads)
+    : host_(host), host_scratch_(cores_or(threads)), device_(device), slot_bits_(slot_bits_for(device)) {
   work_group_size_ = std::min<std::size_t>(device.is_gpu() ? 256 : 64, device.max_work_group_size);
   balls_per_launch_ = balls_per_launch_for(device);
   const TriangleStencils& stencils = host_.stencils();
@@ -148,27 +149,52 @@ void DeviceBallSolver::read_back(Launch& launch) {
                                 1e-9;
 }
 
-std::vector<Ball> DeviceBallSolver::solve_balls(std::span<const VertexId> sources, double radius) {
+std::vector<Ball> DeviceBallSolver::solve_balls(std::span<const VertexId> sources, double radius,
+                                               const std::function<void(std::size_t)>& solved) {
   constexpr cl_uint kUnsolved = 0xFFFFFFFFu;  // BALL_UNSOLVED in the kernel
   const auto started = std::chrono::steady_clock::now();
   std::vector<Ball> balls(sources.size());
-  SolverScratch scratch;
   kernel_.setArg(2, cl_float(radius));
   kernel_.setArg(3, cl_float(radius + host_.margin()));
-  // The host unpacks one launch while the device runs the next.
+  std::size_t done = 0;
+  const auto tell = [&] {
+    if (solved) solved(done);
+  };
+  // The balls too big for the device, on every thread the solver was given,
+  // a few at a time so that `solved` hears of them: on a fine mesh every
+  // ball of a wide radius may be one (cheese's 93k vertices at 7 spacings:
+  // about a second each on one core).
+  const auto solve_on_host = [&](const std::vector<std::size_t>& indices) {
+    const std::size_t piece = 4 * host_scratch_.size();
+    for (std::size_t first = 0; first < indices.size(); first += piece) {
+      const std::size_t count = std::min(piece, indices.size() - first);
+      for_each_with_slot(count, unsigned(host_scratch_.size()), [&](std::size_t k, unsigned slot) {
+        const std::size_t index = indices[first + k];
+        balls[index] = host_.solve_ball(sources[index], radius, host_scratch_[slot]);
+      });
+      statistics_.solved_on_host += count;
+      done += count;
+      tell();
+    }
+  };
+  // The host unpacks one launch (and solves its balls too big for the
+  // device) while the device runs the next.
   Launch launches[2];
   const auto unpack = [&](const Launch& launch) {
+    std::vector<std::size_t> too_big;
     for (std::size_t k = 0; k < launch.count; ++k) {
       Ball& ball = balls[launch.first + k];
       if (launch.sizes[k] == kUnsolved) {
-        ball = host_.solve_ball(sources[launch.first + k], radius, scratch);
-        ++statistics_.solved_on_host;
+        too_big.push_back(launch.first + k);
         continue;
       }
       const auto begin = std::ptrdiff_t(launch.starts[k]), end = begin + std::ptrdiff_t(launch.sizes[k]);
       ball.vertices.assign(launch.vertices.begin() + begin, launch.vertices.begin() + end);
       ball.distances.assign(launch.distances.begin() + begin, launch.distances.begin() + end);
     }
+    done += launch.count - too_big.size();
+    tell();
+    solve_on_host(too_big);
   };
   std::size_t index = 0;
   for (std::size_t first = 0; first < sources.size(); first += balls_per_launch_, ++index) {

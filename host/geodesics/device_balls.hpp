@@ -6,6 +6,7 @@
 // (the device rounds in float, the host in double; docs/GEODESICS.md says
 // how close). A ball too big for a work-group's table is solved on the
 // host by the same method, so every ball comes back whatever its size.
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -34,13 +35,18 @@ class DeviceBallSolver {
     double seconds = 0;         // everything: uploads, kernels, reads, the host's balls
   };
 
-  // `host` solves the balls the device cannot hold; it is read, not kept
-  // beyond this solver's life, and lends its stencils to the device.
-  // Throws UserError when the mesh's buffers would not fit the device.
-  DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeMethod& host, const DeviceDescription& device);
+  // `host` solves the balls the device cannot hold, on `threads` threads
+  // (0: every core); it is read, not kept beyond this solver's life, and
+  // lends its stencils to the device. Throws UserError when the mesh's
+  // buffers would not fit the device.
+  DeviceBallSolver(const SurfaceMesh& mesh, const FastIterativeMethod& host, const DeviceDescription& device,
+                   unsigned threads = 1);
 
   // The ball of radius `radius` around each of `sources`, in their order.
-  std::vector<Ball> solve_balls(std::span<const VertexId> sources, double radius);
+  // `solved`, when given, hears how many are done, after each launch and
+  // every few of the host's balls (which may take a second each).
+  std::vector<Ball> solve_balls(std::span<const VertexId> sources, double radius,
+                                const std::function<void(std::size_t)>& solved = {});
 
   // The most vertices (the ball and its margin) one work-group holds.
   std::size_t slots() const { return std::size_t{1} << slot_bits_; }
@@ -55,6 +61,7 @@ class DeviceBallSolver {
   void read_back(Launch& launch);
 
   const FastIterativeMethod& host_;
+  std::vector<SolverScratch> host_scratch_;  // one per thread solving the host's balls
   DeviceDescription device_;
   unsigned slot_bits_;
   std::size_t work_group_size_;

@@ -12,6 +12,7 @@
 // vertex lies in the other's ball. Beyond that the store answers +inf:
 // symmetric, like every distance the particle system reads.
 #include <array>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -99,8 +100,10 @@ class LocalDistances final : public DistanceStore {
     std::size_t on_device = 0;
   };
   // The balls of `vertices`, in their order, without mutex_: on the device
-  // when the store has one (all in one call), else one by one on this thread.
-  Solved solve_now(std::span<const VertexId> vertices, SolverScratch& scratch) const;
+  // when the store has one (all in one call; `progress` hears how many are
+  // done), else one by one on this thread.
+  Solved solve_now(std::span<const VertexId> vertices, SolverScratch& scratch,
+                   const std::function<void(std::size_t)>& progress = {}) const;
   // prefetch()'s balls on the device, kept as they come.
   void solve_on_device(std::span<const VertexId> missing, ProgressLine& progress) const;
   // Solves `taken` (claimed from the queue) with `lock` on mutex_ released
