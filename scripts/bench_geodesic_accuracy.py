@@ -75,6 +75,23 @@ def read_off_triangles(path):
     return positions, triangles
 
 
+def components(vertex_count, triangles):
+    """Each vertex's piece: the smallest vertex it is joined to through triangles."""
+    parent = list(range(vertex_count))
+
+    def root(v):
+        while parent[v] != v:
+            parent[v] = parent[parent[v]]
+            v = parent[v]
+        return v
+    for a, b, c in triangles:
+        for u, v in ((a, b), (b, c)):
+            ru, rv = root(u), root(v)
+            if ru != rv:
+                parent[max(ru, rv)] = min(ru, rv)
+    return [root(v) for v in range(vertex_count)]
+
+
 def exact_worker(mesh, sources, out):
     """Writes {"distances": [[...] per source]} (exact, per input vertex) or {"refused": why} to OUT."""
     import numpy
@@ -90,10 +107,18 @@ def exact_worker(mesh, sources, out):
         return
     solver = geodesic.PyGeodesicAlgorithmExact(numpy.array(positions, dtype=float),
                                                numpy.array(triangles, dtype=numpy.int32))
+    # Only the source's own piece is asked for: pygeodesic's answer for a
+    # vertex it cannot reach carries an undefined source index, which
+    # sometimes overflows its conversion (blobby_3cc, bones).
+    piece = components(len(positions), triangles)
     rows = []
     for source in sources:
-        distances, _ = solver.geodesicDistances(numpy.array([source]), None)
-        rows.append([float(d) if math.isfinite(d) and d < 1e300 else math.inf for d in distances])
+        targets = numpy.array([v for v in range(len(positions)) if piece[v] == piece[source]], dtype=numpy.int32)
+        reached, _ = solver.geodesicDistances(numpy.array([source]), targets)
+        row = [math.inf] * len(positions)
+        for v, d in zip(targets, reached):
+            row[int(v)] = float(d) if math.isfinite(d) and d < 1e300 else math.inf
+        rows.append(row)
     Path(out).write_text(json.dumps({"distances": rows}))
 
 
