@@ -21,8 +21,9 @@ namespace meshparticles {
 namespace {
 
 constexpr std::array<char, 8> kMagic = {'M', 'P', 'G', 'E', 'O', 'D', 'S', 'T'};
-// Bump when the file layout or the solvers' results change.
-constexpr std::uint32_t kFormatVersion = 1;
+// Bump when the file layout or the solvers' results change (2: fim takes
+// its vertices nearest first, 0.18.0).
+constexpr std::uint32_t kFormatVersion = 2;
 
 struct CacheHeader {
   std::array<char, 8> magic = kMagic;

@@ -1,21 +1,26 @@
 #pragma once
 // The fast iterative method (Jeong & Whitaker 2008; on triangle meshes Fu,
 // Jeong, Pan, Kirby & Whitaker 2011): the geodesics the paper's own GPU
-// used. Every vertex whose distance dropped is active; each round, every
-// active vertex pushes the updates it takes part in (its edges, its
-// triangles with the other corner reached, its unfolded virtual triangles;
-// the same stencils and point-source update as fast marching) and the
-// vertices they lower become active for the next. Nothing waits for a
-// shortest-first order, so many vertices (and, on a device, many balls)
-// advance at once; it stops when no distance drops.
+// used. Every vertex whose distance dropped is active; an active vertex
+// pushes the updates it takes part in (its edges, its triangles with the
+// other corner reached, its unfolded virtual triangles; the same stencils
+// and point-source update as fast marching) and the vertices they lower
+// become active, whether or not they were active before. It stops when no
+// distance drops: no update lowers any vertex (a fixed point).
 //
-// The result is the greatest fixed point of the updates: where fast
-// marching's acceptance order is causal (acute meshes) the two agree.
-// Elsewhere fast marching drops the updates that would lower a vertex it
-// has accepted, and fim keeps them: on slivers the two differ by up to a
-// fifth of a distance, fim the nearer the exact one (docs/GEODESICS.md,
-// "On real meshes"). This host solver is the oracle of the device's
-// (device_balls.hpp), which runs the same rounds.
+// On a device (device_balls.hpp, the Voronoi diagrams) every active vertex
+// pushes at once, round after round, so many vertices and many balls
+// advance together. This host solver, their oracle, takes the active
+// vertices nearest first instead (a label-correcting Dijkstra): each is
+// taken about once, not 20 to 50 times. A fixed point of the same updates,
+// though not the rounds' bits where updates are not monotone: from vertex 0
+// of bull, cheese and man, within 0.3% of the rounds' (mean 3e-5).
+//
+// Where fast marching's acceptance order is causal (acute meshes) the two
+// agree. Elsewhere fast marching drops the updates that would lower a
+// vertex it has accepted, and fim keeps them: on slivers the two differ by
+// up to a fifth of a distance, fim the nearer the exact one
+// (docs/GEODESICS.md, "On real meshes").
 #include "geodesics/geodesic_solver.hpp"
 #include "geodesics/triangle_stencils.hpp"
 

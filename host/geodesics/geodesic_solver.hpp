@@ -130,8 +130,8 @@ std::vector<float> ring_edge_lengths(const SurfaceMesh& mesh);
 // The solver of the host's marches one at a time (farthest-point starts,
 // the distance to the nearest particle, the spread's covers) in a run that
 // asked for `method`. The fast iterative method pays where many balls are
-// solved at once on a device; alone on the host its rounds redo what fast
-// marching does once (ten times slower, docs/GEODESICS.md), so those
+// solved at once on a device; alone on the host it redoes what fast
+// marching does once (3 to 11 times slower, docs/GEODESICS.md), so those
 // marches use fast marching, whose stencils and update it shares and whose
 // distances it reaches to within 0.002% on average.
 GeodesicMethod host_march_method(GeodesicMethod method);

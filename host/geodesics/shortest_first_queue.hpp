@@ -91,6 +91,16 @@ class ShortestFirstQueue {
     distances_[v] = candidate;
     return true;
   }
+  // lower() for a label-correcting solver (fast_iterative.cpp): v may be
+  // accepted already, and is then no longer, to be queued again.
+  bool reopen(VertexId v, double candidate) {
+    if (!(candidate < distances_[v])) return false;
+    if (!bound_.empty() && candidate >= double(bound_[v])) return false;
+    if (distances_[v] == std::numeric_limits<double>::infinity()) touched_.push_back(v);
+    distances_[v] = candidate;
+    accepted_[v] = 0;
+    return true;
+  }
   // lower()'s first test alone, without a branch (| on whole numbers, not ||).
   bool would_lower(VertexId v, double candidate) const {
     return (unsigned(accepted_[v] != 0) | unsigned(candidate >= distances_[v])) == 0;

@@ -28,7 +28,7 @@ DefaultBackend default_on_local_balls(const DeviceDescription* device, const Loc
   }
   if (!device || !device->is_gpu()) return twin("no GPU selected");
   // A ball and its margin must fit a work-group's table, or the host solves
-  // it by fim, ten times slower than the twin's fast marching.
+  // it by fim, 3 to 11 times slower than the twin's fast marching.
   const std::size_t slots = device_ball_slots(*device);
   if (balls.vertices_per_ball > double(slots) / 2) {
     return twin("balls of about " + std::to_string(std::size_t(balls.vertices_per_ball)) + " vertices, more than " +
