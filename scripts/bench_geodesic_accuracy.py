@@ -2,7 +2,7 @@
 """Our geodesic solvers against exact geodesic distances, on real meshes.
 
     scripts/bench_geodesic_accuracy.py [MESH ...] [--corpus] [--max-vertices V] [--sources K]
-                                       [--binary FILE] [--json FILE]
+                                       [--binary FILE] [--json FILE] [--png FILE]
 
 For each mesh, K sources (vertices spread over the input's numbering:
 0, V/K, 2V/K, ...), each solved by `meshparticles geodesics MESH --source S
@@ -29,7 +29,8 @@ pygeodesic runs in the peers' virtual environment
 ($MESHPARTICLES_PEER_VENV, default ${XDG_CACHE_HOME:-~/.cache}/meshparticles/peer-venv,
 made on first use), never a dependency of meshparticles; this script
 re-invokes itself there with `--exact-worker`. Progress on stderr, a
-Markdown table and a summary on stdout. Exit status 0; 2 for a missing
+Markdown table and a summary on stdout; `--png` draws each mesh's worst
+error each way, fmm against fim (Debian's python3-matplotlib). Exit status 0; 2 for a missing
 binary, mesh or venv.
 """
 import argparse
@@ -220,6 +221,32 @@ def summary(rows):
     return "\n".join(lines)
 
 
+def draw(rows, path):
+    """Each mesh's worst over- and under-estimate, fmm across, fim up: below the diagonal fim is nearer."""
+    import matplotlib
+    matplotlib.use("Agg")  # files only
+    import matplotlib.pyplot as plt
+    figure, panels = plt.subplots(1, 2, figsize=(10, 4.8))
+    for panel, key, title in ((panels[0], "over", "worst too long"), (panels[1], "under", "worst too short")):
+        fmm = [100 * abs(r["fmm"][key]) for r in rows]
+        fim = [100 * abs(r["fim"][key]) for r in rows]
+        top = max(fmm + fim + [1.0]) * 1.05
+        panel.plot([0, top], [0, top], color="0.6", linewidth=0.8)
+        panel.scatter(fmm, fim, s=14)
+        for row, x, y in zip(rows, fmm, fim):
+            if max(x, y) > 10:
+                panel.annotate(row["mesh"].rsplit(".", 1)[0], (x, y), fontsize=7, xytext=(3, 3),
+                               textcoords="offset points")
+        panel.set_xlim(0, top)
+        panel.set_ylim(0, top)
+        panel.set_xlabel("fmm, % of the exact distance")
+        panel.set_ylabel("fim, %")
+        panel.set_title(title)
+    figure.suptitle(f"Against exact geodesics: each mesh's worst vertex ({len(rows)} meshes)")
+    figure.tight_layout()
+    figure.savefig(path, dpi=110)
+
+
 def parse_arguments(argv):
     parser = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0])
     parser.add_argument("meshes", nargs="*", type=Path, help="meshes (OFF, triangles); none: --corpus")
@@ -228,6 +255,7 @@ def parse_arguments(argv):
     parser.add_argument("--sources", type=int, default=3, help="sources per mesh")
     parser.add_argument("--binary", type=Path, default=ROOT / "build" / "meshparticles")
     parser.add_argument("--json", type=Path, help="write the rows here too")
+    parser.add_argument("--png", type=Path, help="draw each mesh's worst errors, fmm against fim, here")
     parser.add_argument("--exact-worker", nargs=3, metavar=("MESH", "SOURCES", "OUT"), help=argparse.SUPPRESS)
     arguments = parser.parse_args(argv)
     if arguments.sources < 1:
@@ -267,6 +295,8 @@ def main(argv):
     print(summary(rows))
     if arguments.json:
         arguments.json.write_text(json.dumps(rows, indent=1))
+    if arguments.png:
+        draw(rows, arguments.png)
     return 0
 
 
