@@ -34,7 +34,6 @@ struct SolverScratch {
   std::vector<std::uint32_t> origin;    // per vertex: the source its distance comes from (several sources)
   std::vector<VertexId> touched;        // the vertices the solve in progress gave a distance
   std::vector<VertexId> lowered;        // fast marching: those lowered by the vertex just accepted
-  std::vector<VertexId> active, next_active;  // the fast iterative method: this round's vertices, the next's
   std::vector<double> distances;        // per vertex: the buffer of ball solves
   std::vector<std::uint64_t> ball_entries, ball_spare;  // a ball's (vertex, distance) pairs being sorted
 
