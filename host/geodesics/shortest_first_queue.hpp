@@ -85,19 +85,12 @@ class ShortestFirstQueue {
   // before queueing it once: lower() returns whether v's distance dropped.
   bool lower(VertexId v, double candidate) {
     // One branch for both tests: which of them fails is hard to predict.
-    if (!would_lower(v, candidate)) return false;
-    if (!bound_.empty() && candidate >= double(bound_[v])) return false;  // no nearer than the bound says
-    if (distances_[v] == std::numeric_limits<double>::infinity()) touched_.push_back(v);
-    distances_[v] = candidate;
-    return true;
+    return would_lower(v, candidate) && set_within_bound(v, candidate);
   }
   // lower() for a label-correcting solver (fast_iterative.cpp): v may be
   // accepted already, and is then no longer, to be queued again.
   bool reopen(VertexId v, double candidate) {
-    if (!(candidate < distances_[v])) return false;
-    if (!bound_.empty() && candidate >= double(bound_[v])) return false;
-    if (distances_[v] == std::numeric_limits<double>::infinity()) touched_.push_back(v);
-    distances_[v] = candidate;
+    if (!(candidate < distances_[v]) || !set_within_bound(v, candidate)) return false;
     accepted_[v] = 0;
     return true;
   }
@@ -123,6 +116,14 @@ class ShortestFirstQueue {
  private:
   static constexpr std::uint32_t kNotQueued = SolverScratch::kNotQueued;
   static VertexId vertex_of(std::uint64_t entry) { return VertexId(entry & 0xFFFFFFFFu); }
+
+  // v's distance set to `candidate` (below it), unless the bound forbids.
+  bool set_within_bound(VertexId v, double candidate) {
+    if (!bound_.empty() && candidate >= double(bound_[v])) return false;  // no nearer than the bound says
+    if (distances_[v] == std::numeric_limits<double>::infinity()) touched_.push_back(v);
+    distances_[v] = candidate;
+    return true;
+  }
 
   void place(std::uint32_t at, std::uint64_t entry) {
     heap_[at] = entry;
