@@ -157,7 +157,8 @@ def our_distances(binary, mesh, source, solver):
     return [float(x) for x in done.stdout.split()]
 
 
-def mean_edge_length(binary, mesh):
+def mesh_size(binary, mesh):
+    """(vertices, mean edge length) as `meshparticles info` gives them."""
     info = shared.run_program([str(binary), "info", str(mesh), "--json"], capture_output=True, text=True)
     if info.returncode != 0:
         raise Failure(shared.last_line(info.stderr).replace("meshparticles: error: ", ""))
@@ -170,8 +171,7 @@ def percentile(values, q):
     return ordered[min(len(ordered) - 1, int(q * (len(ordered) - 1) + 0.5))]
 
 
-def compare_mesh(binary, python, mesh, source_count, work):
-    vertices, edge = mean_edge_length(binary, mesh)
+def compare_mesh(binary, python, mesh, vertices, edge, source_count, work):
     sources = sorted(set(k * vertices // source_count for k in range(source_count)))
     exact = exact_distances(python, mesh, sources, work)
     errors = {solver: [] for solver in SOLVERS}
@@ -281,11 +281,12 @@ def main(argv):
     with tempfile.TemporaryDirectory(prefix="geodesic-accuracy-") as work:
         for k, mesh in enumerate(meshes, 1):
             try:
-                vertices, _ = mean_edge_length(arguments.binary, mesh)
+                vertices, edge = mesh_size(arguments.binary, mesh)
                 if (arguments.corpus or not arguments.meshes) and vertices > arguments.max_vertices:
                     continue
                 progress(f"[{k}/{len(meshes)}] {mesh.name} ({vertices:,} vertices)")
-                rows.append(compare_mesh(arguments.binary, python, mesh, arguments.sources, Path(work)))
+                rows.append(compare_mesh(arguments.binary, python, mesh, vertices, edge, arguments.sources,
+                                         Path(work)))
             except Failure as why:
                 progress(f"{mesh.name}: left out ({why})")
     if not rows:
