@@ -14,6 +14,7 @@ namespace {
 constexpr std::uint32_t kBatch = 16;
 constexpr std::size_t kCacheLine = 64;
 constexpr std::size_t kStencilLinesFetched = 4;  // 8 triangles
+constexpr std::size_t kVirtualLinesFetched = 1;  // 3 virtual updates
 
 }  // namespace
 
@@ -21,7 +22,15 @@ FastMarching::FastMarching(const SurfaceMesh& mesh)
     : GeodesicSolver(mesh.vertex_count()),
       mesh_(mesh),
       edge_lengths_(ring_edge_lengths(mesh)),
-      stencils_(build_triangle_stencils(mesh)) {}
+      stencils_(build_triangle_stencils(mesh)) {
+  const auto& ring = mesh.ring_offsets();
+  starts_.reserve(ring.size());
+  for (std::size_t v = 0; v < ring.size(); ++v) {
+    starts_.push_back({ring[v], stencils_.triangle_offsets[v], stencils_.virtual_offsets[v], 0});
+  }
+  stencils_.triangle_offsets = {};
+  stencils_.virtual_offsets = {};
+}
 
 void FastMarching::march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,
                          double max_distance, std::span<const float> bound,
@@ -40,9 +49,9 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
                               double max_distance, std::span<const float> bound,
                               std::span<const std::uint32_t> origins) const {
   ShortestFirstQueue queue(sources, distances, scratch, max_distance, bound, !origins.empty());
-  const auto& offsets = mesh_.ring_offsets();
   const auto& neighbors = mesh_.ring_neighbors();
   const auto& triangles = stencils_.triangles;
+  const auto& virtuals = stencils_.virtual_updates;
   // Which source each vertex's distance comes from. A point-source update
   // places one virtual source from d(X) and d(Y); where two sources' fronts
   // meet, X and Y measure from different sources and that point would be
@@ -60,26 +69,32 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
   while (auto accepted = queue.pop_next()) {
     const VertexId x = *accepted;
     const double dx = distances[x];
+    const UpdateStarts here = starts_[x], end = starts_[x + 1];
     lowered.clear();
     // A vertex's stencils (about 200 bytes, read in acceptance order) miss
     // the cache on any mesh past a few thousand vertices. The queue's front
     // is the next vertex accepted unless this one lowers a neighbour below
-    // it: its stencils, ring and edge lengths are fetched while this one is
-    // processed. (Pointers, not references: it may have no triangles and be
-    // the last vertex.)
+    // it: its stencils, virtual updates, ring and edge lengths are fetched
+    // while this one is processed. (Pointers, not references: it may have
+    // no triangles and be the last vertex.)
     if (const auto next = queue.front()) {
-      const auto* stencils = reinterpret_cast<const char*>(triangles.data() + stencils_.triangle_offsets[*next]);
+      const UpdateStarts& its = starts_[*next];
+      const auto* stencils = reinterpret_cast<const char*>(triangles.data() + its.triangles);
       for (std::size_t line = 0; line < kStencilLinesFetched; ++line) __builtin_prefetch(stencils + kCacheLine * line);
-      __builtin_prefetch(neighbors.data() + offsets[*next]);
-      __builtin_prefetch(edge_lengths_.data() + offsets[*next]);
+      const auto* virtual_updates = reinterpret_cast<const char*>(virtuals.data() + its.virtuals);
+      for (std::size_t line = 0; line < kVirtualLinesFetched; ++line) {
+        __builtin_prefetch(virtual_updates + kCacheLine * line);
+      }
+      __builtin_prefetch(neighbors.data() + its.ring);
+      __builtin_prefetch(edge_lengths_.data() + its.ring);
     }
     // Along edges: exact next to the source, an upper bound elsewhere. The
     // few neighbours this lowers (about one in five) are found without a
     // branch, then lowered.
-    for (std::uint32_t first = offsets[x], end = offsets[x + 1]; first < end; first += kBatch) {
+    for (std::uint32_t first = here.ring; first < end.ring; first += kBatch) {
       std::array<std::uint32_t, kBatch> nearer;
       std::uint32_t nearer_count = 0;
-      for (std::uint32_t k = first; k < std::min(end, first + kBatch); ++k) {
+      for (std::uint32_t k = first; k < std::min(end.ring, first + kBatch); ++k) {
         nearer[nearer_count] = k;
         nearer_count += std::uint32_t(queue.would_lower(neighbors[k], dx + edge_lengths_[k]));
       }
@@ -99,11 +114,10 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
     // Across each triangle with exactly one other corner accepted. Which
     // triangles those are is collected first without a branch (whether a
     // corner is accepted is a coin toss to the predictor), 16 at a time.
-    for (std::uint32_t first = stencils_.triangle_offsets[x], end = stencils_.triangle_offsets[x + 1]; first < end;
-         first += kBatch) {
+    for (std::uint32_t first = here.triangles; first < end.triangles; first += kBatch) {
       std::array<std::uint32_t, kBatch> ready;  // 2 * (k - first) + whether corner a is the accepted one
       std::uint32_t ready_count = 0;
-      for (std::uint32_t k = first; k < std::min(end, first + kBatch); ++k) {
+      for (std::uint32_t k = first; k < std::min(end.triangles, first + kBatch); ++k) {
         const TriangleAtVertex& t = triangles[k];
         const bool a_accepted = queue.is_accepted(t.a), b_accepted = queue.is_accepted(t.b);
         ready[ready_count] = 2 * (k - first) + std::uint32_t(a_accepted);
@@ -118,8 +132,8 @@ void FastMarching::march_from(std::span<const VertexId> sources, std::span<doubl
       }
     }
     // Across unfolded virtual triangles at obtuse corners.
-    for (std::uint32_t k = stencils_.virtual_offsets[x]; k < stencils_.virtual_offsets[x + 1]; ++k) {
-      const VirtualUpdate& u = stencils_.virtual_updates[k];
+    for (std::uint32_t k = here.virtuals; k < end.virtuals; ++k) {
+      const VirtualUpdate& u = virtuals[k];
       if (queue.is_accepted(u.target) || !queue.is_accepted(u.other) || !same_origin(u.other, x)) continue;
       lower_and_note(u.target, point_source_update(u.frame, dx, distances[u.other]));
     }
