@@ -306,6 +306,40 @@ INSTANTIATE_TEST_SUITE_P(CgalMeshes, RelaxationStopsEarly,
                            return file.substr(0, file.find('.'));
                          });
 
+// And where the first state more spread than the start leaves holes far over
+// the cover limit (here a limit of half the start's own cover, which no state
+// comes near), the rounds stop at that check (`uncovered`), with the rounds
+// before it as they were; without the early stops they go on to round 100
+// and keep nothing either.
+TEST(Relaxation, StopsWhereAStateMoreSpreadLeavesHolesFarOverTheCoverLimit) {
+  const SurfaceMesh input = committed("sphere.off");
+  constexpr std::size_t kParticles = 128;
+  RunRequest request;
+  request.particles = kParticles;
+  const RefinedMesh working = build_working_mesh(input, plan_run(input, request).spread->working_mesh);
+  const SurfaceMesh& mesh = working.mesh;
+  const auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
+  const double d_hex = hexagonal_spacing(input.area(), kParticles);
+  const double tight = 0.5 * straight_cover(mesh, start);
+  const RelaxationOutcome full = relax_spacing(mesh, start, d_hex, 150, {tight}, 0, true, 0, /*stop_early=*/false);
+  EXPECT_EQ(relaxation_stop_name(full.stopped), std::string("no_candidate"));
+  EXPECT_EQ(full.candidates.front().round, 0u);
+  // The first check (every 25 rounds) past the start's spacing.
+  std::size_t check = 25;
+  while (check <= full.round_spacings.size() && !(full.round_spacings[check - 1] > full.start_spacing)) check += 25;
+  ASSERT_LE(check, full.round_spacings.size());
+
+  const RelaxationOutcome early = relax_spacing(mesh, start, d_hex, 150, {tight}, 0, true);
+  EXPECT_EQ(relaxation_stop_name(early.stopped), std::string("uncovered"));
+  EXPECT_EQ(early.candidates.front().round, 0u);
+  ASSERT_EQ(early.round_spacings.size(), check);
+  for (std::size_t k = 0; k < check; ++k) EXPECT_EQ(early.round_spacings[k], full.round_spacings[k]) << k + 1;
+  // A limit the states keep within: no such stop.
+  const RelaxationOutcome loose = relax_spacing(mesh, start, d_hex, 150, {1.1 * straight_cover(mesh, start)}, 0, true);
+  EXPECT_NE(relaxation_stop_name(loose.stopped), std::string("uncovered"));
+  EXPECT_GT(loose.candidates.front().round, 0u);
+}
+
 // A whole run: the relaxed particles are vertices of the run's working
 // mesh where they stopped, more evenly spaced than the sweeps alone, with a
 // cover within 1.1x the farthest start's.

@@ -43,6 +43,7 @@ enum class RelaxationStop {
   no_candidate,  // no state more spread than the start by kHopelessAfter rounds
   squeezed,      // none yet, and the even-density rounds held a pair far under the start's spacing
   out_of_reach,  // none yet, and the growth could not pass the start's spacing by then
+  uncovered,     // none yet, and a state more spread than the start left holes far over the cover limit
 };
 const char* relaxation_stop_name(RelaxationStop stop);
 
@@ -80,9 +81,11 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 // `start_geodesic_spacing` (0: no such test). The rounds stop early
 // (`stopped`) where no state more spread than the start has come by
 // kHopelessAfter rounds, or none has come yet and the even-density rounds
-// squeezed a pair far under the start's spacing (squeezed) or the growing
-// radius could not pass it by then (out_of_reach; neither where not
-// `stop_early`, which tests use to see the rounds they skip). On `threads`
+// squeezed a pair far under the start's spacing (squeezed), the growing
+// radius could not pass it by then (out_of_reach), or a state more spread
+// than the start left holes far over every cover limit (uncovered; none of
+// the three where not `stop_early`, which tests use to see the rounds they
+// skip). On `threads`
 // threads (0: every core). Deterministic: the same mesh and start give the
 // same bits, whatever the threads. Unless `quiet`, a progress line.
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
