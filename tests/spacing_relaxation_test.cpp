@@ -162,17 +162,29 @@ TEST(SurfaceWalk, ReachesTheNearestSurfacePoint) {
   }
 }
 
-class RelaxationWidens : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
-  const SurfaceMesh input = committed(GetParam());
+// A committed mesh's spread working mesh at 128 particles, and their
+// farthest start on it.
+struct RelaxationStart {
+  RefinedMesh working;
+  std::vector<VertexId> start;
+  double d_hex = 0;
+};
+RelaxationStart farthest_start_to_relax(const char* mesh_name) {
+  const SurfaceMesh input = committed(mesh_name);
   constexpr std::size_t kParticles = 128;
   RunRequest request;
   request.particles = kParticles;
-  const RefinedMesh working = build_working_mesh(input, plan_run(input, request).spread->working_mesh);
+  RelaxationStart relaxation{build_working_mesh(input, plan_run(input, request).spread->working_mesh), {},
+                             hexagonal_spacing(input.area(), kParticles)};
+  relaxation.start = place_particles(relaxation.working.mesh, {Init::farthest, kParticles, 1, std::nullopt});
+  return relaxation;
+}
+
+class RelaxationWidens : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(RelaxationWidens, TheSmallestSpacingOnTheSurface) {
+  const auto [working, start, d_hex] = farthest_start_to_relax(GetParam());
   const SurfaceMesh& mesh = working.mesh;
-  const auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
-  const double d_hex = hexagonal_spacing(input.area(), kParticles);
   const double cover_limit = 1.1 * straight_cover(mesh, start);
   const RelaxationOutcome outcome = relax_spacing(mesh, start, d_hex, 150, {cover_limit}, 0, true);
   ASSERT_EQ(outcome.candidates.size(), 1u);
@@ -312,14 +324,8 @@ INSTANTIATE_TEST_SUITE_P(CgalMeshes, RelaxationStopsEarly,
 // before it as they were; without the early stops they go on to round 100
 // and keep nothing either.
 TEST(Relaxation, StopsWhereAStateMoreSpreadLeavesHolesFarOverTheCoverLimit) {
-  const SurfaceMesh input = committed("sphere.off");
-  constexpr std::size_t kParticles = 128;
-  RunRequest request;
-  request.particles = kParticles;
-  const RefinedMesh working = build_working_mesh(input, plan_run(input, request).spread->working_mesh);
+  const auto [working, start, d_hex] = farthest_start_to_relax("sphere.off");
   const SurfaceMesh& mesh = working.mesh;
-  const auto start = place_particles(mesh, {Init::farthest, kParticles, 1, std::nullopt});
-  const double d_hex = hexagonal_spacing(input.area(), kParticles);
   const double tight = 0.5 * straight_cover(mesh, start);
   const RelaxationOutcome full = relax_spacing(mesh, start, d_hex, 150, {tight}, 0, true, 0, /*stop_early=*/false);
   EXPECT_EQ(relaxation_stop_name(full.stopped), std::string("no_candidate"));
