@@ -71,9 +71,10 @@ constexpr double kReachMargin = 1.05;
 // the first state more spread than the start was within the limit (0.96 of
 // it at most, knot1 at 256), so a candidate; no later check of theirs was
 // over 1.05 of it (refined_elephant at 4,096, round 75). Of those that kept
-// none, armadillo at 4,096 was at 1.20 from round 75 and
-// diplodocus at 4,096 at 1.48 at round 25 (then 1.06, 1.54, 1.52): each ran
-// to round 100 for nothing, 2.7 s and 2.3 s of 7.6 s and 6.6 s runs.
+// none, diplodocus at 4,096 was at 1.48 at round 25 (then 1.06, 1.54, 1.52)
+// and ran to round 100 for nothing: now its relaxation takes 0.8 to 1.0 s,
+// not 2.4. Armadillo at 4,096, at 1.20 from round 75, stops there, little
+// sooner in time: the growing rounds seldom move a particle.
 constexpr double kUncoveredShare = 1.15;
 
 // Per vertex, the sum of its triangles' area-weighted normals.

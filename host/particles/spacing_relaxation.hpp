@@ -85,9 +85,9 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 // radius could not pass it by then (out_of_reach), or a state more spread
 // than the start left holes far over every cover limit (uncovered; none of
 // the three where not `stop_early`, which tests use to see the rounds they
-// skip). On `threads`
-// threads (0: every core). Deterministic: the same mesh and start give the
-// same bits, whatever the threads. Unless `quiet`, a progress line.
+// skip). On `threads` threads (0: every core). Deterministic: the same mesh
+// and start give the same bits, whatever the threads. Unless `quiet`, a
+// progress line.
 RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<VertexId>& start, double d_hex,
                                 std::size_t max_rounds, const std::vector<double>& cover_limits,
                                 double start_geodesic_cover, bool quiet, double start_geodesic_spacing = 0,
