@@ -182,6 +182,9 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
     std::optional<RadiusGrowth> growth;
     // The last round a first candidate can come at.
     const std::size_t horizon = std::min(max_rounds, kHopelessAfter);
+    // The widest cover a candidate may have: `uncovered` is judged against it.
+    const double widest_limit = cover_limits.empty() ? std::numeric_limits<double>::infinity()
+                                                     : *std::max_element(cover_limits.begin(), cover_limits.end());
     outcome.stopped = RelaxationStop::max_rounds;
     double foam_widest = 0;  // the widest smallest spacing of rounds kSqueezeFrom to kSqueezeTo
     for (std::size_t round = 1; round <= max_rounds; ++round) {
@@ -219,8 +222,7 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
                                       [&](const RelaxationCandidate& c) { return spacing > c.spacing; });
       if ((round % kCheckEvery == 0 || round == max_rounds) && wanted) {
         const double cover = to_geodesic * straight_cover(mesh, normals, relaxation.positions(), relaxation.normals(), threads);
-        if (stop_early && none_yet &&
-            cover > kUncoveredShare * *std::max_element(cover_limits.begin(), cover_limits.end())) {
+        if (stop_early && none_yet && cover > kUncoveredShare * widest_limit) {
           outcome.stopped = RelaxationStop::uncovered;  // holes no growth closes: it will not be kept
           break;
         }
