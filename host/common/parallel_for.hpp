@@ -11,13 +11,15 @@
 #include <mutex>
 #include <vector>
 
+#include "common/worker_pool.hpp"
 #include "common/worker_threads.hpp"
 
 namespace meshparticles {
 
 // Runs work(k, slot) for k = 0 .. count - 1 on at most `threads` threads
-// (the caller's among them); `slot`, below `threads`, names the thread
-// running it, so that each may keep scratch of its own. The first exception
+// (the caller's among them, the others the worker pool's where it is free);
+// `slot`, below `threads`, names the thread running it, so that each may
+// keep scratch of its own. The first exception
 // stops the others from taking more and is rethrown here.
 inline void for_each_with_slot(std::size_t count, unsigned threads,
                                const std::function<void(std::size_t, unsigned)>& work) {
@@ -35,7 +37,9 @@ inline void for_each_with_slot(std::size_t count, unsigned threads,
     }
   };
   const unsigned used = unsigned(std::clamp<std::size_t>(threads, 1, count));
-  {
+  if (used == 1) {
+    share(0);
+  } else if (!run_on_worker_pool(used - 1, share)) {  // the pool is busy: threads of its own
     WorkerThreads workers(used - 1, [&](unsigned index) { share(index + 1); });
     share(0);
   }
