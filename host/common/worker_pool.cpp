@@ -115,14 +115,17 @@ class WorkerPool {
 bool run_on_worker_pool(unsigned helpers, const std::function<void(unsigned)>& share) {
   // Never destroyed (its threads wait until the process ends; a static one
   // would be destroyed with them still waiting on it). After a fork the
-  // child's copy has no threads: a new one, the old left alone.
+  // child's copy has no threads: a new one, the old kept where a leak
+  // checker sees it held (a death test's child exits through it).
   static std::mutex guard;
   static WorkerPool* pool = nullptr;
+  static std::vector<WorkerPool*> forked_away;
   static pid_t owner = 0;
   WorkerPool* mine = nullptr;
   {
     const std::lock_guard lock(guard);
     if (!pool || owner != getpid()) {
+      if (pool) forked_away.push_back(pool);
       pool = new WorkerPool;
       owner = getpid();
     }
