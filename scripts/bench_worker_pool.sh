@@ -9,7 +9,7 @@
 #
 # Why: the relaxation runs about 1,300 loops a run on bunny00 at n = 4,096 and
 # the evening one per independent set; what a loop costs besides its work is
-# paid that often. Results: docs/PERFORMANCE.md ("Threads").
+# paid that often. Results: docs/PERFORMANCE.md ("At scale", what changed).
 set -euo pipefail
 loops=${1:-2000}
 root=$(cd "$(dirname "$0")/.." && pwd)

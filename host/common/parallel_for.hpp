@@ -19,8 +19,8 @@ namespace meshparticles {
 // Runs work(k, slot) for k = 0 .. count - 1 on at most `threads` threads
 // (the caller's among them, the others the worker pool's where it is free);
 // `slot`, below `threads`, names the thread running it, so that each may
-// keep scratch of its own. The first exception
-// stops the others from taking more and is rethrown here.
+// keep scratch of its own. The first exception stops the others from taking
+// more and is rethrown here.
 inline void for_each_with_slot(std::size_t count, unsigned threads,
                                const std::function<void(std::size_t, unsigned)>& work) {
   if (count == 0) return;

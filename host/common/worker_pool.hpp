@@ -6,9 +6,10 @@
 // machine, and a loop on 16 threads starts 15.
 //
 // One caller's work at a time: a loop asked for while another runs (a loop
-// inside a loop's work, or `batch`'s meshes side by side) is refused, and its
-// caller starts threads of its own as before. In a forked child, whose copy
-// of the pool has no threads, a new pool starts.
+// inside a loop's work, as correspond's shapes run theirs, or two Python
+// threads' calls at once) is refused, and its caller starts threads of its
+// own as before. In a forked child, whose copy of the pool has no threads, a
+// new pool starts.
 #include <functional>
 
 namespace meshparticles {
