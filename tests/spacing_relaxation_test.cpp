@@ -312,6 +312,7 @@ TEST_P(RelaxationStopsEarly, WhereItWillKeepNothing) {
 
 INSTANTIATE_TEST_SUITE_P(CgalMeshes, RelaxationStopsEarly,
                          ::testing::Values(EarlyStop{"turbine.off", RelaxationStop::squeezed, 25},
+                                           EarlyStop{"knot2.off", RelaxationStop::squeezed, 25},
                                            EarlyStop{"elephant.off", RelaxationStop::out_of_reach, 50}),
                          [](const ::testing::TestParamInfo<EarlyStop>& case_info) {
                            const std::string file = case_info.param.mesh;
