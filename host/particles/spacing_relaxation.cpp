@@ -50,12 +50,13 @@ constexpr std::size_t kHopelessAfter = 100;
 // (0.19.0) four more that keep none ran on: dino at 256 (0.890), knot2 at
 // 256 (0.873) and lion-head at 1,024 (0.859) to round 51, armadillo at
 // 4,096 (0.854) to round 75 (2.9 s of its 7 s run on 2 threads, a third of
-// the relaxation thrown away on the corpus benchmark's 46 runs). Stop 80 measured it again on 48
-// runs that reach round 25 (every CGAL model up to 60,000 vertices at
-// n = 256, 1,024 and 4,096 with 4 vertices a particle, the committed
-// meshes; 25 kept) and on 20 more seeds of the kept ones: every kept run
-// at 0.932 or more (atrium at 256, seeds 1 and 2; the other seeds 0.948 to
-// 1.099), every CGAL model's 0.987 or more. So 0.9: 3.5% under atrium.
+// the relaxation thrown away on the corpus benchmark's 46 runs). Measured
+// again (0.20.0) on 48 runs that reach round 25 (every CGAL model up to
+// 60,000 vertices at n = 256, 1,024 and 4,096 with 4 vertices a particle,
+// the committed meshes; 25 kept) and on 20 more seeds of the kept ones:
+// every kept run at 0.932 or more (atrium at 256, seeds 1 and 2; the other
+// seeds 0.948 to 1.099), every CGAL model's 0.987 or more. So 0.9: 3.5%
+// under atrium.
 constexpr std::size_t kSqueezeFrom = 11, kSqueezeTo = 25;
 constexpr double kSqueezedShare = 0.9;
 // And once the radius grows: while no state more spread than the start has
@@ -65,7 +66,8 @@ constexpr double kSqueezedShare = 0.9;
 // start's spacing over that bound was at most 0.957 before a first such
 // state (fandisk_large at 1,024, at round 100; knot1 at 256 0.953), and
 // at least 1.055 at round 51 on the 13 it stops there, all of them that
-// kept none and were not squeezed (bunny00 at 256; then knot2 at 256 1.116, squeezed since 0.20.0).
+// kept none and were not squeezed (bunny00 at 256; then knot2 at 256
+// 1.116, squeezed since 0.20.0).
 constexpr double kReachMargin = 1.05;
 // A state more spread than the start is a candidate only within a cover
 // limit. While none has come, one whose cover is over the (widest) limit by
@@ -79,8 +81,8 @@ constexpr double kReachMargin = 1.05;
 // over 1.05 of it (refined_elephant at 4,096, round 75). Of those that kept
 // none, diplodocus at 4,096 was at 1.48 at round 25 (then 1.06, 1.54, 1.52)
 // and ran to round 100 for nothing: now its relaxation takes 0.8 to 1.0 s,
-// not 2.4. Armadillo at 4,096, at 1.20 from round 75, stops there, little
-// sooner in time: the growing rounds seldom move a particle.
+// not 2.4. (Armadillo at 4,096, at 1.20 from round 75, stopped there to
+// 0.19.0; since 0.20.0 it is squeezed at round 25.)
 constexpr double kUncoveredShare = 1.15;
 
 // Per vertex, the sum of its triangles' area-weighted normals.
