@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <numeric>
 
@@ -15,6 +16,7 @@
 #include "geodesics/memory_guard.hpp"
 #include "geodesics/point_source_update.hpp"
 #include "geodesics/solver_factory.hpp"
+#include "geodesics/triangle_stencils.hpp"
 #include "mesh/io/mesh_reader.hpp"
 #include "fixtures/mesh_generator.hpp"
 #include "test_files.hpp"
@@ -179,6 +181,24 @@ TEST(Geodesics, ResultDoesNotDependOnThreadCount) {
   const DistanceTable one = compute_all_pairs(patch, GeodesicMethod::fast_marching, 1, true);
   const DistanceTable two = compute_all_pairs(patch, GeodesicMethod::fast_marching, 2, true);
   EXPECT_TRUE(std::equal(one.values().begin(), one.values().end(), two.values().begin()));
+}
+
+// The triangle stencils are made piece by piece of triangles on any number
+// of threads: the same records in the same order as on one.
+TEST(Geodesics, TriangleStencilsDoNotDependOnThreadCount) {
+  const SurfaceMesh atrium = generate_mesh_at("atrium", 40000);  // 80,000 triangles: 5 pieces
+  const TriangleStencils one = build_triangle_stencils(atrium, 1);
+  ASSERT_GT(one.virtual_updates.size(), 1000u);  // obtuse corners in every piece
+  const auto same_bytes = [](const auto& a, const auto& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+  };
+  for (const unsigned threads : {2u, 7u}) {
+    const TriangleStencils many = build_triangle_stencils(atrium, threads);
+    EXPECT_EQ(many.triangle_offsets, one.triangle_offsets);
+    EXPECT_EQ(many.virtual_offsets, one.virtual_offsets);
+    EXPECT_TRUE(same_bytes(many.triangles, one.triangles)) << threads << " threads";
+    EXPECT_TRUE(same_bytes(many.virtual_updates, one.virtual_updates)) << threads << " threads";
+  }
 }
 
 // A stopped solve is the full solve inside the radius, bit for bit (the same

@@ -48,7 +48,7 @@ DistanceTable compute_all_pairs(const SurfaceMesh& mesh, GeodesicMethod method, 
   const std::size_t n = mesh.vertex_count();
   check_table_fits(n, sizeof(float), usable_host_memory_bytes(), "distance table", usable_host_memory_name());
   DistanceTable table(n);
-  const auto solver = make_geodesic_solver(mesh, method);
+  const auto solver = make_geodesic_solver(mesh, method, cores_or(threads));
 
   std::atomic<std::size_t> next_source{0}, done{0};
   // A worker that fails (out of memory) hands its exception to this thread,

@@ -18,11 +18,11 @@ double fim_margin(const SurfaceMesh& mesh, const TriangleStencils& stencils) {
   return longest;
 }
 
-FastIterativeMethod::FastIterativeMethod(const SurfaceMesh& mesh)
+FastIterativeMethod::FastIterativeMethod(const SurfaceMesh& mesh, unsigned threads)
     : GeodesicSolver(mesh.vertex_count()),
       mesh_(mesh),
       edge_lengths_(ring_edge_lengths(mesh)),
-      stencils_(build_triangle_stencils(mesh)),
+      stencils_(build_triangle_stencils(mesh, threads)),
       margin_(fim_margin(mesh, stencils_)) {}
 
 namespace {

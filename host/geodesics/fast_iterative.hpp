@@ -34,7 +34,7 @@ double fim_margin(const SurfaceMesh& mesh, const TriangleStencils& stencils);
 
 class FastIterativeMethod : public GeodesicSolver {
  public:
-  explicit FastIterativeMethod(const SurfaceMesh& mesh);
+  explicit FastIterativeMethod(const SurfaceMesh& mesh, unsigned threads = 1);
 
   const TriangleStencils& stencils() const { return stencils_; }
   const std::vector<float>& edge_lengths() const { return edge_lengths_; }

@@ -18,11 +18,11 @@ constexpr std::size_t kVirtualLinesFetched = 1;  // 3 virtual updates
 
 }  // namespace
 
-FastMarching::FastMarching(const SurfaceMesh& mesh)
+FastMarching::FastMarching(const SurfaceMesh& mesh, unsigned threads)
     : GeodesicSolver(mesh.vertex_count()),
       mesh_(mesh),
       edge_lengths_(ring_edge_lengths(mesh)),
-      stencils_(build_triangle_stencils(mesh)) {
+      stencils_(build_triangle_stencils(mesh, threads)) {
   const auto& ring = mesh.ring_offsets();
   starts_.reserve(ring.size());
   for (std::size_t v = 0; v < ring.size(); ++v) {

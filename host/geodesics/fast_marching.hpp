@@ -13,7 +13,8 @@ namespace meshparticles {
 
 class FastMarching : public GeodesicSolver {
  public:
-  explicit FastMarching(const SurfaceMesh& mesh);
+  // Its set-up (the triangle stencils) on at most `threads` threads.
+  explicit FastMarching(const SurfaceMesh& mesh, unsigned threads = 1);
 
  protected:
   void march(std::span<const VertexId> sources, std::span<double> distances, SolverScratch& scratch,

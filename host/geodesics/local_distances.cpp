@@ -82,7 +82,7 @@ float LocalDistances::symmetric_distance(const Ball& from_u, VertexId u, const B
 LocalDistances::LocalDistances(const SurfaceMesh& mesh, const Settings& settings)
     : vertex_count_(mesh.vertex_count()),
       settings_(settings),
-      solver_(make_geodesic_solver(mesh, settings.method)),
+      solver_(make_geodesic_solver(mesh, settings.method, cores_or(settings.threads))),
       device_balls_(settings.device && settings.method == GeodesicMethod::fast_iterative
                         ? std::make_unique<DeviceBallSolver>(
                               mesh, static_cast<const FastIterativeMethod&>(*solver_), *settings.device,

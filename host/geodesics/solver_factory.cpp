@@ -6,10 +6,11 @@
 
 namespace meshparticles {
 
-std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method) {
+std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method,
+                                                     unsigned threads) {
   if (method == GeodesicMethod::dijkstra) return std::make_unique<EdgeDijkstra>(mesh);
-  if (method == GeodesicMethod::fast_iterative) return std::make_unique<FastIterativeMethod>(mesh);
-  return std::make_unique<FastMarching>(mesh);
+  if (method == GeodesicMethod::fast_iterative) return std::make_unique<FastIterativeMethod>(mesh, threads);
+  return std::make_unique<FastMarching>(mesh, threads);
 }
 
 }  // namespace meshparticles

@@ -7,6 +7,8 @@
 
 namespace meshparticles {
 
-std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method);
+// Its set-up on at most `threads` threads (the same solver for any number).
+std::unique_ptr<GeodesicSolver> make_geodesic_solver(const SurfaceMesh& mesh, GeodesicMethod method,
+                                                     unsigned threads = 1);
 
 }  // namespace meshparticles

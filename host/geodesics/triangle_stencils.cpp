@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "common/compressed_rows.hpp"
+#include "common/parallel_for.hpp"
 #include "mesh/vertex_triangles.hpp"
 
 namespace meshparticles {
@@ -74,61 +75,71 @@ VertexId third_vertex(const Triangle& t, VertexId a, VertexId b) {
 
 }  // namespace
 
-TriangleStencils build_triangle_stencils(const SurfaceMesh& mesh) {
+TriangleStencils build_triangle_stencils(const SurfaceMesh& mesh, unsigned threads) {
   const auto& positions = mesh.positions();
   const auto& triangles = mesh.triangles();
   const VertexTriangles around = vertex_triangles(triangles, mesh.vertex_count());
   const auto length3 = [&](VertexId a, VertexId b) { return distance(positions[a], positions[b]); };
 
-  std::vector<std::pair<VertexId, TriangleAtVertex>> triangle_records;
-  std::vector<std::pair<VertexId, VirtualUpdate>> virtual_records;
-  // Both orders (C from X,Y and from Y,X): either corner may be accepted last.
-  const auto add_virtual = [&](VertexId c, VertexId x, VertexId y, Point2 pc, Point2 px, Point2 py) {
-    virtual_records.push_back({x, {c, y, frame_of(pc, px, py)}});
-    virtual_records.push_back({y, {c, x, frame_of(pc, py, px)}});
-  };
+  // Listed in triangle order whatever the threads: corner k of triangle t at
+  // 3t + k, the virtual updates piece by piece, the pieces joined in order.
+  std::vector<std::pair<VertexId, TriangleAtVertex>> triangle_records(3 * triangles.size());
+  constexpr std::size_t kPieceTriangles = 16384;
+  std::vector<std::vector<std::pair<VertexId, VirtualUpdate>>> virtual_pieces(
+      piece_count(triangles.size(), kPieceTriangles));
   constexpr int kMaxUnfoldings = 10;
-  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      const VertexId c = triangles[t][k], a = triangles[t][(k + 1) % 3], b = triangles[t][(k + 2) % 3];
-      const double ca = length3(c, a), cb = length3(c, b), ab = length3(a, b);
-      triangle_records.push_back({c, {a, b, frame_of_lengths(ca, cb, ab), frame_of_lengths(cb, ca, ab)}});
+  for_each_piece(triangles.size(), kPieceTriangles, threads, [&](std::size_t piece, std::size_t from, std::size_t to) {
+    std::vector<std::pair<VertexId, VirtualUpdate>>& virtual_records = virtual_pieces[piece];
+    // Both orders (C from X,Y and from Y,X): either corner may be accepted last.
+    const auto add_virtual = [&](VertexId c, VertexId x, VertexId y, Point2 pc, Point2 px, Point2 py) {
+      virtual_records.push_back({x, {c, y, frame_of(pc, px, py)}});
+      virtual_records.push_back({y, {c, x, frame_of(pc, py, px)}});
+    };
+    for (std::uint32_t t = std::uint32_t(from); t < to; ++t) {
+      for (int k = 0; k < 3; ++k) {
+        const VertexId c = triangles[t][k], a = triangles[t][(k + 1) % 3], b = triangles[t][(k + 2) % 3];
+        const double ca = length3(c, a), cb = length3(c, b), ab = length3(a, b);
+        triangle_records[3 * std::size_t(t) + k] = {
+            c, {a, b, frame_of_lengths(ca, cb, ab), frame_of_lengths(cb, ca, ab)}};
 
-      // C's corner in the plane: C at the origin, A on the x-axis, B above.
-      const Vec3 ca3 = positions[a] - positions[c], cb3 = positions[b] - positions[c];
-      const double angle = std::atan2(norm(meshparticles::cross(ca3, cb3)), meshparticles::dot(ca3, cb3));
-      if (angle <= std::numbers::pi / 2) continue;
-      const Point2 pc{0, 0}, pa{ca, 0}, pb{cb * std::cos(angle), cb * std::sin(angle)};
+        // C's corner in the plane: C at the origin, A on the x-axis, B above.
+        const Vec3 ca3 = positions[a] - positions[c], cb3 = positions[b] - positions[c];
+        const double angle = std::atan2(norm(meshparticles::cross(ca3, cb3)), meshparticles::dot(ca3, cb3));
+        if (angle <= std::numbers::pi / 2) continue;
+        const Point2 pc{0, 0}, pa{ca, 0}, pb{cb * std::cos(angle), cb * std::sin(angle)};
 
-      // Unfold across the far edge until a vertex lands inside C's angle.
-      VertexId p = a, q = b;
-      Point2 pp = pa, pq = pb, previous = pc;
-      std::uint32_t current = t;
-      for (int step = 0; step < kMaxUnfoldings; ++step) {
-        const EdgeTriangles sharing = triangles_on_edge(around, triangles, p, q);
-        if (sharing.count != 2) break;  // reached the boundary (or a non-manifold edge)
-        const std::uint32_t next = sharing.first[0] == current ? sharing.first[1] : sharing.first[0];
-        const VertexId d = third_vertex(triangles[next], p, q);
-        if (d == c) break;
-        const Point2 pd = place_opposite(pp, pq, length3(p, d), length3(q, d), previous);
-        if (cross(pa, pd) > 0 && cross(pd, pb) > 0) {
-          add_virtual(c, a, d, pc, pa, pd);
-          add_virtual(c, d, b, pc, pd, pb);
-          break;
+        // Unfold across the far edge until a vertex lands inside C's angle.
+        VertexId p = a, q = b;
+        Point2 pp = pa, pq = pb, previous = pc;
+        std::uint32_t current = t;
+        for (int step = 0; step < kMaxUnfoldings; ++step) {
+          const EdgeTriangles sharing = triangles_on_edge(around, triangles, p, q);
+          if (sharing.count != 2) break;  // reached the boundary (or a non-manifold edge)
+          const std::uint32_t next = sharing.first[0] == current ? sharing.first[1] : sharing.first[0];
+          const VertexId d = third_vertex(triangles[next], p, q);
+          if (d == c) break;
+          const Point2 pd = place_opposite(pp, pq, length3(p, d), length3(q, d), previous);
+          if (cross(pa, pd) > 0 && cross(pd, pb) > 0) {
+            add_virtual(c, a, d, pc, pa, pd);
+            add_virtual(c, d, b, pc, pd, pb);
+            break;
+          }
+          if (cross(pa, pd) <= 0) {  // D lies beyond A's side: C's angle crosses edge DQ
+            previous = pp;
+            p = d;
+            pp = pd;
+          } else {  // beyond B's side: the angle crosses edge PD
+            previous = pq;
+            q = d;
+            pq = pd;
+          }
+          current = next;
         }
-        if (cross(pa, pd) <= 0) {  // D lies beyond A's side: C's angle crosses edge DQ
-          previous = pp;
-          p = d;
-          pp = pd;
-        } else {  // beyond B's side: the angle crosses edge PD
-          previous = pq;
-          q = d;
-          pq = pd;
-        }
-        current = next;
       }
     }
-  }
+  });
+  std::vector<std::pair<VertexId, VirtualUpdate>> virtual_records;
+  for (const auto& listed : virtual_pieces) virtual_records.insert(virtual_records.end(), listed.begin(), listed.end());
 
   TriangleStencils result;
   to_compressed_rows(triangle_records, mesh.vertex_count(), result.triangle_offsets, result.triangles);

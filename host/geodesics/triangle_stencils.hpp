@@ -43,6 +43,7 @@ struct TriangleStencils {
   std::vector<VirtualUpdate> virtual_updates;
 };
 
-TriangleStencils build_triangle_stencils(const SurfaceMesh& mesh);
+// On at most `threads` threads; the same stencils for any number of them.
+TriangleStencils build_triangle_stencils(const SurfaceMesh& mesh, unsigned threads = 1);
 
 }  // namespace meshparticles
