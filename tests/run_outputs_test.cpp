@@ -239,6 +239,29 @@ TEST(RunOutputs, SpreadRowsPlaceEachParticleOnAnInputTriangle) {
   std::filesystem::remove_all(directory);
 }
 
+// The files are written and digested side by side: the same bytes, the
+// report's digests among them, on one thread and on several.
+TEST(RunOutputs, TheSameFilesOnAnyNumberOfThreads) {
+  const SurfaceMesh mesh = committed("sphere.off");
+  RunRequest request;
+  request.mesh_label = "sphere.off";
+  request.particles = 64;
+  request.quiet = true;
+  const RunResult result = run_pipeline(mesh, request);
+  const auto directory = std::filesystem::temp_directory_path() / ("mp_threads_" + std::to_string(::getpid()));
+  const nlohmann::json report = run_report(mesh, result, directory, std::nullopt);
+  for (const unsigned threads : {1u, 3u}) {
+    prepare_output_directory(directory / std::to_string(threads));
+    write_run_outputs(directory / std::to_string(threads), mesh, result, report, threads);
+  }
+  for (const std::string& name : kRunOutputFiles) {
+    const std::string one = slurp(directory / "1" / name);
+    EXPECT_FALSE(one.empty()) << name;
+    EXPECT_EQ(slurp(directory / "3" / name), one) << name;
+  }
+  std::filesystem::remove_all(directory);
+}
+
 TEST(RunOutputs, RefusesAnOutputDirectoryUnderAFile) {
   EXPECT_THROW(prepare_output_directory("/dev/null/out"), UserError);
 }

@@ -38,7 +38,7 @@ MeshOutcome run_batch_mesh(const BatchPlan& plan, std::size_t index) {
     prepare_output_directory(directory);
     const RunResult result = execute_run(mesh, run_plan);
     const nlohmann::json report = run_report(mesh, result, directory, sha256);
-    write_run_outputs(directory, mesh, result, report);
+    write_run_outputs(directory, mesh, result, report, request.distances.geodesics.threads);
     return {finished_row(label, item.output_name, report), false};
   } catch (const Interrupted&) {
     throw;  // stops the whole batch (Ctrl-C in Python); the summary has the meshes done

@@ -69,7 +69,9 @@ void run_run(RunCommandOptions options) {
   const bool from_file = std::filesystem::is_regular_file(options.mesh);
   const nlohmann::json report =
       run_report(mesh, result, options.out, from_file ? std::optional(file_sha256(options.mesh)) : std::nullopt);
-  naming_memory_failures(options.out, "writing the outputs", [&] { write_run_outputs(options.out, mesh, result, report); });
+  naming_memory_failures(options.out, "writing the outputs", [&] {
+    write_run_outputs(options.out, mesh, result, report, request.distances.geodesics.threads);
+  });
   print_summary(mesh, result, options.out);
 }
 

@@ -1,7 +1,10 @@
 #include "reports/output_digests.hpp"
 
+#include <vector>
+
 #include "common/input_file.hpp"
 #include "common/json_text.hpp"
+#include "common/parallel_for.hpp"
 #include "common/user_error.hpp"
 #include "reports/file_digest.hpp"
 #include "reports/run_outputs.hpp"
@@ -25,12 +28,18 @@ std::optional<std::string> read_bytes(const std::filesystem::path& file) {
 
 }  // namespace
 
-std::string digested_report_text(nlohmann::json report, const std::filesystem::path& directory) {
-  nlohmann::json outputs = nlohmann::json::object();
+std::string digested_report_text(nlohmann::json report, const std::filesystem::path& directory, unsigned threads) {
+  std::vector<std::string> names;
   for (const std::string& name : kRunOutputFiles) {
-    if (name == kReportFile) continue;
-    const std::string sha256 = file_sha256(directory / name);  // first: it says why a file cannot be read
-    outputs[name] = {{"bytes", std::filesystem::file_size(directory / name)}, {"sha256", sha256}};
+    if (name != kReportFile) names.push_back(name);
+  }
+  std::vector<std::string> digests(names.size());
+  for_each_with_slot(names.size(), threads, [&](std::size_t k, unsigned) {
+    digests[k] = file_sha256(directory / names[k]);  // first: it says why a file cannot be read
+  });
+  nlohmann::json outputs = nlohmann::json::object();
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    outputs[names[k]] = {{"bytes", std::filesystem::file_size(directory / names[k])}, {"sha256", digests[k]}};
   }
   report["outputs"] = std::move(outputs);
   report["report_sha256"] = text_sha256(report_text(report));

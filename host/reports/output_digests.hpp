@@ -19,8 +19,10 @@ namespace meshparticles {
 
 // The text of report.json for `report`, with "outputs" recorded from the
 // run's other files in `directory` and "report_sha256" of the result.
-// Throws UserError when one of those files cannot be read.
-std::string digested_report_text(nlohmann::json report, const std::filesystem::path& directory);
+// Throws UserError when one of those files cannot be read. The files are
+// digested side by side on at most `threads` threads.
+std::string digested_report_text(nlohmann::json report, const std::filesystem::path& directory,
+                                 unsigned threads = 1);
 
 // The content of report.json at `file` when its text is exactly what
 // digested_report_text writes for that content and its "report_sha256"

@@ -32,8 +32,9 @@ inline constexpr const char* kParticlesCsvHeader =
 void prepare_output_directory(const std::filesystem::path& directory);
 
 // Every file of the result, put in place of `directory` at once; report.json
-// is `report` with the other files' digests added.
+// is `report` with the other files' digests added. The files are written and
+// digested side by side on at most `threads` threads (0: all cores).
 void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh, const RunResult& result,
-                       const nlohmann::json& report);
+                       const nlohmann::json& report, unsigned threads = 1);
 
 }  // namespace meshparticles
