@@ -46,30 +46,41 @@ SurfaceMesh::SurfaceMesh(std::vector<Vec3> positions, std::vector<Triangle> tria
                                 " is in no triangle");
   }
 
-  // Each undirected edge (a < b, packed a << 32 | b) once per triangle using
-  // it, sorted: a run of one means boundary. Sorted keys list the edges in
-  // the order of a map on (a, b), without its node per edge (on a million
-  // vertices the map was most of the mesh's construction).
-  std::vector<std::uint64_t> edge_uses;
-  edge_uses.reserve(3 * triangles_.size());
+  // Each undirected edge (a <= b) once per triangle using it, listed under
+  // a by a counting sort, each a's few b sorted: a run of one means
+  // boundary. The edges come in the order of a map on (a, b), without its
+  // node per edge (on a million vertices the map was most of the mesh's
+  // construction) or a sort of all the uses (3 per triangle).
+  std::vector<std::uint32_t> use_offsets(n + 1, 0);
   for (const Triangle& t : triangles_) {
-    for (int k = 0; k < 3; ++k) {
-      const VertexId a = t[k], b = t[(k + 1) % 3];
-      edge_uses.push_back((std::uint64_t(std::min(a, b)) << 32) | std::max(a, b));
-    }
+    for (int k = 0; k < 3; ++k) ++use_offsets[std::min(t[k], t[(k + 1) % 3]) + 1];
     area_ += triangle_area(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
   }
-  std::sort(edge_uses.begin(), edge_uses.end());
+  for (std::size_t v = 0; v < n; ++v) use_offsets[v + 1] += use_offsets[v];
+  std::vector<VertexId> larger_ends(use_offsets[n]);
+  {
+    std::vector<std::uint32_t> next(use_offsets.begin(), use_offsets.end() - 1);
+    for (const Triangle& t : triangles_) {
+      for (int k = 0; k < 3; ++k) {
+        const VertexId a = t[k], b = t[(k + 1) % 3];
+        larger_ends[next[std::min(a, b)]++] = std::max(a, b);
+      }
+    }
+  }
   struct Edge {
     VertexId first, second;
     bool boundary;
   };
   std::vector<Edge> edges;
-  for (std::size_t begin = 0, end = 0; begin < edge_uses.size(); begin = end) {
-    while (end < edge_uses.size() && edge_uses[end] == edge_uses[begin]) ++end;
-    edges.push_back({VertexId(edge_uses[begin] >> 32), VertexId(edge_uses[begin]), end - begin == 1});
+  for (std::size_t a = 0; a < n; ++a) {
+    const auto first = larger_ends.begin() + use_offsets[a], last = larger_ends.begin() + use_offsets[a + 1];
+    std::sort(first, last);
+    for (auto begin = first, end = first; begin != last; begin = end) {
+      while (end != last && *end == *begin) ++end;
+      edges.push_back({VertexId(a), *begin, end - begin == 1});
+    }
   }
-  std::vector<std::uint64_t>().swap(edge_uses);
+  std::vector<VertexId>().swap(larger_ends);
 
   // Each ring is sorted as it is filled: edges come in order of (first, second).
   ring_offsets_.assign(n + 1, 0);
