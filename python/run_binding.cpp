@@ -54,7 +54,8 @@ void save(const RunOutput& output, const py::object& path) {
   const std::filesystem::path directory = path_argument(path, "directory");
   py::gil_scoped_release unlocked;
   prepare_output_directory(directory);
-  write_run_outputs(directory, *output.mesh.surface, output.result, output.report(directory));
+  write_run_outputs(directory, *output.mesh.surface, output.result, output.report(directory),
+                    output.result.plan.request.distances.geodesics.threads);
 }
 
 py::array_t<double> positions(const RunOutput& output) {
