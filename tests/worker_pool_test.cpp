@@ -1,13 +1,15 @@
 // Parallel loops run on threads kept for the process (common/worker_pool):
 // every index once, on slots below the threads asked for, loop after loop;
 // a loop inside a loop, loops from two threads at once, a loop that throws,
-// and a loop in a forked child all finish.
+// and a loop in a forked child all finish; a loop that runs every piece
+// rethrows its lowest failure.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -84,6 +86,28 @@ TEST(WorkerPool, AThrowingLoopReachesItsCallerAndThePoolGoesOn) {
                std::runtime_error);
   bool slots_below = false;
   EXPECT_EQ(runs_of(100, 2, slots_below), std::vector<int>(100, 1));
+}
+
+// Every piece runs, and the error rethrown is the lowest failing piece's
+// whatever the threads and whichever failed first in time.
+TEST(WorkerPool, TheLowestFailingPieceIsTheErrorOnAnyNumberOfThreads) {
+  for (const unsigned threads : {1u, 2u, 5u}) {
+    std::vector<std::atomic<int>> runs(40);
+    try {
+      for_each_lowest_failure_first(runs.size(), threads, [&](std::size_t k) {
+        ++runs[k];
+        if (k == 31) throw std::runtime_error("piece 31");
+        if (k == 9) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(20));  // fails after 31 has
+          throw std::runtime_error("piece 9");
+        }
+      });
+      ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& error) {
+      EXPECT_STREQ(error.what(), "piece 9") << threads << " threads";
+    }
+    for (const auto& r : runs) EXPECT_EQ(r, 1) << threads << " threads";
+  }
 }
 
 TEST(WorkerPool, AForkedChildRunsLoopsOnAPoolOfItsOwn) {

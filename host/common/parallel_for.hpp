@@ -62,6 +62,25 @@ inline void for_each_piece(std::size_t count, std::size_t piece_size, unsigned t
   });
 }
 
+// Runs work(k) for k = 0 .. count - 1 as for_each_with_slot does, but each
+// piece runs even where another throws, and the exception rethrown is the
+// lowest k's: the same error for any number of threads (of files written
+// side by side on a full disk, the first file's).
+inline void for_each_lowest_failure_first(std::size_t count, unsigned threads,
+                                          const std::function<void(std::size_t)>& work) {
+  std::vector<std::exception_ptr> failures(count);
+  for_each_with_slot(count, threads, [&](std::size_t k, unsigned) {
+    try {
+      work(k);
+    } catch (...) {
+      failures[k] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
+}
+
 // Runs work(k) for every k of `indices` as for_each_with_slot does.
 inline void for_each_index(const std::vector<std::size_t>& indices, unsigned threads,
                            const std::function<void(std::size_t)>& work) {

@@ -34,7 +34,7 @@ std::string digested_report_text(nlohmann::json report, const std::filesystem::p
     if (name != kReportFile) names.push_back(name);
   }
   std::vector<std::string> digests(names.size());
-  for_each_with_slot(names.size(), threads, [&](std::size_t k, unsigned) {
+  for_each_lowest_failure_first(names.size(), threads, [&](std::size_t k) {
     digests[k] = file_sha256(directory / names[k]);  // first: it says why a file cannot be read
   });
   nlohmann::json outputs = nlohmann::json::object();

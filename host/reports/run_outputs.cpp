@@ -69,7 +69,7 @@ void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh
         },
         [&] { write_particles_ply(staging / "particles.ply", points, input_vertices); },
     };
-    for_each_with_slot(writers.size(), cores_or(threads), [&](std::size_t k, unsigned) { writers[k](); });
+    for_each_lowest_failure_first(writers.size(), cores_or(threads), [&](std::size_t k) { writers[k](); });
     // Last: it records the size and SHA-256 of the files above as they are on disk.
     const std::string report_text = digested_report_text(report, staging, cores_or(threads));
     write_new_file(staging / "report.json", [&](std::ostream& out) { out << report_text; });
