@@ -18,7 +18,8 @@ if(MESHPARTICLES_FUZZ)
   target_include_directories(fuzzed_mesh_input PUBLIC host)
   find_package(EXPAT REQUIRED)  # the .vtp reader's XML and zlib, as in the program
   find_package(ZLIB REQUIRED)
-  target_link_libraries(fuzzed_mesh_input PUBLIC EXPAT::EXPAT ZLIB::ZLIB)
+  find_package(Threads REQUIRED)  # the solvers' set-up runs on the worker pool
+  target_link_libraries(fuzzed_mesh_input PUBLIC EXPAT::EXPAT ZLIB::ZLIB Threads::Threads)
   target_compile_options(fuzzed_mesh_input PUBLIC -g -O1 ${SANITIZERS} -fsanitize=fuzzer-no-link)
   target_link_options(fuzzed_mesh_input PUBLIC ${SANITIZERS})
   # The finding rules every target shares.
