@@ -8,6 +8,7 @@
 #include <sys/uio.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <climits>
 #include <cstdio>
@@ -16,7 +17,8 @@
 
 namespace {
 
-long long bytes_written = 0;
+// Atomic: a run writes its files from several threads at once.
+std::atomic<long long> bytes_written{0};
 
 bool is_under_full_directory(int fd) {
   const char* directory = getenv("FULL_DISK_DIR");
@@ -33,7 +35,8 @@ bool is_under_full_directory(int fd) {
 size_t room_for(int fd, size_t wanted) {
   if (!is_under_full_directory(fd)) return wanted;
   const long long limit = atoll(getenv("FULL_DISK_BYTES") ? getenv("FULL_DISK_BYTES") : "0");
-  const long long left = limit > bytes_written ? limit - bytes_written : 0;
+  const long long written = bytes_written;
+  const long long left = limit > written ? limit - written : 0;
   return static_cast<long long>(wanted) < left ? wanted : static_cast<size_t>(left);
 }
 
