@@ -4,7 +4,7 @@
 # meshparticles and device_tests, the libraries they load that such an image
 # lacks (Debian's OpenCL loader, OpenMesh, Open MPI, ...; not the C and C++
 # runtimes, which it has), the 26 benchmark models of docs/PERFORMANCE.md and
-# their cases (n = 256, 1,024 and 4,096 where the model has 4n vertices), and
+# their cases (n = 256, 1,024 and 4,096 where the model has at least 4n vertices), and
 # a scan if given. DIR should sit in the checkout and be ignored by git, so
 # that the device tool's `carry` takes it along (about 36 MiB with igea).
 #
