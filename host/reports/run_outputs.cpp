@@ -44,6 +44,7 @@ void prepare_output_directory(const std::filesystem::path& directory) {
 
 void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh& mesh, const RunResult& result,
                        const nlohmann::json& report, unsigned threads) {
+  threads = cores_or(threads);
   const std::vector<ParticleLocation> locations = particle_locations(mesh, result);
   std::vector<Vec3> points;
   std::vector<VertexId> input_vertices;
@@ -69,9 +70,9 @@ void write_run_outputs(const std::filesystem::path& directory, const SurfaceMesh
         },
         [&] { write_particles_ply(staging / "particles.ply", points, input_vertices); },
     };
-    for_each_lowest_failure_first(writers.size(), cores_or(threads), [&](std::size_t k) { writers[k](); });
+    for_each_lowest_failure_first(writers.size(), threads, [&](std::size_t k) { writers[k](); });
     // Last: it records the size and SHA-256 of the files above as they are on disk.
-    const std::string report_text = digested_report_text(report, staging, cores_or(threads));
+    const std::string report_text = digested_report_text(report, staging, threads);
     write_new_file(staging / "report.json", [&](std::ostream& out) { out << report_text; });
   });
 }
