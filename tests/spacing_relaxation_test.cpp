@@ -236,7 +236,8 @@ INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphe
 
 // The pushes, the pairs and the covers run on threads in pieces of 256
 // particles (and of vertices): enough particles for several pieces give
-// the same bits on 1, 2 and 8 threads, every round's spacing too.
+// the same bits on 1, 2 and 8 threads, every round's spacing too. One
+// thread sums each push over the pairs, more sum it particle by particle.
 TEST(Relaxation, AnyNumberOfThreadsGivesTheSameBits) {
   const SurfaceMesh mesh = refine_by_midpoints(committed("atrium.off"), 1).mesh;
   constexpr std::size_t kParticles = 1000;

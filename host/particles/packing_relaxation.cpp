@@ -123,25 +123,63 @@ double PackingRelaxation::smallest_spacing(double reach) {
                           : *std::min_element(smallest.begin(), smallest.end());
 }
 
-bool PackingRelaxation::push(double radius, const std::vector<Vec3>& nudge) {
-  if (!(moved_ * 2 < reach_ - radius)) build_neighbours(kNeighbourReach * radius);
-  // Each particle's push, summed over the pairs in their order on this
-  // thread (a few percent of a push; the moves below are most of it).
-  std::vector<Vec3> shift(particles_.size());
+bool PackingRelaxation::pair_push(std::uint32_t i, std::uint32_t j, double radius, Vec3& half) const {
+  Vec3 apart = particles_[i].at - particles_[j].at;
+  const double squared = dot(apart, apart);
+  // Far above rounding: a pair this long is not closer than `radius`, and
+  // is passed over without a square root.
+  if (squared > radius * radius * (1 + 1e-12)) return false;
+  const double length = std::sqrt(squared);
+  double d = length;
+  if (d >= radius) return false;
+  if (d == 0) {  // on one point: apart along a direction of i's triangle, the same every time
+    apart = tangent(particles_[i].triangle);
+    d = 1;
+  }
+  half = (0.5 * (radius - length) / d) * apart;
+  return true;
+}
+
+bool PackingRelaxation::sum_over_pairs(double radius, std::vector<Vec3>& shift) const {
   bool any = false;
+  Vec3 half;
   for (const auto& [i, j] : pairs_) {
-    Vec3 apart = particles_[i].at - particles_[j].at;
-    double d = norm(apart);
-    if (d >= radius) continue;
-    if (d == 0) {  // on one point: apart along a direction of i's triangle, the same every time
-      apart = tangent(particles_[i].triangle);
-      d = 1;
-    }
-    const Vec3 half = (0.5 * (radius - norm(particles_[i].at - particles_[j].at)) / d) * apart;
+    if (!pair_push(i, j, radius, half)) continue;
     shift[i] = shift[i] + half;
     shift[j] = shift[j] - half;
     any = true;
   }
+  return any;
+}
+
+bool PackingRelaxation::sum_per_particle(double radius, std::vector<Vec3>& shift) const {
+  std::vector<char> pushed(piece_count(particles_.size(), kPushPiece), 0);
+  for_each_piece(particles_.size(), kPushPiece, threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
+    bool any = false;
+    Vec3 half;
+    for (std::uint32_t k = std::uint32_t(from); k < to; ++k) {
+      Vec3 sum;
+      for (std::uint32_t m = partners_from_[k]; m < partners_above_[k]; ++m) {
+        if (!pair_push(partners_[m], k, radius, half)) continue;
+        sum = sum - half;
+        any = true;
+      }
+      for (std::uint32_t m = partners_above_[k]; m < partners_from_[k + 1]; ++m) {
+        if (!pair_push(k, partners_[m], radius, half)) continue;
+        sum = sum + half;
+        any = true;
+      }
+      shift[k] = sum;
+    }
+    pushed[piece] = any;
+  });
+  return std::find(pushed.begin(), pushed.end(), 1) != pushed.end();
+}
+
+bool PackingRelaxation::push(double radius, const std::vector<Vec3>& nudge) {
+  if (!(moved_ * 2 < reach_ - radius)) build_neighbours(kNeighbourReach * radius);
+  std::vector<Vec3> shift(particles_.size());
+  const bool any = threads_ == 1 ? sum_over_pairs(radius, shift) : sum_per_particle(radius, shift);
   if (!any && nudge.empty()) return false;
   std::vector<double> largest(piece_count(particles_.size(), kPushPiece), 0.0);
   for_each_piece(particles_.size(), kPushPiece, threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
@@ -221,6 +259,26 @@ void PackingRelaxation::build_neighbours(double reach) {
   reach_ = reach;
   moved_ = 0;
   at_build_ = at;
+  if (threads_ == 1) return;  // the pushes are summed over the pairs
+  // Each particle's partners below it, then those above it, each in index
+  // order (the pairs are in index order).
+  partners_from_.assign(at.size() + 1, 0);
+  partners_above_.assign(at.size(), 0);
+  for (const auto& [i, j] : pairs_) {
+    ++partners_from_[i + 1];
+    ++partners_from_[j + 1];
+    ++partners_above_[j];
+  }
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    partners_from_[k + 1] += partners_from_[k];
+    partners_above_[k] += partners_from_[k];
+  }
+  partners_.resize(partners_from_.back());
+  std::vector<std::uint32_t> next(partners_from_.begin(), partners_from_.end() - 1);
+  for (const auto& [i, j] : pairs_) {
+    partners_[next[i]++] = j;
+    partners_[next[j]++] = i;
+  }
 }
 
 RadiusGrowth::RadiusGrowth(double spacing, std::size_t round)

@@ -32,9 +32,8 @@ class PackingRelaxation {
   static constexpr double kFacingCosine = -0.5;
 
   // Particles on the vertices `start`, or at surface points. Each push's
-  // moves, the smallest spacing and the rebuilds of the pairs run on
-  // `threads` threads in fixed pieces; the pushes are summed over the pairs
-  // in their order on the calling thread: the same bits for any number.
+  // sums and moves, the smallest spacing and the rebuilds of the pairs run
+  // on `threads` threads in fixed pieces: the same bits for any number.
   PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start, unsigned threads = 1);
   PackingRelaxation(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start, unsigned threads = 1);
 
@@ -66,6 +65,15 @@ class PackingRelaxation {
  private:
   void hold(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start);
   void build_neighbours(double reach);
+  // Whether pair (i, j), i < j, is closer than `radius`, and where it is
+  // the push it gives i (j gets its opposite).
+  bool pair_push(std::uint32_t i, std::uint32_t j, double radius, Vec3& half) const;
+  // Each particle's push summed into `shift` in one of two ways that give
+  // the same bits: over the pairs in their order (one thread), or each
+  // particle over its partners in index order (that order), in pieces on
+  // the threads, each pair computed at both ends. False where no pair pushes.
+  bool sum_over_pairs(double radius, std::vector<Vec3>& shift) const;
+  bool sum_per_particle(double radius, std::vector<Vec3>& shift) const;
   // A unit direction in the plane of `triangle` (its first edge).
   Vec3 tangent(std::uint32_t triangle) const { return walk_.first_edge_direction(triangle); }
 
@@ -74,6 +82,10 @@ class PackingRelaxation {
   std::vector<Particle> particles_;
   unsigned threads_ = 1;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  // i < j, in index order
+  // Each particle's partners in pairs_, in index order: particle k's are
+  // partners_[partners_from_[k]] up to partners_[partners_from_[k + 1]],
+  // those above k from partners_above_[k].
+  std::vector<std::uint32_t> partners_from_, partners_above_, partners_;
   double reach_ = 0;  // of the pairs
   double moved_ = 0;  // the farthest any particle is from where it was when the pairs were found
   // (the pairs hold every pair closer than reach_ - 2 moved_)
