@@ -121,6 +121,16 @@ TEST(RunOutputs, WritesParticlesCsvAndReport) {
     EXPECT_EQ(from_vtp.positions()[v].x, mesh.positions()[v].x) << v;
     EXPECT_EQ(from_vtp.positions()[v].z, mesh.positions()[v].z) << v;
   }
+  // The legacy file read back: the same mesh, every coordinate exact.
+  std::vector<std::string> vtk_warnings;
+  const SurfaceMesh from_vtk = read_mesh((directory / "nested" / "mesh_distance.vtk").string(), vtk_warnings);
+  EXPECT_EQ(from_vtk.triangles(), mesh.triangles());
+  EXPECT_EQ(from_vtk.positions().size(), mesh.vertex_count());
+  for (std::size_t v = 0; v < std::min(from_vtk.vertex_count(), mesh.vertex_count()); ++v) {
+    EXPECT_EQ(from_vtk.positions()[v].x, mesh.positions()[v].x) << v;
+    EXPECT_EQ(from_vtk.positions()[v].y, mesh.positions()[v].y) << v;
+    EXPECT_EQ(from_vtk.positions()[v].z, mesh.positions()[v].z) << v;
+  }
   const std::vector<float> vtp_values =
       first_float_array(slurp(directory / "nested" / "mesh_distance.vtp"), "<PointData");
   std::istringstream vtk_values(vtk.substr(values_at + 21));
