@@ -24,9 +24,8 @@ constexpr double kMomentum = 0.8;
 // of it from where it was when the pairs were found).
 constexpr double kNeighbourReach = 1.5;
 // Each growing round pushes for a radius this share above the target; a
-// round that ends below the target halves it, down to kSmallestGrowth.
+// round that ends below the target halves it, down to the caller's smallest.
 constexpr double kGrowth = 0.005;
-constexpr double kSmallestGrowth = 0.002;
 // The rounds without a gain of kPatienceGain (a share of the spacing) after
 // which the growing rounds stop.
 constexpr std::size_t kPatienceRounds = 60;
@@ -281,15 +280,15 @@ void PackingRelaxation::build_neighbours(double reach) {
   }
 }
 
-RadiusGrowth::RadiusGrowth(double spacing, std::size_t round)
-    : target_(spacing), growth_(kGrowth), best_(spacing), last_gain_(round) {}
+RadiusGrowth::RadiusGrowth(double spacing, std::size_t round, double smallest_growth)
+    : target_(spacing), growth_(kGrowth), smallest_growth_(smallest_growth), best_(spacing), last_gain_(round) {}
 
 void RadiusGrowth::record(double radius, double spacing, std::size_t round) {
   if (spacing > best_ * (1 + kPatienceGain)) {
     best_ = spacing;
     last_gain_ = round;
   }
-  if (spacing < target_) growth_ = std::max(kSmallestGrowth, growth_ / 2);
+  if (spacing < target_) growth_ = std::max(smallest_growth_, growth_ / 2);
   target_ = std::max(target_, std::min(radius, spacing * (1 + growth_)));
 }
 

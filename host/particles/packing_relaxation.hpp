@@ -99,8 +99,9 @@ class PackingRelaxation {
 // stop when the smallest spacing has not grown for a while.
 class RadiusGrowth {
  public:
-  // From the smallest spacing reached so far, at round `round`.
-  RadiusGrowth(double spacing, std::size_t round);
+  // From the smallest spacing reached so far, at round `round`; a round
+  // that ends below the target halves the step, down to `smallest_growth`.
+  RadiusGrowth(double spacing, std::size_t round, double smallest_growth);
   double radius() const { return target_ * (1 + growth_); }
   double target() const { return target_; }
   // After a round that pushed for radius() and ended at `spacing`.
@@ -114,7 +115,7 @@ class RadiusGrowth {
   double reachable(std::size_t rounds) const;
 
  private:
-  double target_ = 0, growth_ = 0, best_ = 0;
+  double target_ = 0, growth_ = 0, smallest_growth_ = 0, best_ = 0;
   std::size_t last_gain_ = 0;
 };
 
