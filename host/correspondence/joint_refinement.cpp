@@ -393,7 +393,8 @@ void pack_jointly(std::vector<ShapeParticles>& shapes, std::size_t particles, co
   for_each_index(share.owned(), share.threads(), [&](std::size_t k) {
     PackingRelaxation relaxation(*shapes[k].mesh, shapes[k].at);
     const double start = relaxation.smallest_spacing(2 * spacings[k]);
-    packings[k].emplace(ShapePacking{std::move(relaxation), RadiusGrowth(std::isfinite(start) ? start : spacings[k], 0, kSmallestGrowth),
+    RadiusGrowth growth(std::isfinite(start) ? start : spacings[k], 0, kSmallestGrowth);
+    packings[k].emplace(ShapePacking{std::move(relaxation), growth,
                                      std::make_unique<ShapeSurface>(*shapes[k].mesh, kHoleSampleStep * spacings[k])});
   });
   const std::unique_ptr<CorrespondenceTerm> term = correspondence_term(options);
