@@ -15,14 +15,19 @@ inline void append_exact(std::string& text, double value) {
   text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
 }
 
-// "x y z" (`separator` between), each exact.
-inline std::string exact_triple(double x, double y, double z, char separator = ' ') {
-  std::string text;
+// Appends "x y z" (`separator` between), each exact.
+inline void append_exact_triple(std::string& text, double x, double y, double z, char separator = ' ') {
   append_exact(text, x);
   text += separator;
   append_exact(text, y);
   text += separator;
   append_exact(text, z);
+}
+
+// "x y z" (`separator` between), each exact.
+inline std::string exact_triple(double x, double y, double z, char separator = ' ') {
+  std::string text;
+  append_exact_triple(text, x, y, z, separator);
   return text;
 }
 

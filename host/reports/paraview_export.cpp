@@ -45,7 +45,7 @@ void write_base64_block(std::ostream& out, const std::vector<T>& values) {
 class TextChunks {
  public:
   explicit TextChunks(std::ostream& out) : out_(out) { text_.reserve(kChunk + 256); }
-  void exact(double value) { append_exact(text_, value); }
+  void point(const Vec3& p) { append_exact_triple(text_, p.x, p.y, p.z); }
   void integer(std::uint64_t value) {
     char digits[24];
     text_.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
@@ -93,11 +93,7 @@ void write_mesh_field_vtk(const std::filesystem::path& file, const SurfaceMesh& 
         << mesh.vertex_count() << " double\n";
     TextChunks text(out);
     for (const Vec3& p : mesh.positions()) {
-      text.exact(p.x);
-      text.put(' ');
-      text.exact(p.y);
-      text.put(' ');
-      text.exact(p.z);
+      text.point(p);
       text.end_line();
     }
     text.flush();
