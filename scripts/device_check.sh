@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
-# The device check, for a GPU machine lent for minutes: spread's device tests
-# on its OpenCL, spread timed on the host path (all cores) and with --device
-# case by case (each case by both in turn, their particles compared), the
-# scan and the 1M sphere, then the rest of the device suite. Every step runs
-# inside what is left of BUDGET seconds (default 520), the most wanted first;
-# the cases leave RESERVE seconds (default 230) for the scan and the sphere
-# (RESERVE=0: the cases to the end, neither of those).
+# The device check, for a GPU machine lent for minutes, the most wanted
+# first: spread's device tests on its OpenCL; the host path on 1, 2, 4, 8 and
+# every core (THREADS_CASES: "MESH N" lines, default the scan and bunny00 at
+# 4,096); spread timed on the host path (all cores) and with --device case by
+# case (each case by both in turn, their particles compared); the scan and
+# the 1M sphere (SPHERE_DEVICE=0: the sphere on the host path only); then the
+# rest of the device suite (REST=0: not). Every step runs inside what is
+# left of BUDGET seconds (default 520); the cases leave RESERVE seconds
+# (default 230) for the scan and the sphere (RESERVE=0: the cases to the end,
+# neither of those).
 #
 #   BUDGET=520 scripts/device_check.sh DIR
 #
 # DIR: what scripts/pack_device_check.sh packed. Results go to $OUT (the
 # device tool's folder; default DIR/out): env.txt, tests_spread.log,
 # runs.tsv (case, path, exit status, wall s, rho; then "bytes same" or
-# "differ"), tests_rest.log and reports.tgz (every run's report.json and
-# summary). MESHPARTICLES_DEVICE picks the device (default NVIDIA),
+# "differ"), threads.tsv (case, threads, whether the particles are 1
+# thread's bytes), tests_rest.log and reports.tgz (every run's report.json
+# and summary). MESHPARTICLES_DEVICE picks the device (default NVIDIA),
 # SPREAD_TESTS the first tests (a gtest filter). Where NVIDIA's OpenCL
 # library is found, the loader that DIR carries is pointed at it.
 set -uo pipefail
@@ -70,6 +74,21 @@ both() {
     printf '%s bytes\tdiffer\n' "$name" | tee -a "$OUT/runs.tsv"
   fi
 }
+# The host path on 1, 2, 4, 8 and every core (THREADS_CASES: "MESH N" lines,
+# default the scan and bunny00 at 4,096): wall s in threads.tsv, whether the
+# particles are 1 thread's bytes, each run's report.json (per stage) in reports.tgz.
+cores=$(nproc)
+threads_cases="${THREADS_CASES:-$(cat "$dir/scans.txt" 2>/dev/null; echo "bunny00.off 4096")}"
+while read -r mesh n; do
+  [ -n "$mesh" ] || continue
+  name=$(basename "${mesh%.*}")-$n
+  for t in 1 2 4 8 "$cores"; do
+    [ "$(left)" -lt $((reserve + 60)) ] && break 2
+    timed "$name threads $t" "$work/$name-t$t" "$dir/meshes/$mesh" -n "$n" --threads "$t"
+    if cmp -s "$work/$name-t1/particles.particles" "$work/$name-t$t/particles.particles"; then same=same; else same=differ; fi
+    printf '%s\t%s\t%s\n' "$name" "$t" "$same" | tee -a "$OUT/threads.tsv"
+  done
+done <<< "$threads_cases"
 while read -r mesh n; do
   [ "$(left)" -lt $((reserve + 30)) ] && break
   both "$dir/meshes/$mesh" "$n"
@@ -79,9 +98,15 @@ if [ -f "$dir/scans.txt" ] && [ "$(left)" -gt 200 ]; then
 fi
 if [ "$(left)" -gt 150 ]; then
   "$bin" generate sphere --vertices 1000000 --out-dir "$work/large" > /dev/null 2>&1
-  [ "$(left)" -gt 60 ] && both "$work/large/sphere_998562.off" 100000
+  if [ "$(left)" -gt 60 ]; then
+    if [ "${SPHERE_DEVICE:-1}" = 0 ]; then
+      timed "sphere_998562-100000 host" "$work/sphere_998562-100000-host" "$work/large/sphere_998562.off" -n 100000
+    else
+      both "$work/large/sphere_998562.off" 100000
+    fi
+  fi
 fi
-if [ "$(left)" -gt 20 ]; then
+if [ "${REST:-1}" != 0 ] && [ "$(left)" -gt 20 ]; then
   timeout "$(left)" "$tests" --gtest_filter="-$spread_tests" > "$OUT/tests_rest.log" 2>&1
   echo "the rest of the device suite: exit $? at $(( $(date +%s) - start )) s"
   tail -3 "$OUT/tests_rest.log"
