@@ -6,6 +6,7 @@
 
 #include "common/parallel_for.hpp"
 #include "mesh/point_cloud_tree.hpp"
+#include "mesh/vertex_normals.hpp"
 
 namespace meshparticles {
 
@@ -69,6 +70,20 @@ std::vector<std::uint32_t> morton_order(const SurfaceMesh& mesh, const std::vect
   return order;
 }
 
+// Per triangle, the sum of its corners' vertex normals, unit (zero where
+// they cancel).
+std::vector<Vec3> facing_normals(const SurfaceMesh& mesh) {
+  const std::vector<Vec3> at_vertex = vertex_normals(mesh);
+  std::vector<Vec3> facing;
+  facing.reserve(mesh.triangle_count());
+  for (const Triangle& t : mesh.triangles()) {
+    const Vec3 sum = at_vertex[t[0]] + at_vertex[t[1]] + at_vertex[t[2]];
+    const double length = norm(sum);
+    facing.push_back(length > 0 ? (1.0 / length) * sum : Vec3{});
+  }
+  return facing;
+}
+
 // A piece of the work shared among threads, in particles or pairs: large
 // enough that taking one costs little, small enough to balance two to 64
 // threads at a few thousand particles.
@@ -77,7 +92,7 @@ constexpr std::size_t kPushPiece = 256;
 }  // namespace
 
 PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<VertexId>& start, unsigned threads)
-    : walk_(mesh), threads_(std::max(1u, threads)) {
+    : walk_(mesh), facing_(facing_normals(mesh)), threads_(std::max(1u, threads)) {
   std::vector<SurfaceLocation> locations;
   for (const VertexId v : start) {
     SurfaceLocation location;
@@ -90,7 +105,7 @@ PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<
 
 PackingRelaxation::PackingRelaxation(const SurfaceMesh& mesh, const std::vector<SurfaceLocation>& start,
                                      unsigned threads)
-    : walk_(mesh), threads_(std::max(1u, threads)) {
+    : walk_(mesh), facing_(facing_normals(mesh)), threads_(std::max(1u, threads)) {
   hold(mesh, start);
 }
 
@@ -219,7 +234,7 @@ std::vector<Vec3> PackingRelaxation::positions() const {
 
 std::vector<Vec3> PackingRelaxation::normals() const {
   std::vector<Vec3> normals;
-  for (const Particle& p : particles_) normals.push_back(walk_.normal(p.triangle));
+  for (const Particle& p : particles_) normals.push_back(facing(p.triangle));
   return normals;
 }
 
@@ -245,10 +260,10 @@ void PackingRelaxation::build_neighbours(double reach) {
       const double query[3] = {at[i].x, at[i].y, at[i].z};
       tree.radiusSearch(query, reach * reach, near, unsorted);
       std::sort(near.begin(), near.end());
-      const Vec3 ni = walk_.normal(particles_[i].triangle);
+      const Vec3 ni = facing(particles_[i].triangle);
       for (const auto& [j, squared] : near) {
         if (j <= i) continue;
-        if (dot(ni, walk_.normal(particles_[j].triangle)) < kFacingCosine) continue;
+        if (dot(ni, facing(particles_[j].triangle)) < kFacingCosine) continue;
         found[piece].emplace_back(i, j);
       }
     }

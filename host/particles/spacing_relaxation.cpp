@@ -10,6 +10,7 @@
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
 #include "mesh/point_cloud_tree.hpp"
+#include "mesh/vertex_normals.hpp"
 
 namespace meshparticles {
 
@@ -91,17 +92,6 @@ constexpr double kReachMargin = 1.05;
 // not 2.4. (Armadillo at 4,096, at 1.20 from round 75, stopped there to
 // 0.19.0; since 0.20.0 it is squeezed at round 25.)
 constexpr double kUncoveredShare = 1.15;
-
-// Per vertex, the sum of its triangles' area-weighted normals.
-std::vector<Vec3> vertex_normals(const SurfaceMesh& mesh) {
-  const auto& positions = mesh.positions();
-  std::vector<Vec3> normals(mesh.vertex_count());
-  for (const Triangle& t : mesh.triangles()) {
-    const Vec3 n = cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
-    for (const VertexId v : t) normals[v] = normals[v] + n;
-  }
-  return normals;
-}
 
 double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& vertex_normal, const std::vector<Vec3>& particles,
                       const std::vector<Vec3>& particle_normals, unsigned threads) {
