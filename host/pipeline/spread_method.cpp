@@ -297,14 +297,15 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   }
   // Straight lines misjudged the surface (pairs on two sides of a thin part
   // that do not push each other, but are close around its tip): the
-  // relaxed set is less spread than the sweeps left it, so the sweeps' set.
+  // relaxed set is not more spread than the evening would leave the
+  // sweeps' set, so that set, and the evening.
   bool measured = false;
   if (relaxation.kept < relaxation.candidates.size() && !details.sweeps.empty()) {
     result.seconds.particles += seconds_since(particles_started);
     measure_spread(result, working, label, std::move(kept_to_nearest), std::move(kept_store));
     particles_started = std::chrono::steady_clock::now();
     measured = true;
-    if (result.quality.nn_min && *result.quality.nn_min < (1 - kSpreadMinGain) * details.sweeps.back().min_spacing) {
+    if (result.quality.nn_min && *result.quality.nn_min < kRelaxedOverSweeps * details.sweeps.back().min_spacing) {
       relaxation.kept = relaxation.candidates.size();
       relaxation.undone_for_spacing = true;
       result.outcome.positions = swept_positions;
