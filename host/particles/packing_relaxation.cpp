@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "common/parallel_for.hpp"
-#include "mesh/point_cloud_tree.hpp"
+#include "mesh/point_grid.hpp"
 #include "mesh/vertex_normals.hpp"
 
 namespace meshparticles {
@@ -250,19 +250,18 @@ std::vector<SurfaceLocation> PackingRelaxation::locations() const {
 // Pairs within `reach`, each once (i < j), in index order.
 void PackingRelaxation::build_neighbours(double reach) {
   const std::vector<Vec3> at = positions();
-  const PointCloud cloud{at};
-  const PointCloudTree tree(3, cloud);
+  const PointGrid grid(at, reach);
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(piece_count(at.size(), kPushPiece));
   for_each_piece(at.size(), kPushPiece, threads_, [&](std::size_t piece, std::size_t from, std::size_t to) {
-    std::vector<std::pair<std::uint32_t, double>> near;
-    const nanoflann::SearchParams unsorted(32, 0.0f, false);
+    std::vector<std::uint32_t> above;
     for (std::uint32_t i = std::uint32_t(from); i < to; ++i) {
-      const double query[3] = {at[i].x, at[i].y, at[i].z};
-      tree.radiusSearch(query, reach * reach, near, unsorted);
-      std::sort(near.begin(), near.end());
+      above.clear();
+      grid.for_each_within(at[i], reach * reach, [&](std::uint32_t j) {
+        if (j > i) above.push_back(j);
+      });
+      std::sort(above.begin(), above.end());
       const Vec3 ni = facing(particles_[i].triangle);
-      for (const auto& [j, squared] : near) {
-        if (j <= i) continue;
+      for (const std::uint32_t j : above) {
         if (dot(ni, facing(particles_[j].triangle)) < kFacingCosine) continue;
         found[piece].emplace_back(i, j);
       }
