@@ -176,6 +176,7 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
                                  ? start_geodesic_cover / outcome.start_cover
                                  : 1.0;
   std::vector<std::vector<PackingRelaxation::Particle>> kept(cover_limits.size(), relaxation.particles());
+  std::vector<std::vector<PackingRelaxation::Particle>> passed;  // outcome.passed's particles
   for (const double limit : cover_limits) {
     (void)limit;
     outcome.candidates.push_back({{}, outcome.start_spacing, to_geodesic * outcome.start_cover, 0});
@@ -239,6 +240,11 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
           candidate.round = round;
           kept[k] = relaxation.particles();
         }
+        const double passed_spacing = outcome.passed.empty() ? outcome.start_spacing : outcome.passed.back().spacing;
+        if (spacing > passed_spacing && cover <= widest_limit) {
+          outcome.passed.push_back({{}, spacing, cover, round});
+          passed.push_back(relaxation.particles());
+        }
       }
       const double widest = outcome.candidates.empty() ? spacing : outcome.candidates.front().spacing;
       progress.update(round, "smallest spacing " + format_number("%.4f", widest / d_hex) + " d_hex");
@@ -248,6 +254,10 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
   for (std::size_t k = 0; k < kept.size(); ++k) {
     relaxation.restore(kept[k]);
     outcome.candidates[k].points = relaxation.locations();
+  }
+  for (std::size_t k = 0; k < passed.size(); ++k) {
+    relaxation.restore(passed[k]);
+    outcome.passed[k].points = relaxation.locations();
   }
   outcome.kept = outcome.candidates.size();
   outcome.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();

@@ -52,6 +52,11 @@ struct RelaxationOutcome {
   // Per cover limit given, in its order: the state with the largest
   // smallest spacing whose straight cover is within it.
   std::vector<RelaxationCandidate> candidates;
+  // The states that were, as they came, the most spread within the widest
+  // limit (their spacing rising), the candidates among them: where the
+  // candidates' geodesic covers prove over the limit, an earlier one may
+  // be within it.
+  std::vector<RelaxationCandidate> passed;
   std::vector<double> round_spacings;  // the smallest straight spacing after each round, mesh units
   double ms = 0;
   // Set by the caller: the candidate it kept (candidates.size(): none, the
@@ -76,7 +81,7 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 // rounds whose radius grows from the smallest spacing reached. Every few
 // rounds the state is a candidate for each of `cover_limits`, its straight
 // cover scaled by the start's `start_geodesic_cover` over its straight one
-// (0: unscaled). No round is run (`skipped_for_straight`) where the
+// (0: unscaled); `passed` keeps the states on the way. No round is run (`skipped_for_straight`) where the
 // start's smallest straight spacing is under kRelaxationStraightShare of
 // `start_geodesic_spacing` (0: no such test). The rounds stop early
 // (`stopped`) where no state more spread than the start has come by
