@@ -42,15 +42,15 @@ SpreadOutcome optimize_farthest_points(const SurfaceMesh& mesh, const GeodesicSo
   ProgressLine progress("spread", max_sweeps, quiet);
   std::unordered_set<std::uint64_t> seen = {positions_hash(outcome.positions)};
   // Every particle decides in the first sweep; after it, only one whose
-  // region a move has reshaped since its last decision, or that decided
-  // when the farthest vertex was nearer than it is now. Any other would
-  // find the same gap and no farther vertex, and stay (but for fast
-  // marching's order-dependent noise: on 16 of 19 spread cases the same
-  // particles as deciding them all), so its two marches are spared: in the
-  // later sweeps a few per cent of the particles move.
+  // region a move has reshaped since its last decision (a particle that
+  // moves reshapes its own), or one the farthest vertex is now far enough
+  // to draw away: farther than its gap, which is as at its last decision,
+  // plus min_gain. Any other would find the same gap and no vertex it
+  // would move to, and stay (but for fast marching's order-dependent
+  // noise), so its two marches are spared: in the later sweeps a few per
+  // cent of the particles move.
   std::vector<std::uint8_t> pending(count, 1);
   std::vector<double> last_spacing(count, std::numeric_limits<double>::infinity());
-  std::vector<float> farthest_seen(count, 0.0f);  // the farthest vertex's distance at p's last visit
   const auto farthest_distance = [&] {
     const auto farthest = voronoi.farthest();
     return farthest ? voronoi.distance(*farthest) : 0.0f;
@@ -65,10 +65,8 @@ SpreadOutcome optimize_farthest_points(const SurfaceMesh& mesh, const GeodesicSo
     double spacing_sum = 0;
     std::size_t spaced = 0;
     for (std::uint32_t p = 0; p < count; ++p) {
-      const float farthest_now = farthest_distance();
-      if (pending[p] || farthest_now > farthest_seen[p]) {
+      if (pending[p] || farthest_distance() > last_spacing[p] + min_gain) {
         pending[p] = 0;
-        farthest_seen[p] = farthest_now;
         ++record.visited;
         const VertexId here = *voronoi.vertex_of(p);
         voronoi.remove(p);
