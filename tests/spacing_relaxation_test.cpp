@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <ostream>
+#include <tuple>
 
 #include "common/random.hpp"
 #include "mesh/io/mesh_reader.hpp"
@@ -258,6 +259,29 @@ TEST(Relaxation, AParticleOnAFlippedTrianglePushesItsNeighbour) {
   for (int round = 0; round < 20; ++round) relaxation.push_round(kRadius);
   const std::vector<Vec3> at = relaxation.positions();
   EXPECT_GT(distance(at[0], at[1]), 0.9 * kRadius);
+}
+
+// Where the candidates' geodesic covers proved over the limit, the state to
+// try once more: the most spread the rounds passed whose straight cover,
+// widened as much as theirs proved, is within the limit; none where that
+// state was a candidate already (it failed) or none is within.
+TEST(Relaxation, FallsBackToTheMostSpreadStateWithinTheWidenedLimit) {
+  RelaxationOutcome outcome;
+  for (const auto& [spacing, cover, round] :
+       {std::tuple{0.80, 0.70, 75}, std::tuple{0.85, 0.74, 100}, std::tuple{0.90, 0.76, 125},
+        std::tuple{0.93, 0.78, 150}}) {
+    outcome.passed.push_back({{}, spacing, cover, std::size_t(round)});
+  }
+  outcome.candidates = {outcome.passed.back(), outcome.passed.back()};
+  constexpr double kLimit = 0.80;
+  const double widening = 0.84 / 0.78;  // the last state's geodesic cover over its straight one
+  const RelaxationCandidate* state = fallback_state(outcome, widening, kLimit);
+  ASSERT_NE(state, nullptr);
+  EXPECT_EQ(state->round, 100u);  // 0.74 x 1.077 = 0.797; round 125's 0.76 widens to 0.818
+  EXPECT_EQ(fallback_state(outcome, 1.0, kLimit), nullptr);  // round 150 itself: tried and failed
+  outcome.candidates.push_back(outcome.passed[1]);
+  EXPECT_EQ(fallback_state(outcome, widening, kLimit), nullptr);  // round 100 tried already
+  EXPECT_EQ(fallback_state(outcome, 1.2, kLimit), nullptr);  // none within: 0.70 x 1.2 = 0.84
 }
 
 INSTANTIATE_TEST_SUITE_P(ClosedMeshes, RelaxationWidens, ::testing::Values("sphere.off", "torus.off", "atrium.off"),

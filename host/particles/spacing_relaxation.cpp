@@ -146,6 +146,16 @@ const char* relaxation_stop_name(RelaxationStop stop) {
   return "";
 }
 
+const RelaxationCandidate* fallback_state(const RelaxationOutcome& outcome, double widening, double cover_limit) {
+  for (auto state = outcome.passed.rbegin(); state != outcome.passed.rend(); ++state) {
+    if (state->cover * widening > cover_limit) continue;
+    const bool tried = std::any_of(outcome.candidates.begin(), outcome.candidates.end(),
+                                   [&](const RelaxationCandidate& c) { return c.round == state->round; });
+    return tried ? nullptr : &*state;
+  }
+  return nullptr;
+}
+
 double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& particles) {
   const auto normals = vertex_normals(mesh);
   std::vector<Vec3> at, facing;

@@ -68,6 +68,13 @@ struct RelaxationOutcome {
   RelaxationStop stopped = RelaxationStop::not_run;
 };
 
+// Where every candidate's geodesic cover proved over `cover_limit`, at most
+// `widening` times its straight one: of the states the rounds passed, the
+// most spread whose straight cover, widened as much, is within the limit,
+// unless a candidate was that state already (then none: it failed). None
+// where no state qualifies.
+const RelaxationCandidate* fallback_state(const RelaxationOutcome& outcome, double widening, double cover_limit);
+
 // The largest straight-line distance from a vertex of `mesh` to the nearest
 // particle on a vertex facing its way: the covering radius, measured as the
 // relaxation measures its candidates' (a few tens of milliseconds on a

@@ -312,15 +312,10 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   // widened as much, is within the limit is tried once more (igea: round
   // 125's 0.707, against the evening's rho 0.836).
   if (relaxation.kept == relaxation.candidates.size() && relaxation.passed_over_for_cover) {
-    for (auto state = relaxation.passed.rbegin(); state != relaxation.passed.rend(); ++state) {
-      if (state->cover * widening > cover_limit) continue;
-      const bool tried = std::any_of(relaxation.candidates.begin(), relaxation.candidates.end(),
-                                     [&](const RelaxationCandidate& c) { return c.round == state->round; });
-      if (!tried && covered(*state)) {
-        relaxation.candidates.push_back(std::move(*state));
-        relaxation.kept = relaxation.candidates.size() - 1;
-      }
-      break;
+    const RelaxationCandidate* state = fallback_state(relaxation, widening, cover_limit);
+    if (state && covered(*state)) {
+      relaxation.candidates.push_back(*state);
+      relaxation.kept = relaxation.candidates.size() - 1;
     }
   }
   // Straight lines misjudged the surface (pairs on two sides of a thin part
