@@ -88,9 +88,10 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<VertexId>& part
 // rounds whose radius grows from the smallest spacing reached. Every few
 // rounds the state is a candidate for each of `cover_limits`, its straight
 // cover scaled by the start's `start_geodesic_cover` over its straight one
-// (0: unscaled); `passed` keeps the states on the way. No round is run (`skipped_for_straight`) where the
-// start's smallest straight spacing is under kRelaxationStraightShare of
-// `start_geodesic_spacing` (0: no such test). The rounds stop early
+// (0: unscaled); `passed` keeps the states on the way. No round is run
+// (`skipped_for_straight`) where the start's smallest straight spacing is
+// under kRelaxationStraightShare of `start_geodesic_spacing` (0: no such
+// test). The rounds stop early
 // (`stopped`) where no state more spread than the start has come by
 // kHopelessAfter rounds, or none has come yet and the even-density rounds
 // squeezed a pair far under the start's spacing (squeezed), the growing
