@@ -6,9 +6,9 @@
 # case (each case by both in turn, their particles compared); the scan and
 # the 1M sphere (SPHERE_DEVICE=0: the sphere on the host path only); then the
 # rest of the device suite (REST=0: not). Every step runs inside what is
-# left of BUDGET seconds (default 520); the cases leave RESERVE seconds
-# (default 230) for the scan and the sphere (RESERVE=0: the cases to the end,
-# neither of those).
+# left of BUDGET seconds (default 520); the threads step and the cases leave
+# RESERVE seconds (default 230) for the scan and the sphere (RESERVE=0: the
+# cases to the end, neither of those; RESERVE over BUDGET: neither step).
 #
 #   BUDGET=520 scripts/device_check.sh DIR
 #
