@@ -82,7 +82,7 @@ threads_cases="${THREADS_CASES:-$(cat "$dir/scans.txt" 2>/dev/null; echo "bunny0
 while read -r mesh n; do
   [ -n "$mesh" ] || continue
   name=$(basename "${mesh%.*}")-$n
-  for t in 1 2 4 8 "$cores"; do
+  for t in $(printf "%s\n" 1 2 4 8 "$cores" | sort -nu); do  # every core once, where it is 2, 4 or 8
     [ "$(left)" -lt $((reserve + 60)) ] && break 2
     timed "$name threads $t" "$work/$name-t$t" "$dir/meshes/$mesh" -n "$n" --threads "$t"
     if cmp -s "$work/$name-t1/particles.particles" "$work/$name-t$t/particles.particles"; then same=same; else same=differ; fi
