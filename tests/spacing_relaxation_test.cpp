@@ -370,6 +370,25 @@ INSTANTIATE_TEST_SUITE_P(CgalMeshes, RelaxationStopsEarly,
                            return file.substr(0, file.find('.'));
                          });
 
+// Straight lines misjudge the surface where two particles, facing each
+// other or not, are under kRelaxationStraightShare of the geodesic spacing
+// apart: the pair just under it counts, one just over it does not, and no
+// pair counts where no geodesic spacing is given.
+TEST(Relaxation, StraightLinesMisjudgeWhereAPairIsUnderTheShareOfTheGeodesicSpacing) {
+  const double spacing = 2.0;
+  const double share = kRelaxationStraightShare * spacing;
+  const auto pair_at = [](double apart) { return std::vector<Vec3>{{0, 0, 0}, {5, 5, 5}, {apart, 0, 0}, {9, 0, 0}}; };
+  EXPECT_TRUE(straight_lines_misjudge(pair_at(0.99 * share), spacing, 1));
+  EXPECT_FALSE(straight_lines_misjudge(pair_at(1.01 * share), spacing, 1));
+  EXPECT_FALSE(straight_lines_misjudge(pair_at(0.99 * share), 0.0, 1));
+  // On the threads, in pieces: the same answer.
+  std::vector<Vec3> many;
+  for (int k = 0; k < 5000; ++k) many.push_back({double(k) * 1.01 * share, 0, 0});
+  EXPECT_FALSE(straight_lines_misjudge(many, spacing, 8));
+  many.push_back({4321 * 1.01 * share + 0.5 * share, 0, 0});
+  EXPECT_TRUE(straight_lines_misjudge(many, spacing, 8));
+}
+
 // And where the first state more spread than the start leaves holes far over
 // the cover limit (here a limit of half the start's own cover, which no state
 // comes near), the rounds stop at that check (`uncovered`), with the rounds

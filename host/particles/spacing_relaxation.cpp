@@ -132,22 +132,6 @@ double straight_cover(const SurfaceMesh& mesh, const std::vector<Vec3>& vertex_n
   return cover.empty() ? 0.0 : *std::max_element(cover.begin(), cover.end());
 }
 
-// The smallest straight-line distance between two of `at`, facing each
-// other or not (infinite where no two are within `reach`).
-double closest_straight(const std::vector<Vec3>& at, double reach, unsigned threads) {
-  const PointGrid grid(at, reach);
-  constexpr std::size_t kPiece = 1024;
-  std::vector<double> closest(piece_count(at.size(), kPiece), std::numeric_limits<double>::infinity());
-  for_each_piece(at.size(), kPiece, threads, [&](std::size_t piece, std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i < to; ++i) {
-      grid.for_each_within(at[i], reach * reach, [&](std::uint32_t j) {
-        if (j != i) closest[piece] = std::min(closest[piece], distance(at[i], at[j]));
-      });
-    }
-  });
-  return closest.empty() ? std::numeric_limits<double>::infinity() : *std::min_element(closest.begin(), closest.end());
-}
-
 }  // namespace
 
 const char* relaxation_stop_name(RelaxationStop stop) {
@@ -161,6 +145,21 @@ const char* relaxation_stop_name(RelaxationStop stop) {
     case RelaxationStop::uncovered: return "uncovered";
   }
   return "";
+}
+
+bool straight_lines_misjudge(const std::vector<Vec3>& at, double geodesic_spacing, unsigned threads) {
+  const double below = kRelaxationStraightShare * geodesic_spacing;
+  if (!(below > 0)) return false;
+  // Every pair nearer than `below`, in pieces on the threads: any is enough.
+  const PointGrid grid(at, below);
+  constexpr std::size_t kPiece = 1024;
+  std::vector<char> near(piece_count(at.size(), kPiece), 0);
+  for_each_piece(at.size(), kPiece, threads, [&](std::size_t piece, std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to && !near[piece]; ++i) {
+      grid.for_each_within(at[i], below * below, [&](std::uint32_t j) { near[piece] |= char(j != i); });
+    }
+  });
+  return std::find(near.begin(), near.end(), 1) != near.end();
 }
 
 const RelaxationCandidate* fallback_state(const RelaxationOutcome& outcome, double widening, double cover_limit) {
@@ -208,9 +207,8 @@ RelaxationOutcome relax_spacing(const SurfaceMesh& mesh, const std::vector<Verte
     (void)limit;
     outcome.candidates.push_back({{}, outcome.start_spacing, to_geodesic * outcome.start_cover, 0});
   }
-  outcome.skipped_for_straight =
-      max_rounds > 0 && std::isfinite(outcome.start_spacing) &&
-      closest_straight(relaxation.positions(), reach, threads) < kRelaxationStraightShare * start_geodesic_spacing;
+  outcome.skipped_for_straight = max_rounds > 0 && std::isfinite(outcome.start_spacing) &&
+                                 straight_lines_misjudge(relaxation.positions(), start_geodesic_spacing, threads);
   if (max_rounds > 0 && std::isfinite(outcome.start_spacing) && !outcome.skipped_for_straight) {
     ProgressLine progress("relax", max_rounds, quiet);
     std::optional<RadiusGrowth> growth;

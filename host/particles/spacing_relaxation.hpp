@@ -33,6 +33,12 @@ namespace meshparticles {
 // 0.843, now skipped: the evening's 0.822).
 inline constexpr double kRelaxationStraightShare = 0.7;
 
+// Whether straight lines misjudge the surface between the particles at
+// `at`: two of them, facing each other or not, are under
+// kRelaxationStraightShare of `geodesic_spacing` apart in a straight line
+// (false where that is 0). The relaxation is not run there.
+bool straight_lines_misjudge(const std::vector<Vec3>& at, double geodesic_spacing, unsigned threads);
+
 // A state the relaxation passed: the most spread one within a cover limit.
 struct RelaxationCandidate {
   std::vector<SurfaceLocation> points;
