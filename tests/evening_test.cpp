@@ -13,6 +13,7 @@
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "common/random.hpp"
 #include "geodesics/geodesic_solver.hpp"
@@ -113,24 +114,34 @@ TEST(Evening, NoMovePassesTheCoverLimit) {
 // where that widens its own gap: the run ends more evenly spaced than its
 // sweeps, its smallest spacing, measured as `quality` measures, never below
 // theirs.
-TEST(Evening, TheRelaxationIsSkippedWhereStraightLinesMisjudgeTheSurface) {
-  const SurfaceMesh mesh = folded_strip(2);
+// A default run of 192 particles on the strip folded `folds` times (with
+// `relax_rounds`, where given).
+RunResult run_on_folded_strip(int folds, std::optional<std::size_t> relax_rounds = std::nullopt) {
   RunRequest request;
-  request.mesh_label = "z-folded strip";
+  request.mesh_label = folds == 1 ? "folded strip" : "z-folded strip";
   request.particles = 192;
   request.quiet = true;
-  const RunResult result = run_pipeline(mesh, request);
-  ASSERT_TRUE(result.spread);
-  const RelaxationOutcome& relaxation = result.spread->relaxation;
-  EXPECT_TRUE(relaxation.skipped_for_straight);
-  EXPECT_TRUE(relaxation.round_spacings.empty());
-  EXPECT_LT(relaxation.start_spacing, kRelaxationStraightShare * result.spread->sweeps.back().min_spacing);
-  ASSERT_TRUE(result.spread->evening);
+  request.relax_rounds = relax_rounds;
+  return run_pipeline(folded_strip(folds), request);
+}
+
+// The run skipped its relaxation (no round) and evened its sweeps instead.
+void expect_relaxation_skipped(const RunResult& run) {
+  ASSERT_TRUE(run.spread);
+  EXPECT_TRUE(run.spread->relaxation.skipped_for_straight);
+  EXPECT_TRUE(run.spread->relaxation.round_spacings.empty());
+  EXPECT_TRUE(run.spread->evening);
+}
+
+TEST(Evening, TheRelaxationIsSkippedWhereStraightLinesMisjudgeTheSurface) {
+  const RunResult result = run_on_folded_strip(2);
+  expect_relaxation_skipped(result);
+  ASSERT_TRUE(result.spread && result.spread->evening);
+  EXPECT_LT(result.spread->relaxation.start_spacing,
+            kRelaxationStraightShare * result.spread->sweeps.back().min_spacing);
   double longest = 0;
   for (const EveningSweep& sweep : result.spread->evening->sweeps) longest = std::max(longest, sweep.longest);
-  RunRequest sweeps_only = request;
-  sweeps_only.relax_rounds = 0;
-  const RunResult swept = run_pipeline(mesh, sweeps_only);
+  const RunResult swept = run_on_folded_strip(2, 0);
   std::cerr << "rho " << *swept.quality.rho << " -> " << *result.quality.rho << ", longest move "
             << longest / result.quality.d_hex << " d_hex\n";
   EXPECT_GE(*result.quality.nn_min, (1 - 1e-3) * *swept.quality.nn_min);
@@ -144,19 +155,12 @@ TEST(Evening, TheRelaxationIsSkippedWhereStraightLinesMisjudgeTheSurface) {
 // not (on the corpus's 92 runs, judged by facing pairs only, 42
 // relaxations ran and 27 were thrown away; judged by all, 20 ran and 6).
 TEST(Evening, TheRelaxationIsSkippedWhereSheetsFacingAwayLieCloseThroughTheAir) {
-  const SurfaceMesh mesh = folded_strip();
-  RunRequest request;
-  request.mesh_label = "folded strip";
-  request.particles = 192;
-  request.quiet = true;
-  const RunResult result = run_pipeline(mesh, request);
+  const RunResult result = run_on_folded_strip(1);
+  expect_relaxation_skipped(result);
   ASSERT_TRUE(result.spread);
-  const RelaxationOutcome& relaxation = result.spread->relaxation;
-  EXPECT_TRUE(relaxation.skipped_for_straight);
-  EXPECT_TRUE(relaxation.round_spacings.empty());
   // The facing pairs alone would not have skipped it.
-  EXPECT_GT(relaxation.start_spacing, kRelaxationStraightShare * result.spread->sweeps.back().min_spacing);
-  EXPECT_TRUE(result.spread->evening);
+  EXPECT_GT(result.spread->relaxation.start_spacing,
+            kRelaxationStraightShare * result.spread->sweeps.back().min_spacing);
 }
 
 TEST(Evening, TheSameStartGivesTheSameBits) {
