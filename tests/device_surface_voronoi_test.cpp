@@ -311,10 +311,11 @@ namespace {
 
 // spread's evening (particles/local_farthest_points) from the sweeps'
 // vertices of a farthest start, its diagrams on the host or on `device`.
-EveningOutcome evening_from_sweeps(const SurfaceMesh& mesh, std::size_t particles, DeviceSurfaceVoronoi* device) {
+EveningOutcome evening_from_sweeps(const SurfaceMesh& mesh, std::size_t particles, DeviceSurfaceVoronoi* device,
+                                   std::size_t sweeps = 40) {
   const EveningStart s = evening_start(mesh, particles);
   const double d_hex = s.d_hex;
-  return even_out(mesh, *s.solver, s.from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, 1.1 * s.start_cover}, 2, true,
+  return even_out(mesh, *s.solver, s.from, {sweeps, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, 1.1 * s.start_cover}, 2, true,
                   device);
 }
 
@@ -334,33 +335,45 @@ TEST_P(DeviceEvening, EvensAsTheHostDoes) {
   DeviceSurfaceVoronoi device(mesh, select_device(""));
   for (const std::size_t n : {64, 256}) {
     SCOPED_TRACE(std::string(GetParam()) + ", n = " + std::to_string(n));
+    const double d_hex = hexagonal_spacing(mesh.area(), n);
+    auto in_the_same_place = [&](const EveningOutcome& a, const EveningOutcome& b) {
+      std::size_t same = 0;
+      for (std::size_t i = 0; i < n; ++i) same += std::size_t(distance(a.points[i].at, b.points[i].at) < 1e-3 * d_hex);
+      return same;
+    };
+    // The first sweep, from the same start: the same moves but where a
+    // near-tie of the two diagrams falls the other way.
+    const EveningOutcome host_first = evening_from_sweeps(mesh, n, nullptr, 1);
+    const EveningOutcome device_first = evening_from_sweeps(mesh, n, &device, 1);
+    const std::size_t same_after_one = in_the_same_place(host_first, device_first);
+    EXPECT_NEAR(double(device_first.sweeps[0].moved), double(host_first.sweeps[0].moved),
+                0.06 * double(host_first.sweeps[0].moved) + 2);
+    EXPECT_GE(same_after_one, 9 * n / 10);
     const EveningOutcome host = evening_from_sweeps(mesh, n, nullptr);
     const EveningOutcome on_device = evening_from_sweeps(mesh, n, &device);
     EXPECT_TRUE(host.diagrams.device.empty());
     EXPECT_EQ(on_device.diagrams.device, device.device_name());
     EXPECT_EQ(on_device.diagrams.count, on_device.sweeps.size() + 1);
-    const double d_hex = hexagonal_spacing(mesh.area(), n);
-    std::size_t host_moves = 0, device_moves = 0, same_place = 0;
+    std::size_t host_moves = 0, device_moves = 0;
     for (const auto& s : host.sweeps) host_moves += s.moved;
     for (const auto& s : on_device.sweeps) device_moves += s.moved;
-    for (std::size_t i = 0; i < n; ++i) {
-      same_place += std::size_t(distance(host.points[i].at, on_device.points[i].at) < 1e-3 * d_hex);
-    }
+    const std::size_t same_place = in_the_same_place(host, on_device);
     const DistributionQuality h = evened_quality(mesh, host), d = evened_quality(mesh, on_device);
-    // Where a near-tie of the two diagrams falls the other way, a neighbour
-    // list differs, one move with it, and the sweeps after it go their own
-    // ways (measured: torus at 256, 6 vertices a particle, 549 moves against
-    // 586 and 146 of 256 particles in the same place; from 0.15.0, whose
-    // moves also read where two regions' shortest path crosses their
-    // border, 699 against 706 and 105): the set is as even, not the same.
-    // Bounds about twice the worst measured.
-    EXPECT_NEAR(double(device_moves), double(host_moves), 0.15 * double(host_moves));
-    EXPECT_GE(same_place, n / 4);
+    // After the first sweep the two go their own ways: where a near-tie of
+    // the two diagrams falls the other way, a neighbour list differs, one
+    // move with it, and every sweep after it. Since 0.24.0 reads each gap
+    // through the neighbours' triangles, the evening makes many more small
+    // moves (sphere at 64: 751 in 16 sweeps), so few particles end in the
+    // same place (measured: 4 of 64 on the sphere, 31 of 256 on the atrium):
+    // the set is as even, not the same. Measured at 0.24.0: moves within
+    // 12%, nn_min 0.8%, cover 6.6% (atrium at 256). Bounds about twice.
+    EXPECT_NEAR(double(device_moves), double(host_moves), 0.25 * double(host_moves));
     EXPECT_NEAR(*d.nn_min, *h.nn_min, 0.02 * *h.nn_min);
     EXPECT_NEAR(*d.nn_cv, *h.nn_cv, 0.2 * *h.nn_cv + 0.005);
-    EXPECT_NEAR(on_device.cover, host.cover, 0.06 * host.cover);
+    EXPECT_NEAR(on_device.cover, host.cover, 0.12 * host.cover);
     std::cout << "[ info ] " << GetParam() << " n=" << n << ": moves " << host_moves << " / " << device_moves
-              << ", same place " << same_place << ", nn_min " << *h.nn_min / d_hex << " / " << *d.nn_min / d_hex
+              << ", same place " << same_after_one << " after one sweep, " << same_place << " at the end, first sweep's moves "
+              << host_first.sweeps[0].moved << " / " << device_first.sweeps[0].moved << ", nn_min " << *h.nn_min / d_hex << " / " << *d.nn_min / d_hex
               << ", nn_cv " << *h.nn_cv << " / " << *d.nn_cv << ", cover " << host.cover / d_hex << " / "
               << on_device.cover / d_hex << "\n";
   }
@@ -377,9 +390,11 @@ INSTANTIATE_TEST_SUITE_P(CommittedMeshes, DeviceEvening, ::testing::Values("sphe
 // (then both paths are the same bits, the device unused). The two
 // diagrams differ where two regions meet (DeviceVoronoi above), so a
 // near-tie can list another neighbour and the sweeps after it go their own
-// ways: the same accepted moves within 6% (and 4) and particles as even
-// (measured at 0.17.0: moves within 2.2%, or 2 of 15 at n = 64; rho the
-// host's or higher; nn_cv within 0.6%; cover within 4.5%, man at 1,024).
+// ways: as many accepted moves within 25% (and 4) and particles as even
+// (measured at 0.24.0, whose evening makes many more small moves: moves
+// within 13.5%, camel at 1,024, 0.17.0 2.2%; rho the host's; nn_cv within
+// 3%; cover within 1.4%; DeviceEvening above holds the first sweep's
+// moves to the host's).
 // With the device's diagrams left as the first sweep found them, 7.7% to
 // 21% fewer moves (1 to 16 at n = 64), and camel's rho 0.02 to 0.03 lower.
 class DeviceRun : public ::testing::TestWithParam<std::tuple<const char*, std::size_t>> {};
@@ -408,7 +423,7 @@ TEST_P(DeviceRun, IsAsEvenAsTheHostsRun) {
   std::size_t host_moves = 0, device_moves = 0;
   for (const auto& s : host.spread->evening->sweeps) host_moves += s.moved;
   for (const auto& s : device.spread->evening->sweeps) device_moves += s.moved;
-  EXPECT_NEAR(double(device_moves), double(host_moves), 0.06 * double(host_moves) + 4);
+  EXPECT_NEAR(double(device_moves), double(host_moves), 0.25 * double(host_moves) + 4);
   EXPECT_GE(*device.quality.rho, *host.quality.rho - 0.02);
   EXPECT_LE(*device.quality.nn_cv, 1.25 * *host.quality.nn_cv);
   EXPECT_LE(*device.quality.cover, 1.1 * *host.quality.cover);  // the evening's own limit: 1.1x the start's

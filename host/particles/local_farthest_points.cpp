@@ -9,6 +9,7 @@
 #include "common/parallel_for.hpp"
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
+#include "geodesics/distance_in_triangle.hpp"
 #include "geodesics/memory_guard.hpp"
 #include "particles/surface_voronoi.hpp"
 
@@ -48,8 +49,8 @@ constexpr std::size_t kStallSweeps = 2;
 // its straight length where the cover is bounded without a march.
 constexpr double kMoveSlack = 1.1;
 // What a march's scratch holds per vertex (SolverScratch::fit: accepted,
-// heap_slot, origin, distances).
-constexpr std::uint64_t kScratchBytesPerVertex = 1 + 4 + 4 + 8;
+// heap_slot, origin, distances; SurfaceGap's reached).
+constexpr std::uint64_t kScratchBytesPerVertex = 1 + 4 + 4 + 8 + 4;
 
 struct Neighbour {
   std::uint32_t particle = 0;
@@ -157,40 +158,59 @@ class CornerIndex {
 };
 
 // What a move is judged by: the distance along the surface from `from` to
-// the nearest particle other than i, marched from its triangle's corners
-// up to `radius` (returned where none is nearer). A particle is reached
-// through its triangle's corners, at d(corner) + |corner - particle|, so
-// only corners nearer than `radius` can bring one nearer: the march stops
-// there. (To 0.15.0 it went on by the farthest a particle sits from its
-// corners: a third of the evening's marching for nothing. The particles
-// differ only where fast marching accepts a vertex out of order.)
+// the nearest particle other than i, up to `radius` (returned where none is
+// nearer), by a march from its triangle's corners. A particle is reached
+// through its triangle, from the corners the march reached
+// (distance_in_triangle; one in `from`'s own triangle in a straight line).
+// A march that stops at `radius` may read a particle near its edge through
+// one corner, or not at all: too far, never too near. That is what the gap
+// a particle has is judged by. The gap it would have, which it must beat,
+// is read by a march one longest edge further (`whole`), which reaches
+// every corner of any particle nearer than `radius`: a move back and forth
+// each sweep is then not possible (it was, bull at 64: one particle until
+// the 40th sweep).
 class SurfaceGap {
  public:
-  SurfaceGap(const SurfaceMesh& mesh, const GeodesicSolver& solver) : mesh_(mesh), solver_(solver) {}
+  SurfaceGap(const SurfaceMesh& mesh, const GeodesicSolver& solver, double longest_edge)
+      : mesh_(mesh), solver_(solver), longest_edge_(longest_edge) {}
   // `read`: every vertex whose particles it looked at is appended (a
   // particle moving to a triangle with no corner among them stays farther
   // than `radius`).
   double operator()(const SurfaceLocation& from, std::uint32_t i, double radius, const CornerIndex& corners,
-                    const std::vector<SurfaceLocation>& points, std::vector<VertexId>& read) {
+                    const std::vector<SurfaceLocation>& points, std::vector<VertexId>& read, bool whole = false) {
     const Triangle& t = mesh_.triangles()[from.triangle];
     const auto& p = mesh_.positions();
     const double starts[3] = {distance(from.at, p[t[0]]), distance(from.at, p[t[1]]), distance(from.at, p[t[2]])};
-    solver_.solve_ball_from(t, starts, radius, scratch_, within_);
+    solver_.solve_ball_from(t, starts, whole ? radius + longest_edge_ : radius, scratch_, within_);
+    if (reached_.empty()) reached_.assign(mesh_.vertex_count(), kUnreached);  // on first use, as the scratch
+    for (const auto& [v, d] : within_) reached_[v] = d;
     double nearest = radius;
     for (const auto& [v, d] : within_) {
       read.push_back(v);
       for (const std::uint32_t k : corners.at(v)) {
-        if (k != i) nearest = std::min(nearest, double(d) + distance(p[v], points[k].at));
+        if (k != i) nearest = std::min(nearest, distance_to(from, points[k]));
       }
     }
+    for (const auto& [v, d] : within_) reached_[v] = kUnreached;
     return nearest;
   }
 
  private:
+  static constexpr float kUnreached = std::numeric_limits<float>::infinity();
+
+  double distance_to(const SurfaceLocation& from, const SurfaceLocation& to) const {
+    if (to.triangle == from.triangle) return distance(from.at, to.at);
+    const Triangle& t = mesh_.triangles()[to.triangle];
+    const auto& p = mesh_.positions();
+    return distance_in_triangle({p[t[0]], p[t[1]], p[t[2]]}, {reached_[t[0]], reached_[t[1]], reached_[t[2]]}, to.at);
+  }
+
   const SurfaceMesh& mesh_;
   const GeodesicSolver& solver_;
+  const double longest_edge_;
   SolverScratch scratch_;
   std::vector<std::pair<VertexId, float>> within_;
+  std::vector<float> reached_;  // per vertex: the march's distance while a gap is read, else +inf
 };
 
 // The centre of the circle through a, b and c in the plane; false when they are on a line.
@@ -301,7 +321,7 @@ void propose_move(std::uint32_t i, const EveningView& view, SurfaceGap& gap, Pro
   if (widest <= before + limits.min_gain) return;
   const double was = gap(p, i, before + kGapMargin * limits.d_hex, view.corners, view.points, proposal.read);
   const double wanted = was + limits.min_gain;
-  if (gap(there, i, wanted, view.corners, view.points, proposal.read) < wanted) return;
+  if (gap(there, i, wanted, view.corners, view.points, proposal.read, true) < wanted) return;
   proposal.move = true;
   proposal.there = there;
 }
@@ -338,7 +358,8 @@ class Evening {
       : mesh_(mesh), solver_(solver), device_(device), walk_(mesh), limits_(limits), threads_(std::max(1u, threads)),
         points_(std::move(points)), corners_(mesh, points_), visit_(points_.size(), 1),
         moved_in_set_(points_.size(), 0), stamp_(mesh.vertex_count(), 0) {
-    for (unsigned k = 0; k < threads_; ++k) gaps_.emplace_back(mesh, solver);
+    const double longest = longest_edge(mesh);
+    for (unsigned k = 0; k < threads_; ++k) gaps_.emplace_back(mesh, solver, longest);
     find_neighbours();
   }
 
