@@ -188,7 +188,7 @@ class SurfaceGap {
     for (const auto& [v, d] : within_) {
       read.push_back(v);
       for (const std::uint32_t k : corners.at(v)) {
-        if (k != i) nearest = std::min(nearest, distance_to(from, points[k]));
+        if (k != i && first_reached(points[k].triangle) == v) nearest = std::min(nearest, distance_to(from, points[k]));
       }
     }
     for (const auto& [v, d] : within_) reached_[v] = kUnreached;
@@ -197,6 +197,12 @@ class SurfaceGap {
 
  private:
   static constexpr float kUnreached = std::numeric_limits<float>::infinity();
+
+  // A particle is read once, at the first of its triangle's corners the march reached.
+  VertexId first_reached(std::uint32_t triangle) const {
+    const Triangle& t = mesh_.triangles()[triangle];
+    return !std::isinf(reached_[t[0]]) ? t[0] : !std::isinf(reached_[t[1]]) ? t[1] : t[2];
+  }
 
   double distance_to(const SurfaceLocation& from, const SurfaceLocation& to) const {
     if (to.triangle == from.triangle) return distance(from.at, to.at);
