@@ -185,7 +185,7 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
     from.push_back(walk.at_vertex(v));
   }
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
-  const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadMinGain * d_hex, kSpreadStallGain * d_hex,
+  const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadEveningMinGain * d_hex, kSpreadStallGain * d_hex,
                              cover_limit};
   std::optional<EveningOutcome>& evening = result.spread->evening;
   const std::unique_ptr<DeviceSurfaceVoronoi> device = device_setup.valid() ? device_setup.get() : nullptr;
