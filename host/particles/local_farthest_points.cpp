@@ -163,12 +163,12 @@ class CornerIndex {
 // through its triangle, from the corners the march reached
 // (distance_in_triangle; one in `from`'s own triangle in a straight line).
 // A march that stops at `radius` may read a particle near its edge through
-// one corner, or not at all: too far, never too near. That is what the gap
-// a particle has is judged by. The gap it would have, which it must beat,
-// is read by a march one longest edge further (`whole`), which reaches
-// every corner of any particle nearer than `radius`: a move back and forth
-// each sweep is then not possible (it was, bull at 64: one particle until
-// the 40th sweep).
+// one corner, or not at all: too far, never nearer than a longer march
+// reads it. The gap a particle has is read so (at worst its move must beat
+// too much). The gap it would have is read by a march one longest edge
+// further (`whole`), which reaches every corner of any particle nearer
+// than `radius`: a move back and forth each sweep is then not possible (it
+// was, bull at 64: one particle until the 40th sweep).
 class SurfaceGap {
  public:
   SurfaceGap(const SurfaceMesh& mesh, const GeodesicSolver& solver, double longest_edge)
