@@ -39,7 +39,7 @@ inline constexpr double kSpreadMinGain = 1e-3;
 // triangles (0.24.0) it makes many small moves; those under this are a
 // third of them at 10^-3 and move neither median (the 46 corpus runs at
 // seeds 1 and 2: rho 0.8458, 0.8357 either way; nn_cv 0.0305 -> 0.0312,
-// 0.0315 -> 0.0316), for two fifths of the evening's time.
+// 0.0315 -> 0.0316); with them the evening took 40% longer.
 inline constexpr double kSpreadEveningMinGain = 3e-3;
 // spread stops when a sweep raises the mean spacing by less than this many
 // hexagonal spacings.
