@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "geodesics/distance_in_triangle.hpp"
 #include "geodesics/point_source_update.hpp"
 
 namespace meshparticles {
@@ -16,16 +17,6 @@ namespace {
 
 // Points along a triangle's edge at most (a triangle 60 steps long is sampled more coarsely).
 constexpr int kMostSteps = 60;
-
-// Fast marching's frame for `point` from the corners `x` and `y`: x at the
-// origin, y on the positive x-axis, the point below it.
-PlanarFrame point_frame(const Vec3& x, const Vec3& y, const Vec3& point) {
-  const Vec3 along = y - x, to = point - x;
-  const double base = norm(along);
-  const double c_x = dot(to, along) / base;
-  const double c_y = -norm(to - (c_x / base) * along);
-  return {float(base), float(c_x), float(c_y)};
-}
 
 // A point's way to `vertex` (`to_vertex` along the surface) over the
 // straight line, less the marching's own excess (kPathSlack), at least 1.
