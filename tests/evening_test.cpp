@@ -93,6 +93,29 @@ TEST(Evening, FollowsTheSurfaceAcrossAFold) {
   EXPECT_LE(*after.cover * after.d_hex, run.limit * (1 + 1e-3));
 }
 
+// The particles kept are those of the sweep whose smallest spacing is the
+// widest (the last such): a ball from one end of a pair reads it a little
+// otherwise than one from the other end, so a later sweep can end with a
+// narrower pair.
+TEST(Evening, KeepsTheSweepWithTheWidestSmallestSpacing) {
+  const Evened run = even_the_fold(96);
+  const std::vector<EveningSweep>& sweeps = run.outcome.sweeps;
+  const std::size_t kept = run.outcome.kept_sweep;
+  ASSERT_GT(kept, 0u);
+  ASSERT_LE(kept, sweeps.size());
+  const double widest = sweeps[kept - 1].smallest;
+  std::size_t narrower_later = 0;
+  for (std::size_t k = 0; k < sweeps.size(); ++k) {
+    EXPECT_LE(sweeps[k].smallest, widest) << "sweep " << k + 1;
+    if (k + 1 > kept) {
+      EXPECT_LT(sweeps[k].smallest, widest) << "sweep " << k + 1 << ": a later sweep as wide is kept";
+      ++narrower_later;
+    }
+  }
+  std::cerr << "kept sweep " << kept << " of " << sweeps.size() << "\n";
+  EXPECT_GT(narrower_later, 0u) << "the strip no longer shows a later, narrower sweep: the test checks nothing";
+}
+
 // No move takes the covering radius past the limit, held here at the
 // sweeps' own cover: the moves that widen gaps then stay where a region
 // left behind remains covered.

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "geodesics/triangle_stencils.hpp"
+#include "mesh/vec3.hpp"
 
 namespace meshparticles {
 
@@ -29,6 +30,17 @@ inline double point_source_update(const PlanarFrame& s, double dx, double dy) {
   // crossing test also catches 0/0 on degenerate triangles.
   const bool applies = (height_squared >= 0) & (crossing >= 0) & (crossing <= base);
   return applies ? distance : INFINITY;
+}
+
+// Fast marching's frame for `point` from the corners `x` and `y`: x at the
+// origin, y on the positive x-axis, the point below it (the update's C for
+// a point inside a triangle: particles/widest_hole).
+inline PlanarFrame point_frame(const Vec3& x, const Vec3& y, const Vec3& point) {
+  const Vec3 along = y - x, to = point - x;
+  const double base = norm(along);
+  const double c_x = dot(to, along) / base;
+  const double c_y = -norm(to - (c_x / base) * along);
+  return {float(base), float(c_x), float(c_y)};
 }
 
 }  // namespace meshparticles

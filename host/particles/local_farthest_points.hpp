@@ -1,14 +1,16 @@
 #pragma once
 // Farthest-point optimization off the vertices, among surface neighbours:
 // the evening step after the sweeps on vertices (docs/ALGORITHM.md,
-// "Evening"). A sweep visits every particle and moves it to
-// the centre of the largest empty circle of its neighbours on the surface
-// (the regions of the geodesic Voronoi diagram that touch its own, found
-// anew each sweep), if that widens its own gap: the move is kept only when
-// the particle ends farther from every neighbour than it was from its
-// nearest. So no particle is ever kept or dropped because of another pair,
-// the smallest spacing of the set never shrinks, and two parts facing each
-// other through the air never push (their regions do not touch).
+// "Evening"). A sweep visits every particle and moves it to the centre of
+// its cavity: the point of its region of the geodesic Voronoi diagram
+// farthest along the surface from the particles around it
+// (particles/cavity_centre, through their geodesic balls), if that is
+// farther from them than where it stands. So no particle is ever kept or
+// dropped because of another pair, and two parts facing each other through
+// the air never push (distances are along the surface). The balls read a
+// pair a little differently from its two ends, so a sweep can narrow the
+// smallest spacing: the particles kept are those of the sweep where it was
+// widest.
 //
 // Vertices cap farthest-point optimization: a particle can only stand where
 // a vertex is, up to an edge from the true centre, which costs about a
@@ -28,7 +30,7 @@ namespace meshparticles {
 
 struct EveningSweep {
   std::size_t moved = 0;
-  double smallest = 0, mean = 0;  // each particle's spacing to its nearest surface neighbour, after the sweep
+  double smallest = 0, mean = 0;  // each particle's distance along the surface to the nearest particle around it, after the sweep
   double cover = 0;               // the geodesic covering radius before the sweep (mesh units)
   double longest = 0;             // the longest move kept, straight (mesh units)
   double ms = 0;
@@ -45,8 +47,9 @@ struct EveningDiagrams {
 struct EveningOutcome {
   std::vector<SurfaceLocation> points;  // in the caller's order
   std::vector<EveningSweep> sweeps;
-  double cover = 0;                     // the final points' geodesic covering radius (mesh units)
+  double cover = 0;                     // the points' geodesic covering radius (mesh units)
   EveningDiagrams diagrams;
+  std::size_t kept_sweep = 0;           // the sweep whose points these are (0: the start)
 };
 
 struct EveningLimits {
@@ -64,7 +67,10 @@ struct EveningLimits {
 // within `limits.cover` of it (a region already wider may not widen).
 // Each sweep's particles go in independent sets, each set's moves judged
 // on `threads` threads (0: every core). Deterministic: the same inputs give
-// the same bits, for any number of threads. Unless `quiet`, a progress line.
+// the same bits, for any number of threads. Returns the points of the sweep
+// (or the start) whose smallest spacing is widest. Each particle's geodesic
+// ball is kept for the evening (about 65 bytes a vertex of `mesh`). Unless
+// `quiet`, a progress line.
 // With `device` (built for `mesh`), each sweep's Voronoi diagram is the
 // device's (device_surface_voronoi), not the host's surface_voronoi.
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> start,

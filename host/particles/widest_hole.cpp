@@ -8,7 +8,6 @@
 #include <span>
 #include <vector>
 
-#include "geodesics/distance_in_triangle.hpp"
 #include "geodesics/point_source_update.hpp"
 
 namespace meshparticles {

@@ -146,7 +146,11 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
     where["device"] = diagrams.device;
     where["rounds"] = diagrams.rounds;
   }
-  return {{"moves", moved}, {"cover", evening.cover / d_hex}, {"diagrams", where}, {"sweeps", sweeps}};
+  return {{"moves", moved},
+          {"cover", evening.cover / d_hex},
+          {"kept_sweep", evening.kept_sweep},
+          {"diagrams", where},
+          {"sweeps", sweeps}};
 }
 
 // The figures both methods' reports share, from its iterations or sweeps.
