@@ -60,7 +60,8 @@ NeighbourLists neighbour_lists(const SurfaceMesh& mesh, const SurfaceVoronoi& ce
   for_each_with_slot(particles, threads, [&](std::size_t particle, unsigned slot) {
     const auto i = std::uint32_t(particle);
     std::vector<char>& seen = seens[slot];
-    std::vector<std::uint32_t>&frontier = frontiers[slot], &next = nexts[slot];
+    std::vector<std::uint32_t>& frontier = frontiers[slot];
+    std::vector<std::uint32_t>& next = nexts[slot];
     if (seen.empty()) seen.assign(particles, 0);
     seen[i] = 1;
     for (const std::uint32_t k : lists.near[i]) seen[k] = 1;
@@ -128,7 +129,7 @@ void propose_move(std::uint32_t i, const EveningView& view, CavityScratch& scrat
 
 // The particles to visit in sets whose moves cannot meet: a greedy
 // colouring by index of the graph joining each particle to those within
-// kReachSteps steps (its lists, all a proposal reads of others' positions).
+// kReachSteps steps (its lists, whose balls are all a proposal reads of others).
 // Sets in colour order, each in index order.
 std::vector<std::vector<std::uint32_t>> independent_sets(const NeighbourLists& lists, const std::vector<char>& visit) {
   constexpr std::uint32_t kNone = 0xFFFFFFFFu;
