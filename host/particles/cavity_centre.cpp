@@ -99,8 +99,9 @@ CavityCentre widest_from_sources(const SurfaceMesh& mesh, const SurfaceLocation&
     const auto [x, y] = own.plane(at.at);
     widest.here = nearest_source(s.planar, x, y);
   }
-  for (const auto& [bound, t] : s.order) {
+  for (const auto& [bound, triangle] : s.order) {
     if (bound <= widest.away) break;
+    const std::uint32_t t = triangle;  // a copy: clang 14 lets no lambda capture a structured binding
     const TriangleFrame f = triangle_frame(mesh, t);
     if (f.degenerate()) continue;
     planar_sources(f, mesh.triangles()[t], s);

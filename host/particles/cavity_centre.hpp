@@ -59,7 +59,8 @@ struct Cavity {
 // The point of the triangles around `cavity.region`'s vertices (and the
 // particle's own triangle) farthest from the particles listed, each through
 // its ball in `balls` (a particle's distances beyond its ball: none, there
-// others are nearer). Ties go to the first triangle in index order.
+// others are nearer). Ties go to the point found first: the triangles are
+// searched by decreasing bound, then index.
 CavityCentre cavity_centre(const SurfaceMesh& mesh, const VertexTriangles& rings, const Cavity& cavity,
                            const std::vector<SurfaceLocation>& points, const std::vector<ParticleBall>& balls,
                            CavityScratch& scratch);
