@@ -15,10 +15,12 @@
 #include "geodesics/fast_iterative.hpp"
 #include "geodesics/geodesic_solver.hpp"
 #include "geodesics/memory_guard.hpp"
+#include "geodesics/point_seeds.hpp"
 #include "geodesics/point_source_update.hpp"
 #include "geodesics/solver_factory.hpp"
 #include "geodesics/triangle_stencils.hpp"
 #include "mesh/io/mesh_reader.hpp"
+#include "mesh/vertex_triangles.hpp"
 #include "fixtures/mesh_generator.hpp"
 #include "test_files.hpp"
 
@@ -263,6 +265,46 @@ TEST(GeodesicSolver, BallsAreTheFullSolveInsideTheRadius) {
   }
 }
 
+// A march from a point inside a triangle starts from its corners' fans
+// (geodesics/point_seeds): on the flat patch every vertex is then at its
+// straight line from the point to a few hundredths of an edge (0.032
+// measured, what a march from a vertex leaves too). From the
+// corners alone, a fan vertex whose update needs a farther one was
+// accepted first, through the corner, up to a third of an edge too far
+// (0.30), and the march carried that outward.
+TEST(GeodesicSolver, AMarchFromAPointStartsFromItsCornersFans) {
+  const SurfaceMesh patch = testing::committed("patch.off");
+  const auto solver = make_geodesic_solver(patch, GeodesicMethod::fast_marching);
+  const VertexTriangles rings = vertex_triangles(patch.triangles(), patch.vertex_count());
+  const auto& p = patch.positions();
+  SolverScratch scratch;
+  PointSeeds seeds;
+  std::vector<std::pair<VertexId, float>> within;
+  SplitMix64 random(5);
+  double worst_from_fans = 0, worst_from_corners = 0;
+  for (int source = 0; source < 200; ++source) {
+    const auto triangle = std::uint32_t(random.below(patch.triangles().size()));
+    const Triangle& t = patch.triangles()[triangle];
+    const double a = random.uniform(), b = random.uniform() * (1 - a);
+    const SurfaceLocation at{triangle, {1 - a - b, a, b}, (1 - a - b) * p[t[0]] + a * p[t[1]] + b * p[t[2]]};
+    const auto worst_error = [&] {
+      double worst = 0;
+      for (const auto& [v, d] : within) worst = std::max(worst, std::abs(d - distance(at.at, p[v])));
+      return worst / patch.mean_edge_length();
+    };
+    point_seeds(patch, rings, at, seeds);
+    solver->solve_ball_from(seeds.vertices, seeds.distances, INFINITY, scratch, within);
+    worst_from_fans = std::max(worst_from_fans, worst_error());
+    const double starts[3] = {distance(at.at, p[t[0]]), distance(at.at, p[t[1]]), distance(at.at, p[t[2]])};
+    solver->solve_ball_from(t, starts, INFINITY, scratch, within);
+    worst_from_corners = std::max(worst_from_corners, worst_error());
+  }
+  std::printf("a march from a point, worst error in edges: from the corners' fans %.4f, from the corners %.4f\n",
+              worst_from_fans, worst_from_corners);
+  EXPECT_LT(worst_from_fans, 0.05);
+  EXPECT_GT(worst_from_corners, 4 * worst_from_fans);  // what the fans are for
+}
+
 // A point inside a triangle, read from a march's distances to its corners:
 // on the flat patch the march from a point is the straight line at the
 // vertices, and so is the point's distance from the source those three
@@ -271,9 +313,11 @@ TEST(GeodesicSolver, BallsAreTheFullSolveInsideTheRadius) {
 TEST(GeodesicSolver, APointInsideATriangleIsReadFromASourceInItsPlane) {
   const SurfaceMesh patch = testing::committed("patch.off");
   const auto solver = make_geodesic_solver(patch, GeodesicMethod::fast_marching);
+  const VertexTriangles rings = vertex_triangles(patch.triangles(), patch.vertex_count());
   const auto& p = patch.positions();
   const auto& triangles = patch.triangles();
   SolverScratch scratch;
+  PointSeeds seeds;
   std::vector<std::pair<VertexId, float>> within;
   std::vector<double> marched(patch.vertex_count());
   SplitMix64 random(11);
@@ -284,10 +328,10 @@ TEST(GeodesicSolver, APointInsideATriangleIsReadFromASourceInItsPlane) {
     return (1 - a - b) * p[t[0]] + a * p[t[1]] + b * p[t[2]];
   };
   for (int source = 0; source < 20; ++source) {
-    const Triangle& from = triangles[random.below(triangles.size())];
-    const Vec3 q = inside(from);
-    const double starts[3] = {distance(q, p[from[0]]), distance(q, p[from[1]]), distance(q, p[from[2]])};
-    solver->solve_ball_from(from, starts, INFINITY, scratch, within);
+    const auto from_index = std::uint32_t(random.below(triangles.size()));
+    const Vec3 q = inside(triangles[from_index]);
+    point_seeds(patch, rings, {from_index, {}, q}, seeds);
+    solver->solve_ball_from(seeds.vertices, seeds.distances, INFINITY, scratch, within);
     for (const auto& [v, d] : within) marched[v] = d;
     for (int target = 0; target < 50; ++target) {
       const auto to_index = std::uint32_t(random.below(triangles.size()));
@@ -312,6 +356,33 @@ TEST(GeodesicSolver, APointInsideATriangleIsReadFromASourceInItsPlane) {
               in_plane, through_corners);
   EXPECT_LT(in_plane, 0.02);
   EXPECT_LT(in_plane, through_corners / 5);
+}
+
+// Where a triangle's three distances fit no source (a sliver, across whose
+// height they differ faster than any distance can: turbine at 1,024, a
+// ball's corner a twelfth too far), each corner still reads its own
+// distance, and a point inside no nearer or farther than the corners allow.
+// The source placed without that bound read the corner beside the far one
+// a tenth of a spacing too near.
+TEST(GeodesicSolver, ATriangleWhoseDistancesFitNoSourceReadsItsCornersAtTheirOwn) {
+  // turbine's sliver: edges 0.2881, 0.1574 and 0.1317 spacings.
+  const double base = 0.2881, to_third = 0.1317, from_second = 0.1574;
+  const double x = (base * base + to_third * to_third - from_second * from_second) / (2 * base);
+  const SurfaceMesh sliver({{0, 0, 0}, {base, 0, 0}, {x, std::sqrt(to_third * to_third - x * x), 0}}, {{0, 1, 2}});
+  const TriangleFrame frame = triangle_frame(sliver, 0);
+  const std::array<double, 3> corner_distance{0.7338, 0.5298, 0.6852};
+  const PlanarSource source = planar_source(frame, corner_distance);
+  const auto& p = sliver.positions();
+  for (int c = 0; c < 3; ++c) {
+    const auto [cx, cy] = frame.plane(p[c]);
+    EXPECT_NEAR(source.distance_to(cx, cy), corner_distance[c], 1e-12) << "corner " << c;
+  }
+  const Vec3 middle = (1.0 / 3) * (p[0] + p[1] + p[2]);
+  const auto [mx, my] = frame.plane(middle);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GE(source.distance_to(mx, my), corner_distance[c] - distance(middle, p[c]) - 1e-12);
+    EXPECT_LE(source.distance_to(mx, my), corner_distance[c] + distance(middle, p[c]) + 1e-12);
+  }
 }
 
 // Several sources: each vertex gets the distance to its nearest source. On

@@ -11,6 +11,7 @@
 #include "common/progress.hpp"
 #include "common/text_format.hpp"
 #include "geodesics/memory_guard.hpp"
+#include "geodesics/point_seeds.hpp"
 #include "particles/cavity_centre.hpp"
 #include "particles/surface_voronoi.hpp"
 
@@ -158,10 +159,11 @@ class Evening {
           const EveningLimits& limits, unsigned threads, DeviceSurfaceVoronoi* device)
       : mesh_(mesh), solver_(solver), device_(device), walk_(mesh), limits_(limits), threads_(std::max(1u, threads)),
         points_(std::move(points)), visit_(points_.size(), 1), scratches_(threads_), ball_scratches_(threads_),
-        balls_(points_.size()), moved_in_set_(points_.size(), 0), stamp_(mesh.vertex_count(), 0) {
+        seeds_(threads_), balls_(points_.size()), moved_in_set_(points_.size(), 0), stamp_(mesh.vertex_count(), 0) {
     find_neighbours();
-    for_each_with_slot(points_.size(), threads_,
-                       [&](std::size_t k, unsigned slot) { march_ball(std::uint32_t(k), ball_scratches_[slot]); });
+    for_each_with_slot(points_.size(), threads_, [&](std::size_t k, unsigned slot) {
+      march_ball(std::uint32_t(k), ball_scratches_[slot], seeds_[slot]);
+    });
     double mean = 0;
     measure_spacings(mean, kept_.smallest);
     kept_.points = points_;
@@ -207,8 +209,9 @@ class Evening {
       for (const std::uint32_t i : set) {
         if (moved_in_set_[i] == set_stamp_) movers_.push_back(i);
       }
-      for_each_with_slot(movers_.size(), threads_,
-                         [&](std::size_t k, unsigned slot) { march_ball(movers_[k], ball_scratches_[slot]); });
+      for_each_with_slot(movers_.size(), threads_, [&](std::size_t k, unsigned slot) {
+        march_ball(movers_[k], ball_scratches_[slot], seeds_[slot]);
+      });
     }
     record.moved = std::size_t(std::count(moved.begin(), moved.end(), 1));
     find_neighbours(&moved);
@@ -226,13 +229,11 @@ class Evening {
   }
 
  private:
-  // Particle k's ball: the vertices within kBallReach spacings of where it stands.
-  void march_ball(std::uint32_t k, SolverScratch& scratch) {
-    const SurfaceLocation& p = points_[k];
-    const Triangle& t = mesh_.triangles()[p.triangle];
-    const auto& at = mesh_.positions();
-    const double starts[3] = {distance(p.at, at[t[0]]), distance(p.at, at[t[1]]), distance(p.at, at[t[2]])};
-    solver_.solve_ball_from(t, starts, kBallReach * limits_.d_hex, scratch, balls_[k]);
+  // Particle k's ball: the vertices within kBallReach spacings of where it
+  // stands, marched from its corners' fans (geodesics/point_seeds).
+  void march_ball(std::uint32_t k, SolverScratch& scratch, PointSeeds& seeds) {
+    point_seeds(mesh_, walk_.triangles_around(), points_[k], seeds);
+    solver_.solve_ball_from(seeds.vertices, seeds.distances, kBallReach * limits_.d_hex, scratch, balls_[k]);
     std::sort(balls_[k].begin(), balls_[k].end());  // by vertex: gap_from_balls looks corners up
   }
 
@@ -443,6 +444,7 @@ class Evening {
   std::vector<char> visit_;
   std::vector<CavityScratch> scratches_;     // one per thread
   std::vector<SolverScratch> ball_scratches_;  // one per thread
+  std::vector<PointSeeds> seeds_;              // one per thread
   std::vector<ParticleBall> balls_;            // per particle, where it stands
   std::vector<std::uint32_t> movers_;          // of the set in hand
   std::vector<Proposal> proposals_;            // of the set in hand, in its order
