@@ -25,9 +25,11 @@
 #include "particles/spacing_relaxation.hpp"
 #include "pipeline/point_set_measurement.hpp"
 #include "pipeline/run_pipeline.hpp"
+#include "pipeline/spread_method.hpp"
 #include "quality/distribution_quality.hpp"
 #include "evening_start.hpp"
 #include "folded_strip.hpp"
+#include "test_files.hpp"
 
 namespace meshparticles::testing {
 namespace {
@@ -71,7 +73,8 @@ Evened even_the_fold(std::size_t particles, double cover_share = 1.1, unsigned t
     }
   }
   const double d_hex = s.d_hex;
-  result.outcome = even_out(mesh, *s.solver, s.from, {40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, result.limit}, threads, true);
+  const EveningLimits limits{40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, result.limit, 0, 0};  // no swaps
+  result.outcome = even_out(mesh, *s.solver, s.from, limits, threads, true);
   for (const SurfaceLocation& p : result.outcome.points) result.evened.push_back(p.at);
   return result;
 }
@@ -195,6 +198,31 @@ TEST(Evening, TheSameStartGivesTheSameBits) {
     EXPECT_EQ(first.evened[i].y, second.evened[i].y);
     EXPECT_EQ(first.evened[i].z, second.evened[i].z);
   }
+}
+
+// Where the evening ends on a pair it cannot widen (man at 256, a run's
+// default: 0.840 d_hex from its first sweep to its last, each end already
+// at its cavity's centre), a particle of the pair taken to the widest hole
+// and the evening run again widens the smallest spacing as `quality`
+// measures it (0.920), the cover held.
+TEST(Evening, ASwapWidensAPairNoMoveCan) {
+  const std::optional<SurfaceMesh> man = cgal_mesh("man.off");
+  ASSERT_TRUE(man);
+  RunRequest request;
+  request.mesh_label = "man";
+  request.particles = 256;
+  request.quiet = true;
+  const RunResult run = run_pipeline(*man, request);
+  ASSERT_TRUE(run.spread && run.spread->evening);
+  const EveningOutcome& evening = *run.spread->evening;
+  ASSERT_GT(evening.kept_sweep, 0u);
+  const double d_hex = run.quality.d_hex;
+  const double stuck = evening.sweeps[evening.kept_sweep - 1].smallest / d_hex;
+  std::cerr << "smallest spacing " << stuck << " -> rho " << *run.quality.rho << ", swaps tried "
+            << evening.swaps.size() << "\n";
+  ASSERT_TRUE(std::any_of(evening.swaps.begin(), evening.swaps.end(), [](const EveningSwap& w) { return w.kept; }));
+  EXPECT_GT(*run.quality.rho, stuck + 0.03);
+  EXPECT_LE(*run.quality.cover * d_hex, kSpreadCoverShare * run.spread->relaxation.start_cover * (1 + 1e-3));
 }
 
 // Each sweep's moves are judged in independent sets on several threads and

@@ -511,7 +511,8 @@ void hold_back_evening(std::vector<ShapeParticles>& shapes, const std::vector<st
         options.even_enough * spacings[k]) {
       SolverScratch scratch;
       const double widest = surface_voronoi(mesh, *surface.solver, shapes[k].at, scratch).cover();
-      const EveningLimits limits{kGapSweeps, spacings[k], kGapMinGain * spacings[k], kGapStallGain * spacings[k], widest};
+      const EveningLimits limits{kGapSweeps, spacings[k], kGapMinGain * spacings[k], kGapStallGain * spacings[k],
+                                 widest, 0, 0};  // no swaps: the shapes' sets stay in correspondence
       EveningOutcome gapped = even_out(mesh, *surface.solver, shapes[k].at, limits, 1, true);
       shapes[k].at = std::move(gapped.points);
       sweeps = gapped.sweeps.size();

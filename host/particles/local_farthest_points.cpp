@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "common/elapsed.hpp"
 #include "common/parallel_for.hpp"
@@ -220,12 +221,37 @@ class Evening {
     return record;
   }
 
+  // The smallest spacing of the points kept (mesh units).
+  double kept_smallest() const { return kept_.smallest; }
+  // The `count` particles whose gaps are smallest where the particles stand
+  // now (ties: the lower index): the ends of the closest pair first.
+  std::vector<std::uint32_t> closest_particles(std::size_t count) const {
+    std::vector<std::uint32_t> order(points_.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    count = std::min(count, order.size());
+    const auto narrower = [&](std::uint32_t a, std::uint32_t b) {
+      return gaps_[a] < gaps_[b] || (gaps_[a] == gaps_[b] && a < b);
+    };
+    std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(count), order.end(), narrower);
+    order.resize(count);
+    return order;
+  }
+  // The vertex farthest from every particle in the diagram of where they
+  // stand now (ties: the lower index), as a point of the surface.
+  SurfaceLocation widest_hole() const {
+    VertexId widest = 0;
+    for (VertexId v = 1; v < cells_.distance.size(); ++v) {
+      if (std::isfinite(cells_.distance[v]) && !(cells_.distance[v] <= cells_.distance[widest])) widest = v;
+    }
+    return walk_.at_vertex(widest);
+  }
+
   EveningOutcome outcome(std::vector<EveningSweep> sweeps) {
     if (device_) {
       diagrams_.device = device_->device_name();
       diagrams_.rounds = device_->statistics().rounds;
     }
-    return {std::move(kept_.points), std::move(sweeps), kept_.cover, diagrams_, kept_.sweep};
+    return {std::move(kept_.points), std::move(sweeps), kept_.cover, diagrams_, kept_.sweep, {}};
   }
 
  private:
@@ -485,6 +511,72 @@ class Evening {
   std::vector<float> lowered_was_;             // the distances before it
 };
 
+// Sweeps `evening` until one moves nothing, kStallSweeps in a row each
+// raise the mean spacing by under limits.stall_gain, or limits.max_sweeps
+// have run; reported on `progress` where given.
+std::vector<EveningSweep> sweep_until_still(Evening& evening, const EveningLimits& limits, ProgressLine* progress) {
+  std::vector<EveningSweep> sweeps;
+  for (std::size_t sweep = 1; sweep <= limits.max_sweeps; ++sweep) {
+    sweeps.push_back(evening.sweep());
+    const EveningSweep& record = sweeps.back();
+    if (progress) {
+      progress->update(sweep, "smallest spacing " + format_number("%.4f", record.smallest / limits.d_hex) +
+                                  " d_hex, " + std::to_string(record.moved) + " moved");
+    }
+    bool stalled = sweeps.size() > kStallSweeps;
+    for (std::size_t k = 1; stalled && k <= kStallSweeps; ++k) {
+      stalled = sweeps[sweeps.size() - k].mean - sweeps[sweeps.size() - k - 1].mean < limits.stall_gain;
+    }
+    if (record.moved == 0 || stalled) break;
+  }
+  return sweeps;
+}
+
+// The swaps after the sweeps (even_out): `outcome`, whose smallest spacing
+// is `smallest`, is replaced by each swap kept.
+void swap_closest_into_widest(const SurfaceMesh& mesh, const GeodesicSolver& solver, const EveningLimits& limits,
+                              unsigned threads, bool quiet, DeviceSurfaceVoronoi* device, EveningOutcome& outcome,
+                              double smallest) {
+  if (limits.swap_rounds == 0 || !(smallest < limits.swap_below)) return;
+  ProgressLine progress("swap", limits.swap_rounds, quiet);
+  for (std::size_t round = 1; round <= limits.swap_rounds && smallest < limits.swap_below; ++round) {
+    const Evening at(mesh, solver, outcome.points, limits, threads, device);
+    const SurfaceLocation hole = at.widest_hole();
+    std::optional<EveningOutcome> widest;
+    std::size_t widest_swap = 0;
+    for (const std::uint32_t particle : at.closest_particles(2)) {
+      const auto started = std::chrono::steady_clock::now();
+      std::vector<SurfaceLocation> swapped = outcome.points;
+      swapped[particle] = hole;
+      Evening again(mesh, solver, std::move(swapped), limits, threads, device);
+      std::vector<EveningSweep> sweeps = sweep_until_still(again, limits, nullptr);
+      EveningSwap swap{particle, again.kept_smallest(), 0, sweeps.size(), 0, false};
+      EveningOutcome tried = again.outcome(std::move(sweeps));
+      swap.cover = tried.cover;
+      swap.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+      outcome.diagrams.count += tried.diagrams.count;
+      outcome.diagrams.seconds += tried.diagrams.seconds;
+      outcome.diagrams.rounds = tried.diagrams.rounds;  // the device's count runs on
+      if (swap.smallest > smallest && tried.cover <= limits.cover &&
+          (!widest || swap.smallest > outcome.swaps[widest_swap].smallest)) {
+        widest = std::move(tried);
+        widest_swap = outcome.swaps.size();
+      }
+      outcome.swaps.push_back(swap);
+    }
+    const std::string result =
+        widest ? " -> " + format_number("%.4f", outcome.swaps[widest_swap].smallest / limits.d_hex)
+               : std::string(", no swap widens it");
+    progress.update(round, "smallest spacing " + format_number("%.4f", smallest / limits.d_hex) + " d_hex" + result);
+    if (!widest) break;
+    outcome.swaps[widest_swap].kept = true;
+    outcome.points = std::move(widest->points);
+    outcome.cover = widest->cover;
+    smallest = outcome.swaps[widest_swap].smallest;
+  }
+  progress.finish();
+}
+
 }  // namespace
 
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
@@ -496,23 +588,13 @@ EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, s
   const std::uint64_t scratch_bytes = kScratchBytesPerVertex * std::max<std::uint64_t>(mesh.vertex_count(), 1);
   threads = unsigned(std::clamp<std::uint64_t>(usable_host_memory_bytes() / 4 / scratch_bytes, 1, threads));
   Evening evening(mesh, solver, std::move(points), limits, threads, device);
-  std::vector<EveningSweep> sweeps;
   ProgressLine progress("even", limits.max_sweeps, quiet);
-  for (std::size_t sweep = 1; sweep <= limits.max_sweeps; ++sweep) {
-    sweeps.push_back(evening.sweep());
-    const EveningSweep& record = sweeps.back();
-    progress.update(sweep, "smallest spacing " + format_number("%.4f", record.smallest / limits.d_hex) + " d_hex, " +
-                               std::to_string(record.moved) + " moved");
-    // Stalled: kStallSweeps sweeps in a row each raised the mean spacing by
-    // under limits.stall_gain.
-    bool stalled = sweeps.size() > kStallSweeps;
-    for (std::size_t k = 1; stalled && k <= kStallSweeps; ++k) {
-      stalled = sweeps[sweeps.size() - k].mean - sweeps[sweeps.size() - k - 1].mean < limits.stall_gain;
-    }
-    if (record.moved == 0 || stalled) break;
-  }
+  std::vector<EveningSweep> sweeps = sweep_until_still(evening, limits, &progress);
   progress.finish();
-  return evening.outcome(std::move(sweeps));
+  const double smallest = evening.kept_smallest();
+  EveningOutcome outcome = evening.outcome(std::move(sweeps));
+  swap_closest_into_widest(mesh, solver, limits, threads, quiet, device, outcome, smallest);
+  return outcome;
 }
 
 }  // namespace meshparticles

@@ -12,6 +12,11 @@
 // smallest spacing: the particles kept are those of the sweep where it was
 // widest.
 //
+// Sweeps end where every particle stands at its cavity's centre, which can
+// hold a pair no move of either end widens (at a tip, across a thin part).
+// Then one of the pair is taken to the widest hole and the sweeps run
+// again from there: a swap, kept where it widens the smallest spacing.
+//
 // Vertices cap farthest-point optimization: a particle can only stand where
 // a vertex is, up to an edge from the true centre, which costs about a
 // tenth of a spacing at 24 vertices per particle. Off the vertices that
@@ -44,12 +49,24 @@ struct EveningDiagrams {
   double seconds = 0;      // all the diagrams, seeding to result
 };
 
+// One swap tried after the sweeps: a particle of the closest pair taken to
+// the widest hole, and the evening run again from there.
+struct EveningSwap {
+  std::uint32_t particle = 0;
+  double smallest = 0;      // the smallest spacing the evening from there kept (mesh units)
+  double cover = 0;         // and its cover (mesh units)
+  std::size_t sweeps = 0;
+  double ms = 0;
+  bool kept = false;        // wider than before, the cover within the limit
+};
+
 struct EveningOutcome {
   std::vector<SurfaceLocation> points;  // in the caller's order
-  std::vector<EveningSweep> sweeps;
+  std::vector<EveningSweep> sweeps;     // the first evening's
   double cover = 0;                     // the points' geodesic covering radius (mesh units)
   EveningDiagrams diagrams;
-  std::size_t kept_sweep = 0;           // the sweep whose points these are (0: the start)
+  std::size_t kept_sweep = 0;           // the first evening's sweep it kept (0: the start)
+  std::vector<EveningSwap> swaps;       // in the order tried
 };
 
 struct EveningLimits {
@@ -58,6 +75,8 @@ struct EveningLimits {
   double min_gain = 0;    // a move must widen its particle's gap by more (mesh units)
   double stall_gain = 0;  // sweeps stop when one raises the mean spacing by less (mesh units)
   double cover = 0;       // no move takes the covering radius over this (mesh units)
+  double swap_below = 0;  // swaps run while the smallest spacing is under this (mesh units)
+  std::size_t swap_rounds = 0;  // at most this many swaps kept
 };
 
 // From `start` (points of `mesh`'s triangles; `solver` is built for
@@ -68,7 +87,12 @@ struct EveningLimits {
 // Each sweep's particles go in independent sets, each set's moves judged
 // on `threads` threads (0: every core). Deterministic: the same inputs give
 // the same bits, for any number of threads. Returns the points of the sweep
-// (or the start) whose smallest spacing is widest. Each particle's geodesic
+// (or the start) whose smallest spacing is widest. Then, while that is
+// under `limits.swap_below` and for at most `limits.swap_rounds` rounds,
+// each of the two particles whose gaps are smallest is tried in the widest
+// hole, the evening run again from there; of those whose smallest spacing
+// is wider with the cover within `limits.cover`, the widest is kept (none:
+// the swaps stop). Each particle's geodesic
 // ball is kept for the evening (about 65 bytes a vertex of `mesh`). Unless
 // `quiet`, a progress line.
 // With `device` (built for `mesh`), each sweep's Voronoi diagram is the

@@ -186,7 +186,7 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::shared_ptr<Re
   }
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadEveningMinGain * d_hex, kSpreadStallGain * d_hex,
-                             cover_limit};
+                             cover_limit, kSpreadSwapBelow * d_hex, kSpreadSwapRounds};
   std::optional<EveningOutcome>& evening = result.spread->evening;
   const std::unique_ptr<DeviceSurfaceVoronoi> device = device_setup.valid() ? device_setup.get() : nullptr;
   if (device) result.device = device->device_name();

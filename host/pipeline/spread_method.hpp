@@ -51,6 +51,13 @@ inline constexpr std::size_t kSpreadRelaxRounds = 150;
 // it stops earlier when one moves nothing or stalls (measured on 8 CGAL
 // models at n = 1,024: 7 to 12 sweeps).
 inline constexpr std::size_t kSpreadEveningSweeps = 40;
+// spread's evening: where its smallest spacing ends under this many
+// hexagonal spacings, a particle of the closest pair is tried in the widest
+// hole and the evening run again, at most kSpreadSwapRounds times kept
+// (docs/ALGORITHM.md, "Evening": a pair at a tip or across a thin part that
+// neither end can widen; man at 256: 0.842 -> 0.920).
+inline constexpr double kSpreadSwapBelow = 0.87;
+inline constexpr std::size_t kSpreadSwapRounds = 4;
 // spread's relaxation keeps no state whose covering radius is over this
 // share of the farthest start's (farthest-point sampling is nearly optimal
 // for cover; issue 29 asks no more than 1.1 times it).

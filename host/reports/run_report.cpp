@@ -146,11 +146,21 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
     where["device"] = diagrams.device;
     where["rounds"] = diagrams.rounds;
   }
+  nlohmann::json swaps = nlohmann::json::array();
+  for (const EveningSwap& swap : evening.swaps) {
+    swaps.push_back({{"particle", swap.particle},
+                     {"smallest_spacing", swap.smallest / d_hex},
+                     {"cover", swap.cover / d_hex},
+                     {"sweeps", swap.sweeps},
+                     {"ms", swap.ms},
+                     {"kept", swap.kept}});
+  }
   return {{"moves", moved},
           {"cover", evening.cover / d_hex},
           {"kept_sweep", evening.kept_sweep},
           {"diagrams", where},
-          {"sweeps", sweeps}};
+          {"sweeps", sweeps},
+          {"swaps", swaps}};
 }
 
 // The figures both methods' reports share, from its iterations or sweeps.
