@@ -237,11 +237,16 @@ class Evening {
     return order;
   }
   // The vertex farthest from every particle in the diagram of where they
-  // stand now (ties: the lower index), as a point of the surface.
+  // stand now (ties: the lower index; a vertex of a component no particle
+  // reaches is none), as a point of the surface.
   SurfaceLocation widest_hole() const {
     VertexId widest = 0;
-    for (VertexId v = 1; v < cells_.distance.size(); ++v) {
-      if (std::isfinite(cells_.distance[v]) && !(cells_.distance[v] <= cells_.distance[widest])) widest = v;
+    float farthest = -1;
+    for (VertexId v = 0; v < cells_.distance.size(); ++v) {
+      if (std::isfinite(cells_.distance[v]) && cells_.distance[v] > farthest) {
+        widest = v;
+        farthest = cells_.distance[v];
+      }
     }
     return walk_.at_vertex(widest);
   }
