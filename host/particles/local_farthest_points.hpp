@@ -83,7 +83,8 @@ struct EveningLimits {
 // `mesh`), sweeps until one moves nothing, raises the mean spacing by less
 // than `limits.stall_gain`, or `limits.max_sweeps` have run. A move must
 // gain more than `limits.min_gain`, and must leave the region it came from
-// within `limits.cover` of it (a region already wider may not widen).
+// within `limits.cover` of it (a region already wider, as a swap leaves its
+// hole, may narrow but not widen).
 // Each sweep's particles go in independent sets, each set's moves judged
 // on `threads` threads (0: every core). Deterministic: the same inputs give
 // the same bits, for any number of threads. Returns the points of the sweep
@@ -93,7 +94,7 @@ struct EveningLimits {
 // hole, the evening run again from there; of those whose smallest spacing
 // is wider with the cover within `limits.cover`, the widest is kept (none:
 // the swaps stop). Each particle's geodesic
-// ball is kept for the evening (about 65 bytes a vertex of `mesh`). Unless
+// ball is kept for the evening (about 45 bytes a vertex of `mesh`). Unless
 // `quiet`, a progress line.
 // With `device` (built for `mesh`), each sweep's Voronoi diagram is the
 // device's (device_surface_voronoi), not the host's surface_voronoi.
