@@ -37,14 +37,15 @@ constexpr double kMoveSlack = 1.1;
 // heap_slot, origin, distances; CavityScratch's rows).
 constexpr std::uint64_t kScratchBytesPerVertex = 1 + 4 + 4 + 8 + 4;
 // Each particle's ball reaches this many spacings: past the widest gap of
-// any cavity (about one spacing) and a working-mesh edge (at most
-// kSpreadLongestEdge, 0.3), so that a triangle where a ball stops has some
-// nearer particle's ball at all three corners. The marches are a third of
-// the evening; at 1.25 against 1.5 the 46 corpus runs give the same medians
-// (rho 0.899, nn_cv 0.018), the sweeps a fifth faster. On a coarser mesh
-// the ball reaches as much further as its longest edge is longer (the
-// torus at 256, edges to 0.78 d_hex: at 1.25 the evening ends at nn_min
-// 0.77 against 0.91).
+// any cavity (about one spacing) to the far corners of the triangles there,
+// so that a triangle where a ball stops has some nearer particle's ball at
+// all three corners. The marches are a third of the evening; at 1.25
+// against 1.5 the 46 corpus runs, on working meshes whose edges are at
+// most kSpreadLongestEdge (0.3 spacings), give the same medians (rho 0.899,
+// nn_cv 0.018), the sweeps a fifth faster. On a coarser mesh the ball
+// reaches as much further as its longest edge is longer than that (the
+// torus at 256, edges to 0.78 d_hex: at 1.25 alone the evening ends at
+// nn_min 0.77 against 0.91).
 constexpr double kBallReach = 1.25;
 
 // Per particle, the particles within kReachSteps steps of the diagram's
@@ -178,6 +179,7 @@ class Evening {
     measure_spacings(mean, kept_.smallest);
     kept_.points = points_;
     kept_.cover = cells_.cover();
+    start_cover_ = kept_.cover;
   }
 
   // One sweep over the particles to visit; its record. The particles go in
@@ -352,13 +354,14 @@ class Evening {
   }
 
   // Whether moving i to `there` leaves every vertex of i's region within
-  // limits_.cover of a particle (or no farther than its farthest was), on
-  // the diagram as the sweep's moves have left it (nearest_, owner_): the
-  // region i holds is refilled from its rim by the particles around it (one
-  // march from the rim, each rim vertex from its own particle, as
-  // particle_voronoi refills a region), and a march from `there` takes what
-  // is nearer to it. Where the move holds the cover the
-  // diagram is left updated for it, else as it was.
+  // limits_.cover of a particle (where the evening started over it, no
+  // farther than the region's farthest was), on the diagram as the sweep's
+  // moves have left it (nearest_, owner_): the region i holds is refilled
+  // from its rim by the particles around it (one march from the rim, each
+  // rim vertex from its own particle, as particle_voronoi refills a
+  // region), and a march from `there` takes what is nearer to it. Where the
+  // move holds the cover the diagram is left updated for it, else as it
+  // was.
   bool covered_after_move(std::uint32_t i, const SurfaceLocation& there) {
     std::vector<VertexId>& mine = region_[i];
     std::erase_if(mine, [&](VertexId v) { return owner_[v] != i; });
@@ -413,10 +416,14 @@ class Evening {
       lowered_owners_.push_back(owner_[lowered_[k]]);
       owner_[lowered_[k]] = lowered_sources_[k];
     }
-    // A region already over the limit (a swap's hole) may narrow but not
-    // widen: else no particle around the hole could move toward it
-    // without covering all of it at once.
-    const double limit = std::max(limits_.cover, double(reach));
+    // Where the evening started over the limit (a swap's hole), a region
+    // over it may narrow but not widen: else no particle around the hole
+    // could move toward it without covering all of it at once. Never past
+    // the start's cover: the diagram's update can read a region a little
+    // wider than this check did, and a region over the limit that way is
+    // held, not let grow (lion at 1,024: 0.821 d_hex, 0.844 with any
+    // region free to stay as wide as it was).
+    const double limit = std::max(limits_.cover, std::min(double(reach), start_cover_));
     bool covered = true;
     for (const VertexId v : mine) covered = covered && nearest_[v] <= limit;
     if (!covered) {
@@ -505,6 +512,7 @@ class Evening {
     std::size_t sweep = 0;
   } kept_;
   std::size_t sweeps_done_ = 0;
+  double start_cover_ = 0;  // the diagram's cover where the evening started
   std::vector<double> gaps_;  // per particle, measure_spacings's
   // The sets' stamps: per particle, the set it moved in; per vertex, the
   // set in which a commit gave it another owner.

@@ -83,8 +83,8 @@ struct EveningLimits {
 // `mesh`), sweeps until one moves nothing, raises the mean spacing by less
 // than `limits.stall_gain`, or `limits.max_sweeps` have run. A move must
 // gain more than `limits.min_gain`, and must leave the region it came from
-// within `limits.cover` of it (a region already wider, as a swap leaves its
-// hole, may narrow but not widen).
+// within `limits.cover` of it (where the start is wider, as a swap leaves
+// its hole, a region over it may narrow but not widen).
 // Each sweep's particles go in independent sets, each set's moves judged
 // on `threads` threads (0: every core). Deterministic: the same inputs give
 // the same bits, for any number of threads. Returns the points of the sweep
