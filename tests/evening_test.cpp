@@ -246,7 +246,8 @@ Swapped run_keeping_a_swap(const std::string& name) {
             << evening.swaps.size() << "\n";
   EXPECT_TRUE(std::any_of(evening.swaps.begin(), evening.swaps.end(), [](const EveningSwap& w) { return w.kept; }))
       << name;
-  EXPECT_LE(*run.quality.cover * d_hex, kSpreadCoverShare * run.spread->relaxation.start_cover * (1 + 1e-3)) << name;
+  EXPECT_GT(run.spread->cover_limit, 0) << name;
+  EXPECT_LE(*run.quality.cover * d_hex, run.spread->cover_limit * (1 + 1e-3)) << name;
   return swapped;
 }
 

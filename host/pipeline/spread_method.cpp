@@ -265,6 +265,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   // each inserted into the working mesh and its cover measured, the first
   // that passes kept (else the sweeps' vertices).
   const double cover_limit = relax_rounds == 0 ? 0.0 : kSpreadCoverShare * start_cover.get();
+  details.cover_limit = cover_limit;
   const std::vector<VertexId> swept_positions = result.outcome.positions;
   details.relaxation = naming_memory_failures(label, "relaxing the spacing", [&] {
     // Where the straight lines it pushes by already misjudge the sweeps'

@@ -103,6 +103,9 @@ struct SpreadDetails {
   std::vector<SweepRecord> sweeps;
   RelaxationOutcome relaxation;           // the kept candidate's points are inserted into `working`
   std::optional<EveningOutcome> evening;  // unless --relax-rounds 0 (its points are inserted into `working`)
+  // The geodesic cover the relaxation's kept state and the evening hold:
+  // kSpreadCoverShare of the farthest start's (0 under --relax-rounds 0).
+  double cover_limit = 0;
   std::string stopped;                    // converged, cycle, stalled or max_iterations (SpreadOutcome)
 };
 

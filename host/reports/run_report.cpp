@@ -215,6 +215,7 @@ nlohmann::json spread_report(const SurfaceMesh& mesh, const RunResult& result, c
                           {"skipped_for_straight", relaxation.skipped_for_straight},
                           {"stopped", relaxation_stop_name(relaxation.stopped)},
                           {"spacing_per_round", round_spacings}};
+  report["cover_limit"] = spread.cover_limit / d_hex;
   if (spread.evening) report["evening"] = evening_json(*spread.evening, d_hex);
   report["quality"] = quality_json(result.quality);
   report["seconds"] = seconds_json(result.seconds);
