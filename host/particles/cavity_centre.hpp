@@ -41,7 +41,8 @@ struct CavityScratch {
   std::vector<std::int32_t> row;  // per vertex of the mesh: its row of `table`, or -1
   std::vector<VertexId> vertices;  // by row
   std::vector<std::uint32_t> triangles, sources;
-  std::vector<float> table;  // row x source: the source's distance (+inf: beyond its ball)
+  std::vector<float> table;    // a column a source, a row a vertex: its distance (+inf: beyond its ball)
+  std::vector<float> nearest;  // by row: the least of the sources' distances
   std::vector<PlanarSource> planar, near;
   std::vector<std::pair<double, std::uint32_t>> order;  // (bound, triangle)
 };
