@@ -107,8 +107,11 @@ struct SpreadDetails {
   // vertices than asked: its cap cut it short (WorkingMeshPlan says what set it).
   bool working_mesh_cut_short = false;
   std::vector<SweepRecord> sweeps;
-  RelaxationOutcome relaxation;           // the kept candidate's points are inserted into `working`
-  std::optional<EveningOutcome> evening;  // unless --relax-rounds 0 (its points are inserted into `working`)
+  RelaxationOutcome relaxation;  // the kept candidate's points are inserted into `working`, unless evened
+  // Where no relaxed set is kept, or the kept one measured a rho under
+  // kSpreadEveningAfterRelaxationBelow (none under --relax-rounds 0): its
+  // points are inserted into `working`.
+  std::optional<EveningOutcome> evening;
   // The geodesic cover the relaxation's kept state and the evening hold:
   // kSpreadCoverShare of the farthest start's (0 under --relax-rounds 0).
   double cover_limit = 0;
