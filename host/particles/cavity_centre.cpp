@@ -44,7 +44,8 @@ void planar_sources(const TriangleFrame& frame, const Triangle& corners, CavityS
   }
 }
 
-// The triangles of the cavity and their corners, each corner given its row.
+// The triangles of the cavity and their corners, each corner given its row
+// and its way to the farther other corner of its triangle.
 void gather(const SurfaceMesh& mesh, const VertexTriangles& rings, const Cavity& cavity, CavityScratch& s) {
   s.triangles.clear();
   for (const VertexId v : cavity.region) {
@@ -55,11 +56,16 @@ void gather(const SurfaceMesh& mesh, const VertexTriangles& rings, const Cavity&
   s.triangles.erase(std::unique(s.triangles.begin(), s.triangles.end()), s.triangles.end());
   if (s.row.empty()) s.row.assign(mesh.vertex_count(), -1);
   s.vertices.clear();
+  s.ways.clear();
+  const auto& positions = mesh.positions();
   for (const std::uint32_t t : s.triangles) {
-    for (const VertexId c : mesh.triangles()[t]) {
-      if (s.row[c] >= 0) continue;
-      s.row[c] = std::int32_t(s.vertices.size());
-      s.vertices.push_back(c);
+    const Triangle& c = mesh.triangles()[t];
+    for (int k = 0; k < 3; ++k) {
+      s.ways.push_back(std::max(distance(positions[c[k]], positions[c[(k + 1) % 3]]),
+                                distance(positions[c[k]], positions[c[(k + 2) % 3]])));
+      if (s.row[c[k]] >= 0) continue;
+      s.row[c[k]] = std::int32_t(s.vertices.size());
+      s.vertices.push_back(c[k]);
     }
   }
   s.sources.clear();
@@ -84,25 +90,19 @@ void add_source(std::uint32_t particle, const std::vector<ParticleBall>& balls, 
 // sources: no point of a triangle is farther than a corner's nearest source
 // plus the way to the farthest other corner. In s.order, in s.triangles' order.
 void bound_triangles(const SurfaceMesh& mesh, CavityScratch& s) {
-  const auto& positions = mesh.positions();
   s.order.clear();
-  for (const std::uint32_t t : s.triangles) {
-    const Triangle& c = mesh.triangles()[t];
+  for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+    const Triangle& c = mesh.triangles()[s.triangles[i]];
     double bound = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 3; ++k) {
-      const double way = std::max(distance(positions[c[k]], positions[c[(k + 1) % 3]]),
-                                  distance(positions[c[k]], positions[c[(k + 2) % 3]]));
-      bound = std::min(bound, s.nearest[s.row[c[k]]] + way);
-    }
-    s.order.emplace_back(bound, t);
+    for (int k = 0; k < 3; ++k) bound = std::min(bound, s.nearest[s.row[c[k]]] + s.ways[3 * i + std::size_t(k)]);
+    s.order.emplace_back(bound, s.triangles[i]);
   }
 }
 
 // The farthest point of the gathered triangles from `s.sources`: the
-// triangles searched in the order of bound_triangles's bound, until none
-// left can hold a farther point.
+// triangles searched in the order of their bounds (bound_triangles, for
+// these sources), until none left can hold a farther point.
 CavityCentre widest_from_sources(const SurfaceMesh& mesh, const SurfaceLocation& at, CavityScratch& s) {
-  bound_triangles(mesh, s);
   std::sort(s.order.begin(), s.order.end(),
             [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
   CavityCentre widest;
@@ -186,9 +186,11 @@ CavityCentre cavity_centre(const SurfaceMesh& mesh, const VertexTriangles& rings
   }
   double reach = 0;
   for (const VertexId v : s.vertices) reach = std::max(reach, distance(cavity.at.at, mesh.positions()[v]));
+  const std::size_t near_count = s.sources.size();
   for (const std::uint32_t k : cavity.further) {
     if (distance(cavity.at.at, points[k].at) - reach <= widest_bound) add_source(k, balls, s);
   }
+  if (s.sources.size() > near_count) bound_triangles(mesh, s);
   const CavityCentre widest = widest_from_sources(mesh, cavity.at, s);
   for (const VertexId v : s.vertices) s.row[v] = -1;
   return widest;

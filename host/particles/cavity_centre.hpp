@@ -43,6 +43,7 @@ struct CavityScratch {
   std::vector<std::uint32_t> triangles, sources;
   std::vector<float> table;    // a column a source, a row a vertex: its distance (+inf: beyond its ball)
   std::vector<float> nearest;  // by row: the least of the sources' distances
+  std::vector<double> ways;    // 3 a triangle: each corner's way to the farther other corner
   std::vector<PlanarSource> planar, near;
   std::vector<std::pair<double, std::uint32_t>> order;  // (bound, triangle)
 };
