@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# spread with the evening's Voronoi diagrams and the measurement's balls on
-# the host and on a device: `--device` (the diagrams, and on a GPU the
-# balls) and `--device --geodesic fim` (the balls there on any device),
-# case by case: the whole run's wall
-# time, the diagrams' own seconds (report.json evening.diagrams) and the
-# measurement's (seconds.geodesics + seconds.quality, its balls included),
+# spread with the evening's Voronoi diagrams, its moves' cavity centres and
+# the measurement's balls on the host and on a device: `--device` (the
+# diagrams, the centres where the device has double precision, and on a
+# GPU the balls) and `--device --geodesic fim` (the balls there on any
+# device), case by case: the whole run's wall time, the diagrams' and the
+# centres' own seconds (report.json evening.diagrams, evening.centres: all
+# the proposals, wherever found) and the measurement's
+# (seconds.geodesics + seconds.quality, its balls included),
 # docs/PERFORMANCE.md ("spread's diagrams and measurement on the device").
 #
 #   scripts/bench_device_voronoi.sh [--device NAME] [--repeat K] [--models "M ..."]
@@ -48,7 +50,7 @@ for model in $models; do
     meshes+=("$CGAL/$model.off")
   fi
 done
-printf '| mesh | n | path | wall s (best of %s) | diagrams | diagram s | evening moves | geodesics + quality s | balls on device | rho |\n|---|---|---|---|---|---|---|---|---|---|\n' "$repeat"
+printf '| mesh | n | path | wall s (best of %s) | diagrams | diagram s | centres on | centres s | evening moves | geodesics + quality s | balls on device | rho |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n' "$repeat"
 for mesh in "${meshes[@]}"; do
   for n in $sizes; do
     declare -A best=()
@@ -76,8 +78,8 @@ r = json.load(open(sys.argv[1]))
 e = r.get("evening")
 d = e["diagrams"] if e else None
 print(f"| {sys.argv[2]} | {sys.argv[3]} | {sys.argv[4]} | {float(sys.argv[5]):.2f} | "
-      f"{d['count'] if d else 'no evening'} | {d['seconds']:.2f} | {e['moves']} | " if d else
-      f"| {sys.argv[2]} | {sys.argv[3]} | {sys.argv[4]} | {float(sys.argv[5]):.2f} | no evening | - | - | ", end="")
+      f"{d['count']} | {d['seconds']:.2f} | {e['centres']['on']} | {e['centres']['seconds']:.2f} | {e['moves']} | " if d else
+      f"| {sys.argv[2]} | {sys.argv[3]} | {sys.argv[4]} | {float(sys.argv[5]):.2f} | no evening | - | - | - | - | ", end="")
 s = r["seconds"]
 print(f"{s['geodesics']:.2f} + {s['quality']:.2f} | {r['distances'].get('balls_on_device', 0)} | "
       f"{r['quality'].get('rho', float('nan')):.3f} |")

@@ -54,7 +54,7 @@ COMPILE=(
 # without unsafe math, division and square root correctly rounded. Compiled
 # so here (without the precompiled header, whose options differ), and their
 # PTX may hold no fused multiply-add and no approximate operation.
-EXACT_FILES="surface_voronoi.cl"
+EXACT_FILES="surface_voronoi.cl cavity_centres.cl"
 EXACT_LANGUAGE=(-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt -target nvptx64-nvidia-nvcl)
 
 # Two modes. core: every size class, with no optional extension (libclc's
@@ -111,6 +111,10 @@ plan() {
   compiles tiled_update.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES CANDIDATE_SLOTS=$CANDIDATE_SLOTS POTENTIAL_GAUSS=$BOTH
   compiles fim_balls.cl WORK_GROUP_SIZE=$WORK_GROUP_SIZES SLOT_BITS=$SLOT_BITS
   compiles surface_voronoi.cl
+  compiles cavity_centres.cl
+  # core takes every extension away, and this file holds no kernel without
+  # cl_khr_fp64: compiled once more with it, optimized, as a GPU builds it.
+  echo "cavity_centres.cl -Xclang -cl-ext=+cl_khr_fp64"
 }
 
 WORK="$(mktemp -d)"

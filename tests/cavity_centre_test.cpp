@@ -5,6 +5,7 @@
 // comes near the cavity and changes nothing where it does not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -23,21 +24,27 @@ namespace {
 struct Scene {
   SurfaceMesh patch = committed("patch.off");
   SurfaceWalk walk{patch};
+  CavitySurface surface{patch, walk.triangles_around()};
   std::vector<SurfaceLocation> points;
-  std::vector<ParticleBall> balls;
+  std::vector<vec3d> positions;
+  ParticleBalls balls{0};
 
   // Particle 0 at `at`, then the others; each one's ball marched.
   explicit Scene(const std::vector<Vec3>& at) {
     const NearestSurfacePoint nearest(patch);
     const auto solver = make_geodesic_solver(patch, GeodesicMethod::fast_marching);
     SolverScratch scratch;
+    balls = ParticleBalls(at.size());
+    ParticleBall ball;
     for (const Vec3& p : at) {
       points.push_back(*nearest.find(p));
       const Triangle& t = patch.triangles()[points.back().triangle];
       const auto& x = patch.positions();
       const double starts[3] = {distance(p, x[t[0]]), distance(p, x[t[1]]), distance(p, x[t[2]])};
-      balls.emplace_back();
-      solver->solve_ball_from(t, starts, INFINITY, scratch, balls.back());
+      solver->solve_ball_from(t, starts, INFINITY, scratch, ball);
+      std::sort(ball.begin(), ball.end());
+      balls.set(std::uint32_t(positions.size()), ball);
+      positions.push_back(to_vec3d(points.back().at));
     }
   }
 
@@ -57,7 +64,7 @@ struct Scene {
   CavityCentre centre(const std::vector<std::uint32_t>& near, const std::vector<std::uint32_t>& further) const {
     const std::vector<VertexId> mine = region();
     CavityScratch scratch;
-    return cavity_centre(patch, walk.triangles_around(), {points[0], mine, near, further}, points, balls, scratch);
+    return cavity_centre(surface, {points[0], mine, near, further}, positions, balls, scratch);
   }
 };
 

@@ -316,7 +316,7 @@ EveningOutcome evening_from_sweeps(const SurfaceMesh& mesh, std::size_t particle
   const EveningStart s = evening_start(mesh, particles);
   const double d_hex = s.d_hex;
   return even_out(mesh, *s.solver, s.from, {sweeps, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, 1.1 * s.start_cover}, 2, true,
-                  device);
+                  {device, nullptr});
 }
 
 DistributionQuality evened_quality(const SurfaceMesh& mesh, const EveningOutcome& outcome) {

@@ -340,9 +340,10 @@ TEST(GeodesicSolver, APointInsideATriangleIsReadFromASourceInItsPlane) {
       const double exact = distance(q, at);
       if (exact < 3 * patch.mean_edge_length()) continue;
       const std::array<double, 3> corner_distance{marched[to[0]], marched[to[1]], marched[to[2]]};
-      const TriangleFrame frame = triangle_frame(patch, to_index);
-      const auto [x, y] = frame.plane(at);
-      in_plane += std::abs(planar_source(frame, corner_distance).distance_to(x, y) - exact);
+      const plane_frame frame = triangle_frame(patch, to_index);
+      const planar_source laid = planar_source_of(frame, corner_distance[0], corner_distance[1], corner_distance[2]);
+      const double x = frame_x(frame, to_vec3d(at)), y = frame_y(frame, to_vec3d(at));
+      in_plane += std::abs(planar_source_distance(frame, laid, x, y) - exact);
       double corner = INFINITY;
       for (int c = 0; c < 3; ++c) corner = std::min(corner, corner_distance[c] + distance(p[to[c]], at));
       through_corners += corner - exact;
@@ -369,19 +370,19 @@ TEST(GeodesicSolver, ATriangleWhoseDistancesFitNoSourceReadsItsCornersAtTheirOwn
   const double base = 0.2881, to_third = 0.1317, from_second = 0.1574;
   const double x = (base * base + to_third * to_third - from_second * from_second) / (2 * base);
   const SurfaceMesh sliver({{0, 0, 0}, {base, 0, 0}, {x, std::sqrt(to_third * to_third - x * x), 0}}, {{0, 1, 2}});
-  const TriangleFrame frame = triangle_frame(sliver, 0);
+  const plane_frame frame = triangle_frame(sliver, 0);
   const std::array<double, 3> corner_distance{0.7338, 0.5298, 0.6852};
-  const PlanarSource source = planar_source(frame, corner_distance);
+  const planar_source source = planar_source_of(frame, corner_distance[0], corner_distance[1], corner_distance[2]);
   const auto& p = sliver.positions();
   for (int c = 0; c < 3; ++c) {
-    const auto [cx, cy] = frame.plane(p[c]);
-    EXPECT_NEAR(source.distance_to(cx, cy), corner_distance[c], 1e-12) << "corner " << c;
+    const double cx = frame_x(frame, to_vec3d(p[c])), cy = frame_y(frame, to_vec3d(p[c]));
+    EXPECT_NEAR(planar_source_distance(frame, source, cx, cy), corner_distance[c], 1e-12) << "corner " << c;
   }
   const Vec3 middle = (1.0 / 3) * (p[0] + p[1] + p[2]);
-  const auto [mx, my] = frame.plane(middle);
+  const double mx = frame_x(frame, to_vec3d(middle)), my = frame_y(frame, to_vec3d(middle));
   for (int c = 0; c < 3; ++c) {
-    EXPECT_GE(source.distance_to(mx, my), corner_distance[c] - distance(middle, p[c]) - 1e-12);
-    EXPECT_LE(source.distance_to(mx, my), corner_distance[c] + distance(middle, p[c]) + 1e-12);
+    EXPECT_GE(planar_source_distance(frame, source, mx, my), corner_distance[c] - distance(middle, p[c]) - 1e-12);
+    EXPECT_LE(planar_source_distance(frame, source, mx, my), corner_distance[c] + distance(middle, p[c]) + 1e-12);
   }
 }
 

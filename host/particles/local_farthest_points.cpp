@@ -98,12 +98,12 @@ NeighbourLists neighbour_lists(const SurfaceMesh& mesh, const SurfaceVoronoi& ce
 // What a particle's move is judged against, read only while proposals are
 // computed: the state as the moves before them left it.
 struct EveningView {
-  const SurfaceMesh& mesh;
-  const SurfaceWalk& walk;
+  const CavitySurface& surface;
   const EveningLimits& limits;
   const NeighbourLists& lists;
   const std::vector<SurfaceLocation>& points;
-  const std::vector<ParticleBall>& balls;      // per particle, where it stands
+  const std::vector<vec3d>& positions;  // the points', as the cavity centre reads them
+  const ParticleBalls& balls;           // per particle, where it stands
   const std::vector<std::uint32_t>& owner;     // per vertex: the diagram's nearest particle
   const std::vector<std::vector<VertexId>>& region;  // per particle: its vertices (and some it no longer owns)
 };
@@ -122,19 +122,28 @@ struct Proposal {
 // along the surface from the particles listed for it), where that is
 // farther from them than where i stands by more than the minimum gain.
 // The cover is judged at the commit (Evening::covered_after_move). One
-// work-item per particle, as an OpenCL kernel would have it.
-void propose_move(std::uint32_t i, const EveningView& view, CavityScratch& scratch, Proposal& proposal) {
-  proposal.move = false;
+// work-item per particle on a device (DeviceCavityCentres), the same
+// steps: the region read (read_region), the centre, the decision (decide_move).
+void read_region(std::uint32_t i, const EveningView& view, Proposal& proposal) {
   proposal.read.clear();
   for (const VertexId v : view.region[i]) {
     if (view.owner[v] == i) proposal.read.push_back(v);
   }
-  const Cavity cavity{view.points[i], proposal.read, view.lists.near[i], view.lists.around[i]};
-  const CavityCentre centre =
-      cavity_centre(view.mesh, view.walk.triangles_around(), cavity, view.points, view.balls, scratch);
-  if (!std::isfinite(centre.here) || !(centre.away > centre.here + view.limits.min_gain)) return;
-  proposal.move = true;
-  proposal.there = centre.at;
+}
+
+Cavity cavity_in(std::uint32_t i, const EveningView& view, const Proposal& proposal) {
+  return {view.points[i], proposal.read, view.lists.near[i], view.lists.around[i]};
+}
+
+void decide_move(const CavityCentre& centre, const EveningLimits& limits, Proposal& proposal) {
+  proposal.move = std::isfinite(centre.here) && centre.away > centre.here + limits.min_gain;
+  if (proposal.move) proposal.there = centre.at;
+}
+
+void propose_move(std::uint32_t i, const EveningView& view, CavityScratch& scratch, Proposal& proposal) {
+  read_region(i, view, proposal);
+  decide_move(cavity_centre(view.surface, cavity_in(i, view, proposal), view.positions, view.balls, scratch),
+              view.limits, proposal);
 }
 
 // The particles to visit in sets whose moves cannot meet: a greedy
@@ -165,16 +174,20 @@ std::vector<std::vector<std::uint32_t>> independent_sets(const NeighbourLists& l
 class Evening {
  public:
   Evening(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
-          const EveningLimits& limits, unsigned threads, DeviceSurfaceVoronoi* device)
-      : mesh_(mesh), solver_(solver), device_(device), walk_(mesh), limits_(limits), threads_(std::max(1u, threads)),
-        points_(std::move(points)), visit_(points_.size(), 1), scratches_(threads_), ball_scratches_(threads_),
-        seeds_(threads_), balls_(points_.size()),
+          const EveningLimits& limits, unsigned threads, EveningDevice device)
+      : mesh_(mesh), solver_(solver), device_(device), walk_(mesh), surface_(mesh, walk_.triangles_around()),
+        limits_(limits), threads_(std::max(1u, threads)), points_(std::move(points)), visit_(points_.size(), 1),
+        scratches_(threads_), ball_scratches_(threads_), seeds_(threads_), balls_(points_.size()),
         ball_reach_(kBallReach * limits.d_hex + std::max(0.0, longest_edge(mesh) - kSpreadLongestEdge * limits.d_hex)),
         moved_in_set_(points_.size(), 0), stamp_(mesh.vertex_count(), 0) {
     find_neighbours();
-    for_each_with_slot(points_.size(), threads_, [&](std::size_t k, unsigned slot) {
-      march_ball(std::uint32_t(k), ball_scratches_[slot], seeds_[slot]);
-    });
+    for (const SurfaceLocation& p : points_) {
+      positions_.push_back(to_vec3d(p.at));
+      triangles_.push_back(p.triangle);
+    }
+    movers_.resize(points_.size());
+    for (std::uint32_t k = 0; k < points_.size(); ++k) movers_[k] = k;
+    march_balls();
     double mean = 0;
     measure_spacings(mean, kept_.smallest);
     kept_.points = points_;
@@ -201,10 +214,14 @@ class Evening {
     for (const std::vector<std::uint32_t>& set : independent_sets(lists_, visit_)) {
       ++set_stamp_;
       if (proposals_.size() < set.size()) proposals_.resize(set.size());
-      const EveningView view{mesh_, walk_, limits_, lists_, points_, balls_, owner_, region_};
-      for_each_with_slot(set.size(), threads_, [&](std::size_t k, unsigned slot) {
-        propose_move(set[k], view, scratches_[slot], proposals_[k]);
-      });
+      const EveningView view{surface_, limits_, lists_, points_, positions_, balls_, owner_, region_};
+      const auto proposing = std::chrono::steady_clock::now();
+      if (!device_.moves || !propose_on_device(set, view)) {
+        for_each_with_slot(set.size(), threads_, [&](std::size_t k, unsigned slot) {
+          propose_move(set[k], view, scratches_[slot], proposals_[k]);
+        });
+      }
+      proposing_seconds_ += seconds_since(proposing);
       for (std::size_t k = 0; k < set.size(); ++k) {
         const std::uint32_t i = set[k];
         Proposal& proposal = proposals_[k];
@@ -221,9 +238,7 @@ class Evening {
       for (const std::uint32_t i : set) {
         if (moved_in_set_[i] == set_stamp_) movers_.push_back(i);
       }
-      for_each_with_slot(movers_.size(), threads_, [&](std::size_t k, unsigned slot) {
-        march_ball(movers_[k], ball_scratches_[slot], seeds_[slot]);
-      });
+      march_balls();
     }
     record.moved = std::size_t(std::count(moved.begin(), moved.end(), 1));
     find_neighbours(&moved);
@@ -263,20 +278,50 @@ class Evening {
   }
 
   EveningOutcome outcome(std::vector<EveningSweep> sweeps) {
-    if (device_) {
-      diagrams_.device = device_->device_name();
-      diagrams_.rounds = device_->statistics().rounds;
+    if (device_.diagrams) {
+      diagrams_.device = device_.diagrams->device_name();
+      diagrams_.rounds = device_.diagrams->statistics().rounds;
     }
-    return {std::move(kept_.points), std::move(sweeps), kept_.cover, diagrams_, kept_.sweep, {}};
+    EveningMoves moves;
+    moves.seconds = proposing_seconds_;
+    if (device_.moves) {
+      const DeviceCavityCentres::Statistics& on = device_.moves->statistics();
+      moves.device = device_.moves->device_name();
+      moves.launches = on.launches;
+      moves.sets_on_host = on.sets_on_host;
+      moves.device_seconds = on.seconds;
+    }
+    return {std::move(kept_.points), std::move(sweeps), kept_.cover, diagrams_, moves, kept_.sweep, {}};
   }
 
  private:
-  // Particle k's ball: the vertices within kBallReach spacings of where it
-  // stands, marched from its corners' fans (geodesics/point_seeds).
-  void march_ball(std::uint32_t k, SolverScratch& scratch, PointSeeds& seeds) {
-    point_seeds(mesh_, walk_.triangles_around(), points_[k], seeds);
-    solver_.solve_ball_from(seeds.vertices, seeds.distances, ball_reach_, scratch, balls_[k]);
-    std::sort(balls_[k].begin(), balls_[k].end());  // by vertex: gap_from_balls looks corners up
+  // The proposals of `set` with their cavities' centres on the device
+  // (the regions read on threads_ threads, the decisions on the host);
+  // false where the device left them to the host.
+  bool propose_on_device(const std::vector<std::uint32_t>& set, const EveningView& view) {
+    for_each_with_slot(set.size(), threads_, [&](std::size_t k, unsigned) { read_region(set[k], view, proposals_[k]); });
+    std::vector<Cavity> cavities;
+    cavities.reserve(set.size());
+    for (std::size_t k = 0; k < set.size(); ++k) cavities.push_back(cavity_in(set[k], view, proposals_[k]));
+    const std::optional<std::vector<CavityCentre>> centres =
+        device_.moves->centres(set, cavities, positions_, triangles_, balls_);
+    if (!centres) return false;
+    for (std::size_t k = 0; k < set.size(); ++k) decide_move((*centres)[k], limits_, proposals_[k]);
+    return true;
+  }
+
+  // The balls of movers_: the vertices within kBallReach spacings of where
+  // each stands, marched from its corners' fans (geodesics/point_seeds), on
+  // threads_ threads, then put in balls_ in movers_' order.
+  void march_balls() {
+    if (marched_.size() < movers_.size()) marched_.resize(movers_.size());
+    for_each_with_slot(movers_.size(), threads_, [&](std::size_t m, unsigned slot) {
+      point_seeds(mesh_, walk_.triangles_around(), points_[movers_[m]], seeds_[slot]);
+      solver_.solve_ball_from(seeds_[slot].vertices, seeds_[slot].distances, ball_reach_, ball_scratches_[slot],
+                              marched_[m]);
+      std::sort(marched_[m].begin(), marched_[m].end());  // by vertex, as balls_ keeps them
+    });
+    for (std::size_t m = 0; m < movers_.size(); ++m) balls_.set(movers_[m], marched_[m]);
   }
 
   // Particle i's distance from the nearest particle listed for it, each
@@ -284,23 +329,25 @@ class Evening {
   // triangle's plane, as cavity_centre reads them).
   double gap_from_balls(std::uint32_t i) const {
     const SurfaceLocation& p = points_[i];
-    const TriangleFrame frame = triangle_frame(mesh_, p.triangle);
-    if (frame.degenerate()) return std::numeric_limits<double>::infinity();
+    const plane_frame frame = triangle_frame(mesh_, p.triangle);
+    if (frame_degenerate(frame)) return std::numeric_limits<double>::infinity();
     const Triangle& t = mesh_.triangles()[p.triangle];
-    const auto [x, y] = frame.plane(p.at);
+    const double x = frame_x(frame, positions_[i]), y = frame_y(frame, positions_[i]);
     double nearest = std::numeric_limits<double>::infinity();
     for (const auto* list : {&lists_.near[i], &lists_.around[i]}) {
       for (const std::uint32_t k : *list) {
-        const ParticleBall& ball = balls_[k];
+        const std::span<const ball_entry> ball = balls_[k];
         std::array<double, 3> d{};
         bool reached = true;
         for (int c = 0; c < 3 && reached; ++c) {
           const auto found = std::lower_bound(ball.begin(), ball.end(), t[c],
-                                              [](const auto& entry, VertexId v) { return entry.first < v; });
-          reached = found != ball.end() && found->first == t[c];
-          if (reached) d[c] = found->second;
+                                              [](const ball_entry& entry, VertexId v) { return entry.vertex < v; });
+          reached = found != ball.end() && found->vertex == t[c];
+          if (reached) d[c] = found->distance;
         }
-        if (reached) nearest = std::min(nearest, planar_source(frame, d).distance_to(x, y));
+        if (reached) {
+          nearest = std::min(nearest, planar_source_distance(frame, planar_source_of(frame, d[0], d[1], d[2]), x, y));
+        }
       }
     }
     return nearest;
@@ -322,6 +369,8 @@ class Evening {
     if (!covered_after_move(i, there)) return false;
     moved_in_set_[i] = set_stamp_;
     points_[i] = there;
+    positions_[i] = to_vec3d(there.at);
+    triangles_[i] = there.triangle;
     return true;
   }
 
@@ -333,12 +382,12 @@ class Evening {
   // there.
   void find_neighbours(const std::vector<char>* moved = nullptr) {
     const auto started = std::chrono::steady_clock::now();
-    if (moved && device_) {
-      device_->update(points_, *moved, cells_);
+    if (moved && device_.diagrams) {
+      device_.diagrams->update(points_, *moved, cells_);
     } else if (moved) {
       update_surface_voronoi(mesh_, solver_, points_, *moved, cells_, scratch_);
-    } else if (device_) {
-      cells_ = device_->diagram(points_);
+    } else if (device_.diagrams) {
+      cells_ = device_.diagrams->diagram(points_);
     } else {
       cells_ = surface_voronoi(mesh_, solver_, points_, scratch_);
     }
@@ -486,19 +535,23 @@ class Evening {
 
   const SurfaceMesh& mesh_;
   const GeodesicSolver& solver_;
-  DeviceSurfaceVoronoi* device_;  // the diagrams on the device, when given
+  const EveningDevice device_;  // the diagrams and the moves on the device, where given
   EveningDiagrams diagrams_;
   const SurfaceWalk walk_;
+  const CavitySurface surface_;  // the mesh as cavity_centre reads it
   const EveningLimits limits_;
   const unsigned threads_;
   std::vector<SurfaceLocation> points_;
+  std::vector<vec3d> positions_;  // points_' points
+  std::vector<std::uint32_t> triangles_;  // and their triangles
   std::vector<char> visit_;
   std::vector<CavityScratch> scratches_;     // one per thread
   std::vector<SolverScratch> ball_scratches_;  // one per thread
   std::vector<PointSeeds> seeds_;              // one per thread
-  std::vector<ParticleBall> balls_;            // per particle, where it stands
+  ParticleBalls balls_;                        // per particle, where it stands
+  std::vector<ParticleBall> marched_;          // movers_' balls as marched, before they go into balls_
   const double ball_reach_;                    // how far each ball is marched (mesh units)
-  std::vector<std::uint32_t> movers_;          // of the set in hand
+  std::vector<std::uint32_t> movers_;          // of the set in hand (at the start: every particle)
   std::vector<Proposal> proposals_;            // of the set in hand, in its order
   // The particles kept: those of the sweep whose smallest spacing is
   // widest, the last of equals (0: the start). A move never narrows its own particle's gap
@@ -512,6 +565,7 @@ class Evening {
     std::size_t sweep = 0;
   } kept_;
   std::size_t sweeps_done_ = 0;
+  double proposing_seconds_ = 0;  // the sets' proposals, wherever found
   double start_cover_ = 0;  // the diagram's cover where the evening started
   std::vector<double> gaps_;  // per particle, measure_spacings's
   // The sets' stamps: per particle, the set it moved in; per vertex, the
@@ -562,7 +616,7 @@ std::vector<EveningSweep> sweep_until_still(Evening& evening, const EveningLimit
 // The swaps after the sweeps (even_out): `outcome`, whose smallest spacing
 // is `smallest`, is replaced by each swap kept.
 void swap_closest_into_widest(const SurfaceMesh& mesh, const GeodesicSolver& solver, const EveningLimits& limits,
-                              unsigned threads, bool quiet, DeviceSurfaceVoronoi* device, EveningOutcome& outcome,
+                              unsigned threads, bool quiet, EveningDevice device, EveningOutcome& outcome,
                               double smallest) {
   if (limits.swap_rounds == 0 || !(smallest < limits.swap_below)) return;
   ProgressLine progress("swap", limits.swap_rounds, quiet);
@@ -583,7 +637,11 @@ void swap_closest_into_widest(const SurfaceMesh& mesh, const GeodesicSolver& sol
       swap.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
       outcome.diagrams.count += tried.diagrams.count;
       outcome.diagrams.seconds += tried.diagrams.seconds;
-      outcome.diagrams.rounds = tried.diagrams.rounds;  // the device's count runs on
+      outcome.diagrams.rounds = tried.diagrams.rounds;  // the device's counts run on
+      outcome.moves.seconds += tried.moves.seconds;
+      outcome.moves.launches = tried.moves.launches;  // as the rounds
+      outcome.moves.sets_on_host = tried.moves.sets_on_host;
+      outcome.moves.device_seconds = tried.moves.device_seconds;
       if (swap.smallest > smallest && tried.cover <= limits.cover &&
           (!widest || swap.smallest > outcome.swaps[widest_swap].smallest)) {
         widest = std::move(tried);
@@ -607,7 +665,7 @@ void swap_closest_into_widest(const SurfaceMesh& mesh, const GeodesicSolver& sol
 }  // namespace
 
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> points,
-                        const EveningLimits& limits, unsigned threads, bool quiet, DeviceSurfaceVoronoi* device) {
+                        const EveningLimits& limits, unsigned threads, bool quiet, EveningDevice device) {
   threads = cores_or(threads);
   // Each thread marches with scratch arrays over the whole mesh: no more
   // threads than a quarter of the usable memory holds (--threads 1024 on

@@ -29,6 +29,7 @@
 #include "geodesics/geodesic_solver.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/surface_walk.hpp"
+#include "particles/device_cavity_centres.hpp"
 #include "particles/device_surface_voronoi.hpp"
 
 namespace meshparticles {
@@ -60,11 +61,21 @@ struct EveningSwap {
   bool kept = false;        // wider than before, the cover within the limit
 };
 
+// Where the moves' cavity centres were found, and what they took.
+struct EveningMoves {
+  std::string device;  // empty: the host's cavity_centre; else the device's name
+  double seconds = 0;  // every set's proposals (regions read, centres, decisions), wherever found
+  std::size_t launches = 0;   // on a device: one an independent set
+  std::size_t sets_on_host = 0;  // on a device: sets left to the host (their balls outgrew its largest buffer)
+  double device_seconds = 0;  // on a device: its uploads, kernels and reads
+};
+
 struct EveningOutcome {
   std::vector<SurfaceLocation> points;  // in the caller's order
   std::vector<EveningSweep> sweeps;     // the first evening's
   double cover = 0;                     // the points' geodesic covering radius (mesh units)
   EveningDiagrams diagrams;
+  EveningMoves moves;
   std::size_t kept_sweep = 0;           // the first evening's sweep it kept (0: the start)
   std::vector<EveningSwap> swaps;       // in the order tried
 };
@@ -96,10 +107,15 @@ struct EveningLimits {
 // the swaps stop). Each particle's geodesic
 // ball is kept for the evening (about 45 bytes a vertex of `mesh`). Unless
 // `quiet`, a progress line.
-// With `device` (built for `mesh`), each sweep's Voronoi diagram is the
-// device's (device_surface_voronoi), not the host's surface_voronoi.
+// With `device.diagrams` (built for `mesh`), each sweep's Voronoi diagram
+// is the device's (device_surface_voronoi), not the host's
+// surface_voronoi; with `device.moves`, each independent set's cavity
+// centres are the device's (device_cavity_centres): the same bits.
+struct EveningDevice {
+  DeviceSurfaceVoronoi* diagrams = nullptr;
+  DeviceCavityCentres* moves = nullptr;
+};
 EveningOutcome even_out(const SurfaceMesh& mesh, const GeodesicSolver& solver, std::vector<SurfaceLocation> start,
-                        const EveningLimits& limits, unsigned threads, bool quiet,
-                        DeviceSurfaceVoronoi* device = nullptr);
+                        const EveningLimits& limits, unsigned threads, bool quiet, EveningDevice device = {});
 
 }  // namespace meshparticles

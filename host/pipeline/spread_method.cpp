@@ -16,6 +16,7 @@
 #include "mesh/midpoint_refinement.hpp"
 #include "mesh/point_insertion.hpp"
 #include "mesh/surface_walk.hpp"
+#include "particles/device_cavity_centres.hpp"
 #include "particles/device_surface_voronoi.hpp"
 #include "pipeline/paper_method.hpp"
 #include "pipeline/run_pipeline.hpp"
@@ -69,6 +70,8 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   if (!request.backend.device.empty()) {
     spread.evening_device = select_device(request.backend.device);
     check_device_voronoi_fits(*spread.evening_device, working_vertices);
+    spread.evening_centres_on_device =
+        spread.evening_device->is_gpu() && device_has_double_precision(*spread.evening_device);
     if (local && !request.geodesic_given && spread.evening_device->is_gpu()) {
       plan.geodesics.method = GeodesicMethod::fast_iterative;
     }
@@ -157,13 +160,21 @@ std::vector<float> cover_distances(const RunPlan& plan, const SurfaceMesh& measu
 // beside the farthest start and the sweeps, which use one core, where the
 // run may use more; at its first use where it may not. No future where no
 // device is asked.
-std::future<std::unique_ptr<DeviceSurfaceVoronoi>> set_up_evening_device(const RunPlan& plan,
-                                                                         const SurfaceMesh& surface) {
+struct EveningDevices {
+  std::unique_ptr<DeviceSurfaceVoronoi> diagrams;
+  std::unique_ptr<DeviceCavityCentres> moves;  // where SpreadPlan::evening_centres_on_device
+};
+
+std::future<EveningDevices> set_up_evening_device(const RunPlan& plan, const SurfaceMesh& surface) {
   if (!plan.spread->evening_device) return {};
   const bool beside = cores_or(plan.request.distances.geodesics.threads) > 1;
   return std::async(beside ? std::launch::async : std::launch::deferred,
-                    [&surface, device = *plan.spread->evening_device] {
-                      return std::make_unique<DeviceSurfaceVoronoi>(surface, device);
+                    [&surface, device = *plan.spread->evening_device,
+                     centres = plan.spread->evening_centres_on_device] {
+                      EveningDevices devices;
+                      devices.diagrams = std::make_unique<DeviceSurfaceVoronoi>(surface, device);
+                      if (centres) devices.moves = std::make_unique<DeviceCavityCentres>(surface, device);
+                      return devices;
                     });
 }
 
@@ -177,18 +188,18 @@ std::future<std::unique_ptr<DeviceSurfaceVoronoi>> set_up_evening_device(const R
 void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::vector<SurfaceLocation> from,
                   const std::shared_ptr<RefinedMesh>& swept, std::shared_ptr<RefinedMesh>& working,
                   const GeodesicSolver& solver, double cover_limit,
-                  std::future<std::unique_ptr<DeviceSurfaceVoronoi>>& device_setup) {
+                  std::future<EveningDevices>& device_setup) {
   const RunRequest& request = result.plan.request;
   const SurfaceMesh& surface = swept->mesh;
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadEveningMinGain * d_hex, kSpreadStallGain * d_hex,
                              cover_limit, kSpreadSwapBelow * d_hex, kSpreadSwapRounds};
   std::optional<EveningOutcome>& evening = result.spread->evening;
-  const std::unique_ptr<DeviceSurfaceVoronoi> device = device_setup.valid() ? device_setup.get() : nullptr;
-  if (device) result.device = device->device_name();
+  const EveningDevices devices = device_setup.valid() ? device_setup.get() : EveningDevices{};
+  if (devices.diagrams) result.device = devices.diagrams->device_name();
   evening = naming_memory_failures(request.mesh_label, "evening the spacing", [&] {
     return even_out(surface, solver, std::move(from), limits, request.distances.geodesics.threads, request.quiet,
-                    device.get());
+                    {devices.diagrams.get(), devices.moves.get()});
   });
   InsertedPoints inserted = insert_points(*swept, mesh, evening->points);
   result.outcome.positions = std::move(inserted.vertices);
@@ -230,7 +241,7 @@ RunResult execute_spread(const SurfaceMesh& mesh, const RunPlan& plan) {
   const SurfaceMesh& surface = swept->mesh;
   const unsigned threads = cores_or(request.distances.geodesics.threads);
   const auto solver = make_geodesic_solver(surface, plan.march_method, threads);
-  std::future<std::unique_ptr<DeviceSurfaceVoronoi>> evening_device = set_up_evening_device(plan, surface);
+  std::future<EveningDevices> evening_device = set_up_evening_device(plan, surface);
   // The input's vertices keep their ids on the working mesh.
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
   const std::size_t relax_rounds = request.max_iterations == 0 ? 0 : request.relax_rounds.value_or(kSpreadRelaxRounds);

@@ -91,6 +91,11 @@ struct SpreadPlan {
   // --device given: the evening's Voronoi diagrams on it
   // (particles/device_surface_voronoi); else on the host.
   std::optional<DeviceDescription> evening_device;
+  // And its moves' cavity centres (particles/device_cavity_centres): where
+  // that device is a GPU with double precision. On a CPU device they stay
+  // on the host, whose cores it shares: there the same centres took 1.2 to
+  // 1.9x the host's time (PoCL, docs/PERFORMANCE.md).
+  bool evening_centres_on_device = false;
   // Where the measurement's local balls are solved: with the fast iterative
   // method (--device's default, or --geodesic fim) the device
   // fim_ball_device finds (geodesics/device_balls); else, with none, or on

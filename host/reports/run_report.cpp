@@ -19,6 +19,8 @@ void add_spread_parameters(const RunPlan& plan, const SpreadPlan& spread, nlohma
   // Where the evening's diagrams go if it runs (evening.diagrams: where they went).
   params["evening_diagrams"] = spread.evening_device ? "device" : "host";
   if (spread.evening_device) params["evening_device"] = spread.evening_device->name;
+  // Where the evening's moves' cavity centres go (evening.centres: where they went).
+  params["evening_centres"] = spread.evening_centres_on_device ? "device" : "host";
   // Where the measurement's balls go (distances.balls_on_device: how many went).
   params["measurement_balls"] = spread.measurement_device ? "device" : "host";
   if (spread.measurement_device) params["measurement_device"] = spread.measurement_device->name;
@@ -146,6 +148,14 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
     where["device"] = diagrams.device;
     where["rounds"] = diagrams.rounds;
   }
+  nlohmann::json centres = {{"on", evening.moves.device.empty() ? "host" : "device"},
+                             {"seconds", evening.moves.seconds}};
+  if (!evening.moves.device.empty()) {
+    centres["device"] = evening.moves.device;
+    centres["launches"] = evening.moves.launches;
+    centres["sets_on_host"] = evening.moves.sets_on_host;
+    centres["device_seconds"] = evening.moves.device_seconds;
+  }
   nlohmann::json swaps = nlohmann::json::array();
   for (const EveningSwap& swap : evening.swaps) {
     swaps.push_back({{"particle", swap.particle},
@@ -159,6 +169,7 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
           {"cover", evening.cover / d_hex},
           {"kept_sweep", evening.kept_sweep},
           {"diagrams", where},
+          {"centres", centres},
           {"sweeps", sweeps},
           {"swaps", swaps}};
 }
