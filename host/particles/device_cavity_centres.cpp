@@ -36,7 +36,13 @@ constexpr std::size_t kGpuWorkGroupSize = 64;
 }  // namespace
 
 bool device_has_double_precision(const DeviceDescription& device) {
-  return device.device.getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() != 0;
+  // OpenCL 1.2 answers 0 without double precision; an older device may
+  // refuse the question.
+  try {
+    return device.device.getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() != 0;
+  } catch (const cl::Error&) {
+    return false;
+  }
 }
 
 DeviceCavityCentres::DeviceCavityCentres(const SurfaceMesh& mesh, const DeviceDescription& device)
