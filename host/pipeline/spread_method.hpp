@@ -93,8 +93,8 @@ struct SpreadPlan {
   std::optional<DeviceDescription> evening_device;
   // And its moves' cavity centres (particles/device_cavity_centres): where
   // that device is a GPU with double precision. On a CPU device they stay
-  // on the host, whose cores it shares: there the same centres took 1.2 to
-  // 1.9x the host's time (PoCL, docs/PERFORMANCE.md).
+  // on the host, whose cores it shares: there the same centres took 1.15 to
+  // 1.94x the host's time (PoCL, docs/PERFORMANCE.md).
   bool evening_centres_on_device = false;
   // Where the measurement's local balls are solved: with the fast iterative
   // method (--device's default, or --geodesic fim) the device
