@@ -329,11 +329,12 @@ static inline void search_triangle(cavity_surface mesh, unsigned int i, cavity_w
 // others are nearer); away -inf where none is found. Ties go to the point
 // found first: the triangles are searched by decreasing bound, then
 // increasing index, until none left can hold a farther point.
+// `scratch` holds `size`, cavity_scratch_sizes(mesh, c).
 static inline cavity_found cavity_centre(cavity_surface mesh, cavity_particles particles, cavity c,
-                                         cavity_scratch scratch) {
+                                         cavity_scratch scratch, cavity_scratch_size size) {
   cavity_work w;
   w.s = scratch;
-  gather_cavity(mesh, c, cavity_scratch_sizes(mesh, c), &w);
+  gather_cavity(mesh, c, size, &w);
   for (unsigned int k = 0; k < c.near_size; ++k) add_cavity_source(particles, c.near[k], &w);
   // A particle further out is d >= its straight line >= that to `at` less
   // the farthest corner's from `at`. No point of the cavity is farther from

@@ -68,7 +68,7 @@ __kernel void cavity_centres(const uint count, __global const cavity_task* tasks
   s.table = scratch_table + task.table_at;
   s.planar = scratch_planar + task.sources_at;
   s.near = scratch_near + task.sources_at;
-  found[k] = cavity_centre(mesh, particles, c, s);
+  found[k] = cavity_centre(mesh, particles, c, s, cavity_scratch_sizes(mesh, c));
 }
 
 #endif

@@ -77,8 +77,8 @@ CavityCentre cavity_centre(const CavitySurface& surface, const Cavity& c, const 
                            const ParticleBalls& balls, CavityScratch& scratch) {
   const cavity shared = cavity_of(c);
   const cavity_surface mesh = surface.view();
-  return cavity_centre_found(::cavity_centre(mesh, balls.view(points), shared,
-                                             scratch.fit(cavity_scratch_sizes(mesh, shared))));
+  const cavity_scratch_size size = cavity_scratch_sizes(mesh, shared);
+  return cavity_centre_found(::cavity_centre(mesh, balls.view(points), shared, scratch.fit(size), size));
 }
 
 }  // namespace meshparticles

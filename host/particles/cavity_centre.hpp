@@ -33,7 +33,6 @@ class CavitySurface {
   cavity_surface view() const;
   const std::vector<vec3d>& positions() const { return positions_; }
   const std::vector<unsigned int>& corners() const { return corners_; }
-  const VertexTriangles& fans() const { return fans_; }
 
  private:
   std::vector<vec3d> positions_;

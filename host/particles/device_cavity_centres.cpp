@@ -69,13 +69,13 @@ DeviceCavityCentres::DeviceCavityCentres(const SurfaceMesh& mesh, const DeviceDe
 void DeviceCavityCentres::send_balls(const ParticleBalls& balls) {
   const std::vector<ball_entry>& entries = balls.entries();
   const std::size_t bytes = std::max<std::size_t>(entries.size(), 1) * sizeof(ball_entry);
-  if (bytes > entries_capacity_ || balls.compactions() != compactions_seen_ || entries.size() < entries_sent_) {
-    fit_buffer(context_, entries_, entries_capacity_, bytes);
+  if (bytes > entries_.bytes || balls.compactions() != compactions_seen_ || entries.size() < entries_sent_) {
+    fit_buffer(context_, entries_.buffer, entries_.bytes, bytes);
     entries_sent_ = 0;
     compactions_seen_ = balls.compactions();
   }
   if (entries.size() > entries_sent_) {
-    queue_.enqueueWriteBuffer(entries_, CL_FALSE, entries_sent_ * sizeof(ball_entry),
+    queue_.enqueueWriteBuffer(entries_.buffer, CL_FALSE, entries_sent_ * sizeof(ball_entry),
                               (entries.size() - entries_sent_) * sizeof(ball_entry), entries.data() + entries_sent_);
   }
   entries_sent_ = entries.size();
@@ -164,7 +164,7 @@ std::optional<std::vector<CavityCentre>> DeviceCavityCentres::centres(std::span<
     int arg = 0;
     kernel_.setArg(arg++, cl_uint(tasks.size()));
     for (const cl::Buffer* b : {&tasks_.buffer, &lists_.buffer, &positions_, &corners_, &fan_start_, &fan_triangles_,
-                                &triangles_.buffer, &points_.buffer, &entries_, &ball_start_.buffer,
+                                &triangles_.buffer, &points_.buffer, &entries_.buffer, &ball_start_.buffer,
                                 &ball_size_.buffer, &scratch_triangles_.buffer, &scratch_bounds_.buffer,
                                 &scratch_triangle_slots_.buffer, &scratch_vertex_slots_.buffer,
                                 &scratch_vertices_.buffer, &scratch_corner_rows_.buffer, &scratch_ways_.buffer,

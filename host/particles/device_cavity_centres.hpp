@@ -64,13 +64,14 @@ class DeviceCavityCentres {
   cl::CommandQueue queue_;
   cl::Kernel kernel_;
   cl::Buffer positions_, corners_, fan_start_, fan_triangles_;
-  cl::Buffer entries_;
-  std::size_t entries_capacity_ = 0, entries_sent_ = 0, compactions_seen_ = 0;
-  // Made anew only when a call needs more: the calls' inputs, scratch and results.
+  // Made anew only when a call needs more: the balls, the calls' inputs,
+  // scratch and results.
   struct GrowingBuffer {
     cl::Buffer buffer;
     std::size_t bytes = 0;
   };
+  GrowingBuffer entries_;
+  std::size_t entries_sent_ = 0, compactions_seen_ = 0;  // of balls' entries: how many are on the device
   GrowingBuffer tasks_, lists_, triangles_, points_, ball_start_, ball_size_, found_;
   GrowingBuffer scratch_triangles_, scratch_bounds_, scratch_triangle_slots_, scratch_vertex_slots_, scratch_vertices_, scratch_corner_rows_, scratch_ways_,
       scratch_nearest_, scratch_table_, scratch_planar_, scratch_near_;
