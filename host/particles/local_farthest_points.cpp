@@ -47,6 +47,14 @@ constexpr std::uint64_t kScratchBytesPerVertex = 1 + 4 + 4 + 8 + 4;
 // torus at 256, edges to 0.78 d_hex: at 1.25 alone the evening ends at
 // nn_min 0.77 against 0.91).
 constexpr double kBallReach = 1.25;
+// A region past the cover limit is drawn in by moving its particle toward
+// its farthest vertex, by the least of these multiples of the overshoot's
+// share of that distance that covers the region within the limit (a step
+// of exactly the share would leave the far vertex at the limit only on a
+// flat, straight way there).
+constexpr std::array<double, 4> kHoleStepMultiples = {1.25, 2.0, 3.0, 4.0};
+// and never by more than this share of the way.
+constexpr double kLongestHoleStep = 0.9;
 
 // Per particle, the particles within kReachSteps steps of the diagram's
 // graph: the neighbours (regions touching) and the rest.
@@ -211,6 +219,7 @@ class Evening {
     EveningSweep record;
     record.cover = cells_.cover();
     std::vector<char> moved(points_.size(), 0);
+    if (start_cover_ > limits_.cover && cells_.cover() > limits_.cover) draw_into_holes(moved, record);
     for (const std::vector<std::uint32_t>& set : independent_sets(lists_, visit_)) {
       ++set_stamp_;
       if (proposals_.size() < set.size()) proposals_.resize(set.size());
@@ -295,6 +304,54 @@ class Evening {
   }
 
  private:
+  // Where the evening started over the cover limit, as a swap leaves the
+  // place its particle left: the sweeps' moves, each widening its own gap,
+  // close a hole only where one of them stands with it ahead. A particle
+  // may stand at its cavity's centre with its region's far side at its
+  // back, one neighbour a spacing and more away in front (femur at 256: a
+  // swapped particle 1.06 d_hex from its one neighbour, the far side of its
+  // region 0.84 d_hex behind, over the limit of 0.79, in every sweep).
+  // So each particle whose region reaches past the limit is first moved
+  // toward its farthest vertex, by the least step that brings its region
+  // within the limit (kHoleStepMultiples), where its gap stays at least
+  // the smaller of its own and the wider of the smallest spacing and the
+  // swaps' target: the move never makes the closest pair. In index order,
+  // on the diagram the sweep starts from; `record` counts them.
+  void draw_into_holes(std::vector<char>& moved, EveningSweep& record) {
+    ++set_stamp_;
+    std::vector<VertexId> farthest(points_.size(), 0);
+    std::vector<float> reach(points_.size(), 0);
+    for (VertexId v = 0; v < owner_.size(); ++v) {
+      const std::uint32_t i = owner_[v];
+      if (i != SurfaceVoronoi::kNoPoint && nearest_[v] > limits_.cover && nearest_[v] > reach[i]) {
+        reach[i] = nearest_[v];
+        farthest[i] = v;
+      }
+    }
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const double gap : gaps_) smallest = std::min(smallest, gap);
+    movers_.clear();
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
+      if (reach[i] == 0) continue;
+      const double overshoot = (reach[i] - limits_.cover) / reach[i];
+      const double least_gap = std::min(gaps_[i], std::max(smallest, limits_.swap_below));
+      const Vec3 from = points_[i].at, to = mesh_.positions()[farthest[i]];
+      for (const double multiple : kHoleStepMultiples) {
+        const double share = std::min(kLongestHoleStep, multiple * overshoot);
+        const SurfaceLocation there = walk_.walk(points_[i].triangle, from + share * (to - from));
+        if (!(gap_at(i, there) >= least_gap)) break;  // too near another: no longer step is tried
+        if (commit(i, there, true)) {
+          moved[i] = 1;
+          movers_.push_back(i);
+          record.longest = std::max(record.longest, distance(from, there.at));
+          break;
+        }
+      }
+    }
+    march_balls();
+    record.drawn = movers_.size();
+  }
+
   // The proposals of `set` with their cavities' centres on the device
   // (the regions read on threads_ threads, the decisions on the host);
   // false where the device left them to the host.
@@ -327,12 +384,14 @@ class Evening {
   // Particle i's distance from the nearest particle listed for it, each
   // read through its ball at i's triangle's corners (a source in the
   // triangle's plane, as cavity_centre reads them).
-  double gap_from_balls(std::uint32_t i) const {
-    const SurfaceLocation& p = points_[i];
+  double gap_from_balls(std::uint32_t i) const { return gap_at(i, points_[i]); }
+  // The same, were i at `p`.
+  double gap_at(std::uint32_t i, const SurfaceLocation& p) const {
     const plane_frame frame = triangle_frame(mesh_, p.triangle);
     if (frame_degenerate(frame)) return std::numeric_limits<double>::infinity();
     const Triangle& t = mesh_.triangles()[p.triangle];
-    const double x = frame_x(frame, positions_[i]), y = frame_y(frame, positions_[i]);
+    const vec3d at = to_vec3d(p.at);
+    const double x = frame_x(frame, at), y = frame_y(frame, at);
     double nearest = std::numeric_limits<double>::infinity();
     for (const auto* list : {&lists_.near[i], &lists_.around[i]}) {
       for (const std::uint32_t k : *list) {
@@ -365,8 +424,8 @@ class Evening {
   }
 
   // Moves i to `there` where that holds the cover; whether it moved.
-  bool commit(std::uint32_t i, const SurfaceLocation& there) {
-    if (!covered_after_move(i, there)) return false;
+  bool commit(std::uint32_t i, const SurfaceLocation& there, bool strict = false) {
+    if (!covered_after_move(i, there, strict)) return false;
     moved_in_set_[i] = set_stamp_;
     points_[i] = there;
     positions_[i] = to_vec3d(there.at);
@@ -404,14 +463,15 @@ class Evening {
 
   // Whether moving i to `there` leaves every vertex of i's region within
   // limits_.cover of a particle (where the evening started over it, no
-  // farther than the region's farthest was), on the diagram as the sweep's
+  // farther than the region's farthest was; with `strict`, within
+  // limits_.cover whatever the start), on the diagram as the sweep's
   // moves have left it (nearest_, owner_): the region i holds is refilled
   // from its rim by the particles around it (one march from the rim, each
   // rim vertex from its own particle, as particle_voronoi refills a
   // region), and a march from `there` takes what is nearer to it. Where the
   // move holds the cover the diagram is left updated for it, else as it
   // was.
-  bool covered_after_move(std::uint32_t i, const SurfaceLocation& there) {
+  bool covered_after_move(std::uint32_t i, const SurfaceLocation& there, bool strict = false) {
     std::vector<VertexId>& mine = region_[i];
     std::erase_if(mine, [&](VertexId v) { return owner_[v] != i; });
     std::sort(mine.begin(), mine.end());
@@ -472,7 +532,8 @@ class Evening {
     // wider than this check did, and a region over the limit that way is
     // held, not let grow (lion at 1,024: 0.821 d_hex, 0.844 with any
     // region free to stay as wide as it was).
-    const double limit = std::max(limits_.cover, std::min(double(reach), start_cover_));
+    const double limit =
+        strict ? limits_.cover : std::max(limits_.cover, std::min(double(reach), start_cover_));
     bool covered = true;
     for (const VertexId v : mine) covered = covered && nearest_[v] <= limit;
     if (!covered) {
@@ -512,7 +573,12 @@ class Evening {
     }
     measure_spacings(record.mean, record.smallest);
     ++sweeps_done_;
-    if (record.smallest >= kept_.smallest) kept_ = {points_, cells_.cover(), record.smallest, sweeps_done_};
+    // Where the evening started over the cover limit, a sweep within it
+    // comes before any that is not (a swap is kept only so).
+    const double cover = cells_.cover();
+    const bool within = cover <= limits_.cover, kept_within = kept_.cover <= limits_.cover;
+    const bool keep = start_cover_ > limits_.cover && within != kept_within ? within : record.smallest >= kept_.smallest;
+    if (keep) kept_ = {points_, cover, record.smallest, sweeps_done_};
   }
 
   // The mean and smallest of each particle's spacing to its nearest: the

@@ -15,7 +15,10 @@
 // Sweeps end where every particle stands at its cavity's centre, which can
 // hold a pair no move of either end widens (at a tip, across a thin part).
 // Then one of the pair is taken to the widest hole and the sweeps run
-// again from there: a swap, kept where it widens the smallest spacing.
+// again from there: a swap, kept where it widens the smallest spacing. The
+// place it left can be a hole wider than the cover limit that no move
+// closes (each widens its own gap, and the particle beside it may have it
+// at its back): there each sweep first draws that particle toward it.
 //
 // Vertices cap farthest-point optimization: a particle can only stand where
 // a vertex is, up to an edge from the true centre, which costs about a
@@ -36,6 +39,7 @@ namespace meshparticles {
 
 struct EveningSweep {
   std::size_t moved = 0;
+  std::size_t drawn = 0;          // of them, moved toward a hole before the sweep's moves (where the evening started over the cover limit)
   double smallest = 0, mean = 0;  // each particle's distance along the surface to the nearest particle around it, after the sweep
   double cover = 0;               // the geodesic covering radius before the sweep (mesh units)
   double longest = 0;             // the longest move kept, straight (mesh units)
@@ -95,7 +99,10 @@ struct EveningLimits {
 // than `limits.stall_gain`, or `limits.max_sweeps` have run. A move must
 // gain more than `limits.min_gain`, and must leave the region it came from
 // within `limits.cover` of it (where the start is wider, as a swap leaves
-// its hole, a region over it may narrow but not widen).
+// its hole, a region over it may narrow but not widen; each sweep then
+// first moves each particle whose region is over it toward the region's
+// farthest vertex, where that brings the region within it and does not
+// make the closest pair, and a sweep within it is kept before one over it).
 // Each sweep's particles go in independent sets, each set's moves judged
 // on `threads` threads (0: every core). Deterministic: the same inputs give
 // the same bits, for any number of threads. Returns the points of the sweep

@@ -134,6 +134,7 @@ nlohmann::json evening_json(const EveningOutcome& evening, double d_hex) {
   for (const EveningSweep& sweep : evening.sweeps) {
     moved += sweep.moved;
     sweeps.push_back({{"moved", sweep.moved},
+                      {"drawn", sweep.drawn},
                       {"smallest_spacing", sweep.smallest / d_hex},
                       {"mean_spacing", sweep.mean / d_hex},
                       {"cover_before", sweep.cover / d_hex},
