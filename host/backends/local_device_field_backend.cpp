@@ -193,28 +193,25 @@ std::uint64_t LocalDeviceFieldBackend::upload_rows(const std::vector<VertexId>& 
 
 // Kernels over a list (mark, sum) take it and its length as their first two
 // arguments. The list buffer grows, never shrinks.
-void LocalDeviceFieldBackend::launch_over_list(cl::Kernel& kernel, ListBuffer& list, const void* items,
-                                               std::size_t count, std::size_t item_bytes) {
+void LocalDeviceFieldBackend::launch_over_list(cl::Kernel& kernel, GrowingBuffer& list, const char* what,
+                                               const void* items, std::size_t count, std::size_t item_bytes) {
   if (count == 0) return;
   const std::size_t bytes = count * item_bytes;
-  if (bytes > list.capacity) {
-    list.capacity = std::max(bytes, 2 * list.capacity);
-    list.buffer = allocate(CL_MEM_READ_ONLY, list.capacity, list.what);
-  }
+  list.fit(bytes, [&](std::size_t room) { return allocate(CL_MEM_READ_ONLY, room, what); });
   // Blocking: the list lives on the caller's stack. In order after the
   // launches before it, so the last reader of the old contents is done.
-  write_blocking(list.buffer, 0, bytes, items);
-  kernel.setArg(0, list.buffer);
+  write_blocking(list.buffer(), 0, bytes, items);
+  kernel.setArg(0, list.buffer());
   kernel.setArg(1, cl_uint(count));
   launch(kernel, cl::NDRange(count));
 }
 
 void LocalDeviceFieldBackend::upload_marks(const std::vector<cl_uint4>& changes) {
-  launch_over_list(mark_, marks_list_, changes.data(), changes.size(), sizeof(cl_uint4));
+  launch_over_list(mark_, marks_list_, "the candidate changes", changes.data(), changes.size(), sizeof(cl_uint4));
 }
 
 void LocalDeviceFieldBackend::enqueue_sums(const std::vector<VertexId>& vertices) {
-  launch_over_list(sum_, sums_list_, vertices.data(), vertices.size(), sizeof(cl_uint));
+  launch_over_list(sum_, sums_list_, "the new candidates", vertices.data(), vertices.size(), sizeof(cl_uint));
 }
 
 void LocalDeviceFieldBackend::place_rows(const std::vector<VertexId>& arrivals,

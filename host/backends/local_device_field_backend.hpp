@@ -14,6 +14,7 @@
 #include "backends/candidate_balls.hpp"
 #include "backends/device_backend.hpp"
 #include "geodesics/local_distances.hpp"
+#include "opencl/growing_buffer.hpp"
 
 namespace meshparticles {
 
@@ -64,14 +65,10 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   std::uint64_t upload_rows(const std::vector<VertexId>& rows, std::uint64_t at);
   void upload_marks(const std::vector<cl_uint4>& changes);
   void enqueue_sums(const std::vector<VertexId>& vertices);
-  struct ListBuffer {
-    cl::Buffer buffer;
-    std::size_t capacity = 0;  // bytes
-    std::string what;          // for the allocation's error message
-  };
-  // Uploads `count` items to `list` and launches `kernel` over them.
-  void launch_over_list(cl::Kernel& kernel, ListBuffer& list, const void* items, std::size_t count,
-                        std::size_t item_bytes);
+  // Uploads `count` items to `list` (named `what` where it cannot be
+  // allocated) and launches `kernel` over them.
+  void launch_over_list(cl::Kernel& kernel, GrowingBuffer& list, const char* what, const void* items,
+                        std::size_t count, std::size_t item_bytes);
   void set_row_args(cl::Kernel& kernel, cl_uint first);
 
   const LocalDistances& balls_;
@@ -85,8 +82,8 @@ class LocalDeviceFieldBackend final : public DeviceBackend {
   cl::Buffer row_start_, row_length_, row_vertices_, row_distances_;
   double pool_headroom_;
   std::size_t upload_piece_;  // entries
-  ListBuffer marks_list_{{}, 0, "the candidate changes"};  // of one colour
-  ListBuffer sums_list_{{}, 0, "the new candidates"};
+  GrowingBuffer marks_list_;  // the candidate changes of one colour
+  GrowingBuffer sums_list_;   // the new candidates
 
   // The host's mirror of the pool: the balls whose rows are in it (those
   // of candidates and of former ones until the next repack), and where

@@ -23,13 +23,6 @@ static_assert(sizeof(CavityTask) == 52, "kernels/cavity_centres.cl reads cavity_
 static_assert(sizeof(vec3d) == 24 && sizeof(ball_entry) == 8, "the device's layout of vec3d and ball_entry");
 static_assert(sizeof(planar_source) == 56 && sizeof(cavity_found) == 72, "the device's layout of the shared structs");
 
-// A buffer of at least `bytes`, made anew (larger) only where `buffer` is smaller.
-void fit_buffer(const cl::Context& context, cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes) {
-  if (bytes <= capacity && capacity > 0) return;
-  capacity = std::max<std::size_t>(bytes + bytes / 4, 64);
-  buffer = cl::Buffer(context, CL_MEM_READ_WRITE, capacity);
-}
-
 // A GPU's work-group: a warp or two of particles.
 constexpr std::size_t kGpuWorkGroupSize = 64;
 
@@ -66,16 +59,19 @@ DeviceCavityCentres::DeviceCavityCentres(const SurfaceMesh& mesh, const DeviceDe
   fan_triangles_ = read_only_buffer(context_, fans_.triangles);
 }
 
+bool DeviceCavityCentres::fit(GrowingBuffer& buffer, std::size_t bytes) {
+  return buffer.fit(bytes, [&](std::size_t room) { return cl::Buffer(context_, CL_MEM_READ_WRITE, room); });
+}
+
 void DeviceCavityCentres::send_balls(const ParticleBalls& balls) {
   const std::vector<ball_entry>& entries = balls.entries();
   const std::size_t bytes = std::max<std::size_t>(entries.size(), 1) * sizeof(ball_entry);
-  if (bytes > entries_.bytes || balls.compactions() != compactions_seen_ || entries.size() < entries_sent_) {
-    fit_buffer(context_, entries_.buffer, entries_.bytes, bytes);
+  if (fit(entries_, bytes) || balls.compactions() != compactions_seen_ || entries.size() < entries_sent_) {
     entries_sent_ = 0;
     compactions_seen_ = balls.compactions();
   }
   if (entries.size() > entries_sent_) {
-    queue_.enqueueWriteBuffer(entries_.buffer, CL_FALSE, entries_sent_ * sizeof(ball_entry),
+    queue_.enqueueWriteBuffer(entries_.buffer(), CL_FALSE, entries_sent_ * sizeof(ball_entry),
                               (entries.size() - entries_sent_) * sizeof(ball_entry), entries.data() + entries_sent_);
   }
   entries_sent_ = entries.size();
@@ -97,8 +93,8 @@ std::optional<std::vector<CavityCentre>> DeviceCavityCentres::centres(std::span<
   send_balls(balls);
   const auto send = [&](GrowingBuffer& to, const auto& values) {
     const std::size_t bytes = values.size() * sizeof(values[0]);
-    fit_buffer(context_, to.buffer, to.bytes, bytes);
-    if (bytes > 0) queue_.enqueueWriteBuffer(to.buffer, CL_FALSE, 0, bytes, values.data());
+    fit(to, bytes);
+    if (bytes > 0) queue_.enqueueWriteBuffer(to.buffer(), CL_FALSE, 0, bytes, values.data());
   };
   send(points_, points);
   send(triangles_, triangles);
@@ -148,7 +144,7 @@ std::optional<std::vector<CavityCentre>> DeviceCavityCentres::centres(std::span<
     }
     send(tasks_, tasks);
     send(lists_, lists);
-    const auto scratch = [&](GrowingBuffer& b, std::size_t bytes) { fit_buffer(context_, b.buffer, b.bytes, bytes); };
+    const auto scratch = [&](GrowingBuffer& b, std::size_t bytes) { fit(b, bytes); };
     scratch(scratch_triangles_, triangles_total * sizeof(cl_uint));
     scratch(scratch_bounds_, triangles_total * sizeof(cl_double));
     scratch(scratch_triangle_slots_, triangle_slots_total * sizeof(cl_uint));
@@ -163,13 +159,14 @@ std::optional<std::vector<CavityCentre>> DeviceCavityCentres::centres(std::span<
     scratch(found_, tasks.size() * sizeof(cavity_found));
     int arg = 0;
     kernel_.setArg(arg++, cl_uint(tasks.size()));
-    for (const cl::Buffer* b : {&tasks_.buffer, &lists_.buffer, &positions_, &corners_, &fan_start_, &fan_triangles_,
-                                &triangles_.buffer, &points_.buffer, &entries_.buffer, &ball_start_.buffer,
-                                &ball_size_.buffer, &scratch_triangles_.buffer, &scratch_bounds_.buffer,
-                                &scratch_triangle_slots_.buffer, &scratch_vertex_slots_.buffer,
-                                &scratch_vertices_.buffer, &scratch_corner_rows_.buffer, &scratch_ways_.buffer,
-                                &scratch_nearest_.buffer, &scratch_table_.buffer, &scratch_planar_.buffer,
-                                &scratch_near_.buffer, &found_.buffer}) {
+    const std::initializer_list<const cl::Buffer*> arguments = {
+        &tasks_.buffer(), &lists_.buffer(), &positions_, &corners_, &fan_start_, &fan_triangles_,
+        &triangles_.buffer(), &points_.buffer(), &entries_.buffer(), &ball_start_.buffer(), &ball_size_.buffer(),
+        &scratch_triangles_.buffer(), &scratch_bounds_.buffer(), &scratch_triangle_slots_.buffer(),
+        &scratch_vertex_slots_.buffer(), &scratch_vertices_.buffer(), &scratch_corner_rows_.buffer(),
+        &scratch_ways_.buffer(), &scratch_nearest_.buffer(), &scratch_table_.buffer(), &scratch_planar_.buffer(),
+        &scratch_near_.buffer(), &found_.buffer()};
+    for (const cl::Buffer* b : arguments) {
       kernel_.setArg(arg++, *b);
     }
     // One work-item a group on a CPU device: PoCL runs a group's items in
@@ -178,7 +175,7 @@ std::optional<std::vector<CavityCentre>> DeviceCavityCentres::centres(std::span<
     const std::size_t global = (tasks.size() + group - 1) / group * group;
     queue_.enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(group));
     found.resize(tasks.size());
-    queue_.enqueueReadBuffer(found_.buffer, CL_TRUE, 0, found.size() * sizeof(cavity_found), found.data());
+    queue_.enqueueReadBuffer(found_.buffer(), CL_TRUE, 0, found.size() * sizeof(cavity_found), found.data());
     for (const cavity_found& f : found) result.push_back(cavity_centre_found(f));
     ++statistics_.launches;
     first = last;

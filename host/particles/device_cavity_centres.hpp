@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "opencl/device_discovery.hpp"
+#include "opencl/growing_buffer.hpp"
 #include "opencl/opencl.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "mesh/vertex_triangles.hpp"
@@ -54,6 +55,8 @@ class DeviceCavityCentres {
   // balls' entries brought up to date on the device: the new ones only,
   // unless the buffer is too small or the balls were compacted.
   void send_balls(const ParticleBalls& balls);
+  // `buffer` with room for `bytes` on this device; whether it was made anew.
+  bool fit(GrowingBuffer& buffer, std::size_t bytes);
 
   const VertexTriangles fans_;
   const CavitySurface surface_;  // the mesh as cavity_centre reads it, sent once
@@ -66,10 +69,6 @@ class DeviceCavityCentres {
   cl::Buffer positions_, corners_, fan_start_, fan_triangles_;
   // Made anew only when a call needs more: the balls, the calls' inputs,
   // scratch and results.
-  struct GrowingBuffer {
-    cl::Buffer buffer;
-    std::size_t bytes = 0;
-  };
   GrowingBuffer entries_;
   std::size_t entries_sent_ = 0, compactions_seen_ = 0;  // of balls' entries: how many are on the device
   GrowingBuffer tasks_, lists_, triangles_, points_, ball_start_, ball_size_, found_;
