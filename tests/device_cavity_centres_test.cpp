@@ -28,7 +28,7 @@ EveningOutcome evening_with_moves_on(const SurfaceMesh& mesh, const EveningStart
   const double d_hex = s.d_hex;
   // Swaps below 0.95 spacings, two rounds at most: spread's own limits
   // would swap only where the sweeps stall below 0.9.
-  const EveningLimits limits{40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, 1.1 * s.start_cover, 0.95 * d_hex, 2};
+  const EveningLimits limits{40, d_hex, 1e-3 * d_hex, 1e-4 * d_hex, 1.1 * s.start_cover, 0.95 * d_hex, 2, true};
   return even_out(mesh, *s.solver, s.from, limits, 2, true, {nullptr, moves});
 }
 

@@ -11,9 +11,9 @@ namespace meshparticles {
 
 class GrowingBuffer {
  public:
-  // Room for at least `bytes` (and 64 at least): where it holds less, a
-  // buffer a quarter larger than asked from `allocate(bytes)` (which
-  // returns a cl::Buffer, or throws). Whether it was made anew.
+  // Room for at least `bytes`: where it holds less, a buffer a quarter
+  // larger than asked (64 bytes at least) from `allocate(room)`, which
+  // returns a cl::Buffer or throws. Whether it was made anew.
   template <typename Allocate>
   bool fit(std::size_t bytes, Allocate&& allocate) {
     if (bytes <= bytes_ && bytes_ > 0) return false;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <initializer_list>
 
 #include "common/elapsed.hpp"
 #include "common/user_error.hpp"

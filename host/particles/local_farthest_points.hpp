@@ -18,7 +18,7 @@
 // again from there: a swap, kept where it widens the smallest spacing. The
 // place it left can be a hole wider than the cover limit that no move
 // closes (each widens its own gap, and the particle beside it may have it
-// at its back): there each sweep first draws that particle toward it.
+// at its back): each sweep first draws that particle toward it.
 //
 // Vertices cap farthest-point optimization: a particle can only stand where
 // a vertex is, up to an edge from the true centre, which costs about a
@@ -92,6 +92,11 @@ struct EveningLimits {
   double cover = 0;       // no move takes the covering radius over this (mesh units)
   double swap_below = 0;  // swaps run while the smallest spacing is under this (mesh units)
   std::size_t swap_rounds = 0;  // at most this many swaps kept
+  // Each sweep first draws in the regions over `cover`, and a sweep within
+  // it is kept before one over it (spread); else a region over it is only
+  // held from widening (correspond's gap sweeps, whose limit is their
+  // start's own cover).
+  bool hold_cover = false;
 };
 
 // From `start` (points of `mesh`'s triangles; `solver` is built for
@@ -99,10 +104,11 @@ struct EveningLimits {
 // than `limits.stall_gain`, or `limits.max_sweeps` have run. A move must
 // gain more than `limits.min_gain`, and must leave the region it came from
 // within `limits.cover` of it (where the start is wider, as a swap leaves
-// its hole, a region over it may narrow but not widen; each sweep then
-// first moves each particle whose region is over it toward the region's
-// farthest vertex, where that brings the region within it and does not
-// make the closest pair, and a sweep within it is kept before one over it).
+// its hole, a region over it may narrow but not widen). With
+// `limits.hold_cover`, each sweep first moves each particle whose region
+// is over the limit toward the region's farthest vertex, where that brings
+// the region within it and does not make the closest pair, and a sweep
+// within the limit is kept before one over it.
 // Each sweep's particles go in independent sets, each set's moves judged
 // on `threads` threads (0: every core). Deterministic: the same inputs give
 // the same bits, for any number of threads. Returns the points of the sweep

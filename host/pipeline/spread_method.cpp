@@ -192,8 +192,9 @@ void even_spacing(const SurfaceMesh& mesh, RunResult& result, std::vector<Surfac
   const RunRequest& request = result.plan.request;
   const SurfaceMesh& surface = swept->mesh;
   const double d_hex = hexagonal_spacing(mesh.area(), request.particles);
-  const EveningLimits limits{kSpreadEveningSweeps, d_hex, kSpreadEveningMinGain * d_hex, kSpreadStallGain * d_hex,
-                             cover_limit, kSpreadSwapBelow * d_hex, kSpreadSwapRounds};
+  const EveningLimits limits{kSpreadEveningSweeps,     d_hex,       kSpreadEveningMinGain * d_hex,
+                             kSpreadStallGain * d_hex, cover_limit, kSpreadSwapBelow * d_hex,
+                             kSpreadSwapRounds,        true};
   std::optional<EveningOutcome>& evening = result.spread->evening;
   const EveningDevices devices = device_setup.valid() ? device_setup.get() : EveningDevices{};
   if (devices.diagrams) result.device = devices.diagrams->device_name();
