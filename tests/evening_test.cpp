@@ -221,6 +221,19 @@ TEST(Evening, TheSameStartGivesTheSameBits) {
   }
 }
 
+// A default run of 256 particles on CGAL's `name` at `seed`; none where
+// CGAL's meshes are not here (cgal_mesh has failed the test then).
+std::optional<RunResult> default_run_of_256(const std::string& name, std::uint64_t seed = 1) {
+  const std::optional<SurfaceMesh> mesh = cgal_mesh(name);
+  if (!mesh) return std::nullopt;
+  RunRequest request;
+  request.mesh_label = name;
+  request.particles = 256;
+  request.seed = seed;
+  request.quiet = true;
+  return run_pipeline(*mesh, request);
+}
+
 // A default run of 256 particles on CGAL's `name` whose evening ends on a
 // pair it cannot widen and keeps a swap, the cover held: the smallest
 // spacing the sweeps left and the rho `quality` measures after the swaps.
@@ -228,13 +241,9 @@ struct Swapped {
   double stuck = 0, rho = 0;
 };
 Swapped run_keeping_a_swap(const std::string& name) {
-  const std::optional<SurfaceMesh> mesh = cgal_mesh(name);
-  if (!mesh) return {};
-  RunRequest request;
-  request.mesh_label = name;
-  request.particles = 256;
-  request.quiet = true;
-  const RunResult run = run_pipeline(*mesh, request);
+  const std::optional<RunResult> result = default_run_of_256(name);
+  if (!result) return {};
+  const RunResult& run = *result;
   if (!run.spread || !run.spread->evening || run.spread->evening->kept_sweep == 0) {
     ADD_FAILURE() << name << ": no evening, or none of its sweeps kept";
     return {};
@@ -289,14 +298,9 @@ TEST(Evening, ASwapsHoleBehindAParticleIsDrawnIn) {
 // holds it: each sweep first draws such a region in, and a sweep within
 // the limit is kept before one over it (0.783, as `quality` measures it).
 TEST(Evening, TheCoverStaysWithinItsLimitWhereTheDiagramReadsARegionWider) {
-  const std::optional<SurfaceMesh> mesh = cgal_mesh("lion-head.off");
-  if (!mesh) return;
-  RunRequest request;
-  request.mesh_label = "lion-head.off";
-  request.particles = 256;
-  request.seed = 2;
-  request.quiet = true;
-  const RunResult run = run_pipeline(*mesh, request);
+  const std::optional<RunResult> result = default_run_of_256("lion-head.off", 2);
+  if (!result) return;
+  const RunResult& run = *result;
   ASSERT_TRUE(run.spread && run.spread->evening);
   EXPECT_LE(*run.quality.cover * run.quality.d_hex, run.spread->cover_limit * (1 + 1e-3));
   EXPECT_GT(*run.quality.rho, 0.9);
@@ -307,14 +311,9 @@ TEST(Evening, TheCoverStaysWithinItsLimitWhereTheDiagramReadsARegionWider) {
 // 150 kept, rho 0.845), the evening goes on from it: rho 0.910, the cover
 // held. With no evening after a kept relaxation the run ends at 0.845.
 TEST(Evening, GoesOnFromARelaxedSetLessSpreadThanItLeavesMost) {
-  const std::optional<SurfaceMesh> mesh = cgal_mesh("knot2.off");
-  if (!mesh) return;
-  RunRequest request;
-  request.mesh_label = "knot2.off";
-  request.particles = 256;
-  request.seed = 2;
-  request.quiet = true;
-  const RunResult run = run_pipeline(*mesh, request);
+  const std::optional<RunResult> result = default_run_of_256("knot2.off", 2);
+  if (!result) return;
+  const RunResult& run = *result;
   ASSERT_TRUE(run.spread);
   const RelaxationOutcome& relaxation = run.spread->relaxation;
   ASSERT_LT(relaxation.kept, relaxation.candidates.size()) << "the relaxed set is kept";
