@@ -3,9 +3,10 @@
 // host's (particles/surface_voronoi, fast marching), its oracle, on the
 // committed meshes and a CGAL mesh, at 64 and 1,024 points.
 //
-// Two oracles: the host's diagram by the fast iterative method (the same
-// updates, pushed in another order) and by fast marching (what the evening
-// uses on the host). The solvers agree to their accuracy, not bit for bit
+// Three oracles: the host's rounds (particles/surface_voronoi_rounds, the
+// same step written once: the same bits), the host's diagram by the fast
+// iterative method (the same updates, pushed in another order) and by fast
+// marching (what the evening uses on the host). The solvers agree to their accuracy, not bit for bit
 // (the bounds and why: kSameMethod, kFastMarching): distances on average,
 // and at a small share of vertices by up to an edge; owners except at a
 // small share of vertices, each where the device's point is within the
@@ -32,6 +33,7 @@
 #include "particles/local_farthest_points.hpp"
 #include "particles/particle_params.hpp"
 #include "particles/surface_voronoi.hpp"
+#include "particles/surface_voronoi_rounds.hpp"
 #include "pipeline/point_set_measurement.hpp"
 #include "pipeline/run_pipeline.hpp"
 #include "quality/distribution_quality.hpp"
@@ -186,6 +188,12 @@ void expect_device_matches_host(const SurfaceMesh& mesh, const std::string& name
     const SurfaceVoronoi second = device.diagram(points);
     EXPECT_EQ(first.distance, second.distance) << "two diagrams of the same points differ";
     EXPECT_EQ(first.owner, second.owner);
+    // The host's rounds, on one thread and on two: the device's bits.
+    for (const unsigned threads : {1u, 2u}) {
+      const SurfaceVoronoi host = SurfaceVoronoiRounds(mesh, threads).diagram(points);
+      EXPECT_EQ(host.distance, first.distance) << "the host's rounds on " << threads << " threads";
+      EXPECT_EQ(host.owner, first.owner) << "the host's rounds on " << threads << " threads";
+    }
   }
 }
 
@@ -257,7 +265,9 @@ void expect_update_matches(const SurfaceMesh& mesh, const std::string& name, std
   const EveningStart start = evening_start(mesh, n);
   std::vector<SurfaceLocation> points = start.from;
   DeviceSurfaceVoronoi device(mesh, select_device(""));
+  SurfaceVoronoiRounds rounds(mesh, 2);
   SurfaceVoronoi updated = device.diagram(points);
+  SurfaceVoronoi updated_on_host = rounds.diagram(points);
   const SurfaceVoronoi before = updated;
   device.update(points, std::vector<char>(points.size(), 0), updated);
   EXPECT_EQ(updated.distance, before.distance);  // nothing moved: nothing changes
@@ -267,6 +277,10 @@ void expect_update_matches(const SurfaceMesh& mesh, const std::string& name, std
   const std::size_t rounds_before = device.statistics().rounds;
   device.update(points, moved, updated);
   const std::size_t update_rounds = device.statistics().rounds - rounds_before;
+  rounds.update(points, moved, updated_on_host);
+  EXPECT_EQ(updated_on_host.distance, updated.distance) << "the host's rounds, updated";
+  EXPECT_EQ(updated_on_host.owner, updated.owner);
+  EXPECT_EQ(rounds.statistics().rounds, device.statistics().rounds) << "rounds that changed something";
   const SurfaceVoronoi anew = device.diagram(points);
   const std::size_t anew_rounds = device.statistics().rounds - rounds_before - update_rounds;
   EXPECT_EQ(device.statistics().diagrams, 4u);

@@ -5,106 +5,27 @@
 #include <stdexcept>
 #include <vector>
 
-#include "common/compressed_rows.hpp"
 #include "common/elapsed.hpp"
 #include "common/user_error.hpp"
 #include "geodesics/geodesic_solver.hpp"
-#include "geodesics/triangle_stencils.hpp"
 #include "opencl/program_cache.hpp"
 #include "opencl/read_only_buffer.hpp"
+#include "particles/surface_voronoi_rounds.hpp"
 
 namespace meshparticles {
 
 namespace {
 
-// One candidate of a target vertex from corners x and y: pull_update in
-// kernels/surface_voronoi.cl, the same layout.
-struct PullUpdate {
-  VertexId x, y;
-  PlanarFrame frame;
-};
-static_assert(sizeof(PullUpdate) == 20, "kernels/surface_voronoi.cl reads pull_update with this layout");
-
-// A vertex's state in the rounds: vertex_state in kernels/surface_voronoi.cl.
-struct VertexState {
-  float distance;
-  std::uint32_t owner;
-  std::uint32_t stamp;  // round + 2 where it changed in that round; 1: a seed
-  std::uint32_t unused;
-};
-static_assert(sizeof(VertexState) == 16, "kernels/surface_voronoi.cl reads vertex_state with this layout");
-
-// The stencils of fast marching and the fast iterative method
-// (build_triangle_stencils: listed by the vertex that triggers them) listed
-// by the vertex they update, and for each vertex the vertices whose
-// candidates read it.
-struct PullStencils {
-  std::vector<std::uint32_t> offsets;
-  std::vector<PullUpdate> updates;
-  std::vector<std::uint32_t> dependent_offsets;
-  std::vector<VertexId> dependents;
-};
-
-PullStencils pull_stencils(const SurfaceMesh& mesh) {
-  const TriangleStencils stencils = build_triangle_stencils(mesh);
-  const std::size_t vertices = mesh.vertex_count();
-  std::vector<std::pair<VertexId, PullUpdate>> records;  // (target, update)
-  records.reserve(2 * stencils.triangles.size() + stencils.virtual_updates.size());
-  // Each update is listed twice, once under each corner it reads (C from
-  // (X, Y) under X, and from (Y, X) under Y: the same source placed in two
-  // frames). Pulled, the two would be computed together: the one under the
-  // smaller corner is kept.
-  for (VertexId x = 0; x < vertices; ++x) {
-    for (std::uint32_t k = stencils.triangle_offsets[x]; k < stencils.triangle_offsets[x + 1]; ++k) {
-      const TriangleAtVertex& t = stencils.triangles[k];
-      if (x < t.a) records.push_back({t.b, {x, t.a, t.b_from_a}});
-      if (x < t.b) records.push_back({t.a, {x, t.b, t.a_from_b}});
-    }
-    for (std::uint32_t k = stencils.virtual_offsets[x]; k < stencils.virtual_offsets[x + 1]; ++k) {
-      const VirtualUpdate& u = stencils.virtual_updates[k];
-      if (x < u.other) records.push_back({u.target, {x, u.other, u.frame}});
-    }
-  }
-  // By target, each target's in the order listed (a counting sort: man at
-  // 1,024, 39k vertices, 6 ms, where a comparison sort took 21 of the
-  // set-up's 67).
-  PullStencils pull;
-  to_compressed_rows(records, vertices, pull.offsets, pull.updates);
-  // A triangle's corners are each other's one-ring neighbours; a virtual
-  // update's corners may lie farther from its target: those are added.
-  std::vector<std::pair<VertexId, VertexId>> far;  // (read vertex, target)
-  for (VertexId target = 0; target < vertices; ++target) {
-    const auto ring = mesh.one_ring(target);
-    for (std::uint32_t k = pull.offsets[target]; k < pull.offsets[target + 1]; ++k) {
-      for (const VertexId read : {pull.updates[k].x, pull.updates[k].y}) {
-        if (std::find(ring.begin(), ring.end(), read) == ring.end()) far.push_back({read, target});
-      }
-    }
-  }
-  std::sort(far.begin(), far.end());
-  far.erase(std::unique(far.begin(), far.end()), far.end());
-  pull.dependent_offsets.assign(vertices + 1, 0);
-  std::size_t next_far = 0;
-  for (VertexId v = 0; v < vertices; ++v) {
-    for (const VertexId w : mesh.one_ring(v)) pull.dependents.push_back(w);
-    for (; next_far < far.size() && far[next_far].first == v; ++next_far) {
-      pull.dependents.push_back(far[next_far].second);
-    }
-    pull.dependent_offsets[v + 1] = std::uint32_t(pull.dependents.size());
-  }
-  return pull;
-}
-
 // Throws UserError when the diagram's buffers would not fit `device`.
 void check_voronoi_memory(const DeviceDescription& device, std::uint64_t vertices, std::uint64_t ring,
                           std::uint64_t pull_entries, std::uint64_t dependent_entries) {
-  const std::uint64_t pulls = pull_entries * sizeof(PullUpdate);
+  const std::uint64_t pulls = pull_entries * sizeof(pull_update);
   const std::uint64_t buffers[] = {
       (vertices + 1) * sizeof(cl_uint) * 3,                    // the three offset arrays
       ring * (sizeof(cl_uint) + sizeof(cl_float)),             // one-rings, edge lengths
       pulls,                                                   // the largest, about 140 B a vertex
       dependent_entries * sizeof(cl_uint),
-      vertices * (2 * sizeof(VertexState) + 3)};               // the states, dirty flags
+      vertices * (2 * sizeof(vertex_state) + 3)};               // the states, dirty flags
   std::uint64_t total = 0;
   for (const std::uint64_t bytes : buffers) total += bytes;
   const auto mib = [](std::uint64_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; };
@@ -131,9 +52,9 @@ void check_device_voronoi_fits(const DeviceDescription& device, std::uint64_t ve
 
 DeviceSurfaceVoronoi::DeviceSurfaceVoronoi(const SurfaceMesh& mesh, const DeviceDescription& device)
     : mesh_(mesh), device_name_(device.name) {
-  const PullStencils pull = pull_stencils(mesh);
-  check_voronoi_memory(device, mesh.vertex_count(), mesh.ring_neighbors().size(), pull.updates.size(),
-                       pull.dependents.size());
+  stencils_ = voronoi_stencils_of(mesh);
+  check_voronoi_memory(device, mesh.vertex_count(), mesh.ring_neighbors().size(), stencils_.pulls.size(),
+                       stencils_.dependents.size());
   context_ = device_context(device.device);
   queue_ = cl::CommandQueue(context_, device.device);
   const cl::Program program = cached_program(device.device, {"surface_voronoi.cl"}, {}, FloatMath::exact);
@@ -146,15 +67,18 @@ DeviceSurfaceVoronoi::DeviceSurfaceVoronoi(const SurfaceMesh& mesh, const Device
   const std::size_t vertices = std::max<std::size_t>(mesh.vertex_count(), 1);
   ring_offsets_ = read_only_buffer(context_, mesh.ring_offsets());
   ring_neighbors_ = read_only_buffer(context_, mesh.ring_neighbors());
-  edge_lengths_ = read_only_buffer(context_, ring_edge_lengths(mesh));
-  pull_offsets_ = read_only_buffer(context_, pull.offsets);
-  pulls_ = read_only_buffer(context_, pull.updates);
-  dependent_offsets_ = read_only_buffer(context_, pull.dependent_offsets);
-  dependents_ = read_only_buffer(context_, pull.dependents);
-  dependent_offsets_host_ = pull.dependent_offsets;
-  dependents_host_ = pull.dependents;
+  edge_lengths_ = read_only_buffer(context_, stencils_.edge_lengths);
+  pull_offsets_ = read_only_buffer(context_, stencils_.pull_offsets);
+  pulls_ = read_only_buffer(context_, stencils_.pulls);
+  dependent_offsets_ = read_only_buffer(context_, stencils_.dependent_offsets);
+  dependents_ = read_only_buffer(context_, stencils_.dependents);
+  // The host keeps what marks round 0's vertices (the dependents), not the
+  // candidates, the largest part.
+  stencils_.pulls = {};
+  stencils_.pull_offsets = {};
+  stencils_.edge_lengths = {};
   dirty_start_.resize(mesh.vertex_count());
-  for (cl::Buffer& buffer : states_) buffer = cl::Buffer(context_, CL_MEM_READ_WRITE, vertices * sizeof(VertexState));
+  for (cl::Buffer& buffer : states_) buffer = cl::Buffer(context_, CL_MEM_READ_WRITE, vertices * sizeof(vertex_state));
   for (cl::Buffer& buffer : dirty_) buffer = cl::Buffer(context_, CL_MEM_READ_WRITE, vertices * sizeof(cl_uchar));
   round_changed_ = cl::Buffer(context_, CL_MEM_READ_WRITE, kBatchRounds * sizeof(cl_uint));
   kernel_.setArg(0, cl_uint(mesh.vertex_count()));
@@ -182,22 +106,7 @@ void DeviceSurfaceVoronoi::update(std::span<const SurfaceLocation> points, std::
                                   SurfaceVoronoi& cells) {
   const auto started = std::chrono::steady_clock::now();
   const MovedPointsReseeded reseeded = reseed_moved_points(mesh_, points, moved, cells);
-  // The rounds start from the corners just seeded and from every vertex
-  // that kept its point and is read by an emptied one (the rims, and for
-  // virtual updates a little beyond): as if each had just changed.
-  std::vector<VertexId> changed = reseeded.corners;
-  if (!reseeded.emptied.empty()) {
-    std::vector<char> emptied(mesh_.vertex_count(), 0);
-    for (const VertexId v : reseeded.emptied) emptied[v] = 1;
-    for (VertexId w = 0; w < mesh_.vertex_count(); ++w) {
-      if (cells.owner[w] == SurfaceVoronoi::kNoPoint) continue;
-      for (std::uint32_t k = dependent_offsets_host_[w]; k < dependent_offsets_host_[w + 1]; ++k) {
-        if (!emptied[dependents_host_[k]]) continue;
-        changed.push_back(w);
-        break;
-      }
-    }
-  }
+  const std::vector<VertexId> changed = rounds_start_after_moves(stencils_, reseeded, cells);
   if (!changed.empty()) converge(changed, cells);
   ++statistics_.diagrams;
   statistics_.seconds += seconds_since(started);
@@ -207,17 +116,17 @@ void DeviceSurfaceVoronoi::converge(std::span<const VertexId> changed, SurfaceVo
   const std::size_t vertices = mesh_.vertex_count();
   // Both buffers start as `voronoi`; round 0 computes the vertices that
   // read a changed one, from it (stamped 1: changed before round 0).
-  std::vector<VertexState> states(vertices);
+  std::vector<vertex_state> states(vertices);
   for (std::size_t v = 0; v < vertices; ++v) states[v] = {voronoi.distance[v], voronoi.owner[v], 0, 0};
   std::fill(dirty_start_.begin(), dirty_start_.end(), cl_uchar(0));
   for (const VertexId c : changed) {
     states[c].stamp = 1;
-    for (std::uint32_t k = dependent_offsets_host_[c]; k < dependent_offsets_host_[c + 1]; ++k) {
-      dirty_start_[dependents_host_[k]] = 1;
+    for (std::uint32_t k = stencils_.dependent_offsets[c]; k < stencils_.dependent_offsets[c + 1]; ++k) {
+      dirty_start_[stencils_.dependents[k]] = 1;
     }
   }
   for (const cl::Buffer& buffer : states_) {
-    queue_.enqueueWriteBuffer(buffer, CL_FALSE, 0, vertices * sizeof(VertexState), states.data());
+    queue_.enqueueWriteBuffer(buffer, CL_FALSE, 0, vertices * sizeof(vertex_state), states.data());
   }
   queue_.enqueueWriteBuffer(dirty_[0], CL_FALSE, 0, vertices, dirty_start_.data());
   queue_.enqueueFillBuffer(dirty_[1], cl_uchar(0), 0, vertices);
@@ -248,7 +157,7 @@ void DeviceSurfaceVoronoi::converge(std::span<const VertexId> changed, SurfaceVo
     converged = rounds_changed < batch;
   }
   // The last round changed nothing: the buffers it wrote hold every vertex.
-  queue_.enqueueReadBuffer(states_[round % 2], CL_TRUE, 0, vertices * sizeof(VertexState), states.data());
+  queue_.enqueueReadBuffer(states_[round % 2], CL_TRUE, 0, vertices * sizeof(vertex_state), states.data());
   for (std::size_t v = 0; v < vertices; ++v) {
     voronoi.distance[v] = states[v].distance;
     voronoi.owner[v] = states[v].owner;

@@ -1,13 +1,13 @@
 #pragma once
 // The geodesic Voronoi diagram of points on a surface (surface_voronoi.hpp)
-// on an OpenCL device: kernels/surface_voronoi.cl, rounds of the fast
-// iterative method's updates, one work-item per vertex, from the same seeds
-// as the host's (seeded_surface_voronoi). The host's diagram is its oracle:
-// fast marching there, a label-correcting sweep here, the same stencils and
-// update (geodesics/triangle_stencils, kernels/point_source_update.h), so the
-// two agree to the methods' accuracy, not bit for bit (docs/GEODESICS.md,
-// "What runs where"). On one device the result is the same bits whatever the
-// scheduling: each round reads the last one's buffers only.
+// on an OpenCL device: kernels/surface_voronoi.cl, the rounds of
+// surface_voronoi_rounds, one work-item per vertex, from the same seeds.
+// The host's rounds are its oracle: each vertex's step is written once
+// (kernels/surface_voronoi_round.h) and each round reads the last one's
+// buffers only, so the two give the same bits whatever the device and its
+// scheduling. Fast marching's diagram (surface_voronoi) agrees with both
+// to the methods' accuracy, not bit for bit (docs/GEODESICS.md, "What runs
+// where").
 //
 // The mesh's buffers stay on the device for the object's life: the evening
 // step asks for a diagram every sweep on the same mesh.
@@ -21,6 +21,7 @@
 #include "mesh/surface_mesh.hpp"
 #include "opencl/device_discovery.hpp"
 #include "particles/surface_voronoi.hpp"
+#include "particles/voronoi_stencils.hpp"
 
 namespace meshparticles {
 
@@ -72,8 +73,7 @@ class DeviceSurfaceVoronoi {
   cl::Kernel kernel_;
   cl::Buffer ring_offsets_, ring_neighbors_, edge_lengths_, pull_offsets_, pulls_, dependent_offsets_, dependents_;
   cl::Buffer states_[2], dirty_[3], round_changed_;
-  std::vector<std::uint32_t> dependent_offsets_host_;  // what each seed marks for round 0
-  std::vector<VertexId> dependents_host_;
+  VoronoiStencils stencils_;  // on the host: the dependents only, what marks round 0
   std::vector<cl_uchar> dirty_start_;
   Statistics statistics_;
 };
