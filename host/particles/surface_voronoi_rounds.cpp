@@ -13,9 +13,9 @@ namespace {
 // some tens of microseconds' work); a round of fewer runs on the calling
 // thread.
 constexpr std::size_t kRoundPiece = 1024;
-// A round with more dirty vertices than the mesh's over this takes them in
-// the order of their ids (a scan of the marks), whose stencils lie in
-// order in memory.
+// A round whose dirty vertices are more than this share of the mesh's
+// (1 / kScanShare) takes them in the order of their ids, by a scan of the
+// marks: their stencils then lie in order in memory.
 constexpr std::size_t kScanShare = 16;
 
 }  // namespace

@@ -58,7 +58,6 @@ class SurfaceVoronoiRounds {
   // with the unmoved regions settled.
   void update(std::span<const SurfaceLocation> points, std::span<const char> moved, SurfaceVoronoi& cells);
 
-  const VoronoiStencils& stencils() const { return stencils_; }
   const Statistics& statistics() const { return statistics_; }
 
  private:
