@@ -6,7 +6,8 @@
 // Three oracles: the host's rounds (particles/surface_voronoi_rounds, the
 // same step written once: the same bits), the host's diagram by the fast
 // iterative method (the same updates, pushed in another order) and by fast
-// marching (what the evening uses on the host). The solvers agree to their accuracy, not bit for bit
+// marching (what the evening uses on the host). These two solvers agree
+// with the device to their accuracy, not bit for bit
 // (the bounds and why: kSameMethod, kFastMarching): distances on average,
 // and at a small share of vertices by up to an edge; owners except at a
 // small share of vertices, each where the device's point is within the
