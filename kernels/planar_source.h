@@ -6,9 +6,9 @@
 //
 // In double, one definition for the host (C++) and the kernels (OpenCL C
 // with cl_khr_fp64): every operation as written, no fused multiply-add
-// (the kernels build with FP_CONTRACT off, the host's x86-64 target has no
-// FMA unless asked), and max and min spelt out as std::max and std::min
-// compare, so that both compute the same bits.
+// (the kernels build with FP_CONTRACT off, the host with -ffp-contract=off
+// on any CPU: CMakeLists.txt), and max and min spelt out as std::max and
+// std::min compare, so that both compute the same bits.
 #ifndef PLANAR_SOURCE_H
 #define PLANAR_SOURCE_H
 

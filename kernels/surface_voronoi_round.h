@@ -9,9 +9,9 @@
 // the smallest of its candidates, ties to the smaller owner, so
 // (distance, owner) only ever falls and the rounds end. The float
 // arithmetic is as written: the device builds it without unsafe math and
-// with correctly rounded division and square root (FloatMath::exact), the
-// host compiles it for x86-64's SSE, and nothing is contracted into fused
-// multiply-adds.
+// with correctly rounded division and square root (FloatMath::exact), and
+// nothing is contracted into fused multiply-adds (FP_CONTRACT OFF there,
+// -ffp-contract=off on the host: CMakeLists.txt).
 //
 // A vertex pulls its candidates: along each edge from a neighbour (d(w) +
 // |vw|, w's owner), and across each triangle or unfolded virtual triangle
