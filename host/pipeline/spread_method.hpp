@@ -101,6 +101,9 @@ struct SpreadPlan {
   // fim_ball_device finds (geodesics/device_balls); else, with none, or on
   // the dense table (--distances dense), the host.
   std::optional<DeviceDescription> measurement_device;
+  // Why the evening's passes are where they are (report.json's
+  // `device_from`, as the paper method's `backend_from`).
+  std::string device_from;
 };
 
 // What a spread run yields beside every method's result (RunResult::spread).
