@@ -234,11 +234,13 @@ def run_ours(binary, mesh, n, args, out_dir):
             "peak_rss_bytes": usage.ru_maxrss * 1024}
 
 
-def measure_quality(binary, mesh, particles, refine=None):
-    """`meshparticles quality MESH FILE --json [--refine L]`: the whole answer (metrics under "quality")."""
+def measure_quality(binary, mesh, particles, refine=None, cutoff=None):
+    """`meshparticles quality MESH FILE --json [--refine L] [--cutoff D]`: the whole answer (metrics under "quality")."""
     command = [str(binary), "quality", str(mesh), str(particles), "--json", "-q"]
     if refine is not None:
         command += ["--refine", str(refine)]
+    if cutoff is not None:
+        command += ["--cutoff", str(cutoff)]
     measured = run_program(command, capture_output=True, text=True)
     if measured.returncode != 0:
         raise Failure(f"quality failed: {last_line(measured.stderr)}")
@@ -315,8 +317,10 @@ def named_cases(binary, paths, max_vertices):
 
 # -------------------------------------------------------------- one mesh, one n
 
-def compare_case(binary, python, mesh, vertices, n, configs, repeat, meshlab_timeout, work, samplers=MESHLAB_SAMPLERS):
-    """The rows for one mesh and n: each ours configuration, then MeshLab's SAMPLERS, all measured."""
+def compare_case(binary, python, mesh, vertices, n, configs, repeat, meshlab_timeout, work, samplers=MESHLAB_SAMPLERS,
+                 quality_cutoff=None):
+    """The rows for one mesh and n: each ours configuration, then MeshLab's SAMPLERS, all measured
+    (by `quality --cutoff QUALITY_CUTOFF` where given)."""
     base = {"mesh": mesh.name, "mesh_path": str(mesh), "vertices": vertices, "n": n}
     rows = {}
     for name, args in configs.items():
@@ -336,8 +340,8 @@ def compare_case(binary, python, mesh, vertices, n, configs, repeat, meshlab_tim
                                samplers)
         pymeshlab_version = version or pymeshlab_version
     for key, row in rows.items():
-        measure_row(binary, mesh, row, files.get(key))
-    remeasure_at_common_refinement(binary, mesh, rows.values())
+        measure_row(binary, mesh, row, files.get(key), cutoff=quality_cutoff)
+    remeasure_at_common_refinement(binary, mesh, rows.values(), cutoff=quality_cutoff)
     return list(rows.values()), pymeshlab_version
 
 
@@ -383,13 +387,13 @@ def time_meshlab(python, mesh, n, out, timeout, rows, files, tag, samplers=MESHL
     return version
 
 
-def measure_row(binary, mesh, row, particles, refine=None):
+def measure_row(binary, mesh, row, particles, refine=None, cutoff=None):
     """Our yardstick on the row's particle file: points, the quality metrics, how it measured them."""
     if particles is None:
         row.setdefault("error", "no sample")
         return
     try:
-        measured = measure_quality(binary, mesh, particles, refine)
+        measured = measure_quality(binary, mesh, particles, refine, cutoff)
     except Failure as failure:
         row["error"] = str(failure)
         progress(f"{mesh.name} n={row['n']}: {row['sampler']}: {failure}")
@@ -398,10 +402,12 @@ def measure_row(binary, mesh, row, particles, refine=None):
     row["quality"] = measured.get("quality", measured)
     # How it was measured: largest_snap, and where the yardstick has them, refinement_levels, measured_vertices.
     row["measurement"] = {key: value for key, value in measured.items() if key not in ("quality", "mesh", "particles")}
+    if cutoff is not None:
+        row["measurement"]["cutoff"] = cutoff  # quality's balls, in spacings (its default: 7)
     row["particles"] = particles  # under --keep, else removed at the end
 
 
-def remeasure_at_common_refinement(binary, mesh, rows):
+def remeasure_at_common_refinement(binary, mesh, rows, cutoff=None):
     """Measure every sample of one mesh and n on the same refined mesh.
 
     `quality` measures points on the input's vertices on the input itself (MeshLab's vertex
@@ -429,7 +435,7 @@ def remeasure_at_common_refinement(binary, mesh, rows):
         refine = "spread" if spread else common[1]
         progress(f"{row['mesh']} n={row['n']}: {row['sampler']}: measured again at refinement {refine} (auto {auto[0]} {auto[1]})")
         row.pop("quality")  # a failure must not leave the other mesh's figures
-        measure_row(binary, mesh, row, row["particles"], refine=refine)
+        measure_row(binary, mesh, row, row["particles"], refine=refine, cutoff=cutoff)
         row.setdefault("measurement", {})["auto_refinement"] = list(auto)
 
 
@@ -596,6 +602,9 @@ def parse_arguments(argv):
                         help="time everything K times, alternating ours and MeshLab; report min..max")
     parser.add_argument("--json", type=Path, metavar="FILE", help="write every row and target check here")
     parser.add_argument("--keep", type=Path, metavar="DIR", help="keep the particle files and run outputs here")
+    parser.add_argument("--quality-cutoff", type=float, metavar="D",
+                        help="measure every sample with `quality --cutoff D` (default: quality's own, 7 spacings; "
+                             "a smaller one where those balls would not fit in memory)")
     parser.add_argument("--meshlab-timeout", type=positive, default=300, metavar="S",
                         help="give up on MeshLab's samplers for one mesh and n after S seconds (default 300)")
     parser.add_argument("--vertex-only", action="store_true", help="MeshLab's vertex sampler alone (no surface sampler)")
@@ -663,7 +672,8 @@ def main(argv):
             for n in counts:
                 case_rows, version = compare_case(binary, python, mesh, vertices, n, options.configs, options.repeat,
                                                   options.meshlab_timeout, work / mesh.name / f"n{n}",
-                                                  MESHLAB_SAMPLERS[:1] if options.vertex_only else MESHLAB_SAMPLERS)
+                                                  MESHLAB_SAMPLERS[:1] if options.vertex_only else MESHLAB_SAMPLERS,
+                                                  options.quality_cutoff)
                 rows.extend(case_rows)
                 pymeshlab_version = version or pymeshlab_version
     finally:
