@@ -23,8 +23,9 @@ void add_spread_parameters(const RunPlan& plan, const SpreadPlan& spread, nlohma
   params["evening_centres"] = spread.evening_centres_on_device ? "device" : "host";
   // Where the measurement's balls go (distances.balls_on_device: how many went).
   params["measurement_balls"] = spread.measurement_device ? "device" : "host";
-  params["device_from"] = spread.device_from;
   if (spread.measurement_device) params["measurement_device"] = spread.measurement_device->name;
+  // Why they are where they are: --device, or the default's reason.
+  params["device_from"] = spread.device_from;
 }
 
 // paper's parameters: its iterations and the backend as decided, with its sizes.
