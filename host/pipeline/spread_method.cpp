@@ -67,14 +67,8 @@ void plan_spread(const SurfaceMesh& mesh, const RunRequest& request, RunPlan& pl
   // is solved on the host whatever the method.
   const std::uint64_t working_vertices = refined_vertex_count(mesh, spread.working_mesh.levels);
   const bool local = plan.distances.kind == StoreKind::local;
-  // The default stays on the host whatever device there is: the device's
-  // diagrams are label-correcting rounds, not fast marching's bits, and
-  // the evening's moves follow them, so its particles would depend on the
-  // machine (measured on an H200 it paid 0.90 to 0.96x at n = 4,096 where
-  // an evening ran, and 1.2 to 1.8x below: docs/PERFORMANCE.md).
-  spread.device_from = request.backend.device.empty()
-                           ? "default: the evening on the host, the same particles on every machine"
-                           : "--device";
+  // Without --device the evening stays on the host whatever device there
+  // is (kSpreadHostByDefault says why in report.json).
   if (!request.backend.device.empty()) {
     spread.evening_device = select_device(request.backend.device);
     check_device_voronoi_fits(*spread.evening_device, working_vertices);

@@ -44,6 +44,14 @@ inline constexpr double kSpreadEveningMinGain = 1e-3;
 // spread stops when a sweep raises the mean spacing by less than this many
 // hexagonal spacings.
 inline constexpr double kSpreadStallGain = 1e-4;
+// Why spread's evening stays on the host unless --device asks (report.json's
+// `device_from`, as the paper method's `backend_from`): the device's
+// diagrams are label-correcting rounds, not fast marching's bits, and the
+// evening's moves follow them, so a default on the device would make the
+// particles depend on the machine (on an H200 it paid 0.90 to 0.96x at
+// n = 4,096 where an evening ran, 1.2 to 1.8x below: docs/PERFORMANCE.md).
+inline constexpr const char* kSpreadHostByDefault =
+    "default: the evening on the host, the same particles on every machine";
 // spread: rounds of relaxation after the sweeps (docs/ALGORITHM.md,
 // "Relaxation"); it stops earlier where its radius stops growing.
 inline constexpr std::size_t kSpreadRelaxRounds = 150;
@@ -101,9 +109,6 @@ struct SpreadPlan {
   // fim_ball_device finds (geodesics/device_balls); else, with none, or on
   // the dense table (--distances dense), the host.
   std::optional<DeviceDescription> measurement_device;
-  // Why the evening's passes are where they are (report.json's
-  // `device_from`, as the paper method's `backend_from`).
-  std::string device_from;
 };
 
 // What a spread run yields beside every method's result (RunResult::spread).

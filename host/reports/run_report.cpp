@@ -25,7 +25,7 @@ void add_spread_parameters(const RunPlan& plan, const SpreadPlan& spread, nlohma
   params["measurement_balls"] = spread.measurement_device ? "device" : "host";
   if (spread.measurement_device) params["measurement_device"] = spread.measurement_device->name;
   // Why they are where they are: --device, or the default's reason.
-  params["device_from"] = spread.device_from;
+  params["device_from"] = spread.evening_device ? "--device" : kSpreadHostByDefault;
 }
 
 // paper's parameters: its iterations and the backend as decided, with its sizes.
