@@ -139,20 +139,22 @@ EOF
 }
 
 # The plan: one line per case, tab-separated: label, mesh file, n, memory limit in bytes (or -),
-# where the mesh comes from.
+# where the mesh comes from, quality's --cutoff (or -: its default).
 plan="$out/plan.tsv"
 : > "$plan"
 GiB=1073741824
 add_cases() {  # MESH_LABEL MESH SOURCE N...
-  local name=$1 mesh=$2 source=$3 n limit
+  local name=$1 mesh=$2 source=$3 n limit cutoff
   shift 3
   for n in "$@"; do
-    limit=-
+    limit=- cutoff=-
     [[ $name == *-200k && $n == 4096 ]] && limit=$GiB
     [[ $name == *-1m && $n == 4096 ]] && limit=$((4 * GiB))
     [[ $name == scan-134k && $n == 20000 ]] && limit=$GiB
-    [[ $name == *-1m && $n == 100000 ]] && limit=$((4 * GiB))
-    printf '%s\t%s\t%s\t%s\t%s\n' "$name-n$n${threads:+-t$threads}" "$mesh" "$n" "$limit" "$source" >> "$plan"
+    # quality's default balls of 7 spacings would ask 27 GiB there
+    [[ $name == *-1m && $n == 100000 ]] && limit=$((4 * GiB)) cutoff=3
+    printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$name-n$n${threads:+-t$threads}" "$mesh" "$n" "$limit" "$source" "$cutoff" \
+      >> "$plan"
   done
 }
 if [ -n "$scale" ]; then
@@ -270,7 +272,7 @@ EOF
 
 failed=0 index=0
 : > "$out/not_run.txt"
-while IFS=$'\t' read -r label mesh n limit source; do
+while IFS=$'\t' read -r label mesh n limit source cutoff; do
   index=$((index + 1))
   json="$out/cases/$label.json"
   if reusable "$json"; then
@@ -286,8 +288,7 @@ while IFS=$'\t' read -r label mesh n limit source; do
   scratch=$(mktemp -d "$work/case.XXXXXX")
   load_before=$(cut -d' ' -f1 /proc/loadavg)
   status=0
-  quality_cutoff=
-  [[ $label == *-1m-n100000* ]] && quality_cutoff=3
+  quality_cutoff=${cutoff#-}
   python3 "$COMPARE" "$mesh" -n "$n" --vertex-only --no-farthest --no-warmup --repeat "$repeat" \
     ${threads:+--ours-args "--threads $threads"} ${quality_cutoff:+--quality-cutoff $quality_cutoff} --binary "$bin" --json "$scratch/compare.json" --keep "$scratch/keep" > "$scratch/compare.txt" || status=$?
   case_json "$label" "$mesh" "$n" "$limit" "$source" "$status" "$load_before"
@@ -319,7 +320,7 @@ lines = ["| case | V | n | working V | ours s | particles (sweeps) + quality s |
 tally = {name: {"met": 0, "missed": []} for name, _ in TARGETS}
 loads, versions, missing = [], set(), []
 for line in open(plan):
-    label, mesh, n, limit, source = line.rstrip("\n").split("\t")
+    label, mesh, n, limit, source, cutoff = line.rstrip("\n").split("\t")
     path = out / "cases" / f"{label}.json"
     if not path.exists():
         missing.append(label)
